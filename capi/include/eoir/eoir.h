@@ -1,0 +1,327 @@
+/*
+ * eoir.h — the stable C ABI of the EOIR engine (version 1).
+ *
+ * Rules (see README "C ABI"):
+ *  - Only <stddef.h>/<stdint.h> types cross this boundary; the header compiles
+ *    as C99 with -Wall -Wextra -pedantic -Werror.
+ *  - Every call returns eoir_status (0 = EOIR_OK, negative = error) and leaves
+ *    a thread-local message readable with eoir_last_error(); the message names
+ *    the offending field, e.g. "position[1]: not finite (nan)".
+ *  - Structs passed in begin with uint32_t struct_size; fields are only ever
+ *    appended; the library reads at most struct_size bytes.
+ *  - Buffers are caller-allocated. Strings returned as const char* are static
+ *    (names, units) unless documented otherwise.
+ *  - Units: positions in metres, velocities in m/s, angles in degrees unless a
+ *    name says otherwise, radiometry in the spec's W, cm, sr, um.
+ */
+#ifndef EOIR_EOIR_H
+#define EOIR_EOIR_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(_WIN32)
+#  if defined(EOIR_BUILDING_LIBRARY)
+#    define EOIR_API __declspec(dllexport)
+#  else
+#    define EOIR_API __declspec(dllimport)
+#  endif
+#else
+#  define EOIR_API __attribute__((visibility("default")))
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------------ version */
+#define EOIR_VERSION_MAJOR 1
+#define EOIR_VERSION_MINOR 0
+#define EOIR_VERSION_PATCH 0
+
+/* Returns EOIR_VERSION_MAJOR*10000 + MINOR*100 + PATCH of the loaded library. */
+EOIR_API uint32_t eoir_version(void);
+/* The version as "1.0.0" (static string). */
+EOIR_API const char* eoir_version_string(void);
+
+/* ------------------------------------------------------------------- status */
+/* Explicit values in gapped blocks; never renumbered. */
+typedef int32_t eoir_status;
+#define EOIR_OK 0
+/* -100 block: the call's arguments */
+#define EOIR_ERR_NULL_ARGUMENT     -100 /* a required pointer is NULL */
+#define EOIR_ERR_STRUCT_SIZE       -101 /* struct_size too small or zero */
+#define EOIR_ERR_OUT_OF_RANGE      -102 /* NaN, infinite, negative, reversed... */
+#define EOIR_ERR_UNKNOWN_NAME      -103 /* unknown object, property, group, element, shape, material */
+#define EOIR_ERR_TYPE_MISMATCH     -104 /* property read or written with the wrong type */
+#define EOIR_ERR_BUFFER_TOO_SMALL  -105 /* *count_out tells the size needed */
+/* -200 block: the modeled universe */
+#define EOIR_ERR_LIMIT_EXCEEDED    -200 /* compile-time object limit reached (spec 3.1) */
+#define EOIR_ERR_ALREADY_EXISTS    -201 /* an object of that name exists */
+#define EOIR_ERR_NOT_ALLOWED       -202 /* e.g. removing the Sun, target equal to parent */
+#define EOIR_ERR_NO_STATE          -203 /* the object has no state at the engine time */
+/* -300 block: files */
+#define EOIR_ERR_IO                -300 /* cannot open, write or rename */
+#define EOIR_ERR_CORRUPT_FILE      -301 /* not JSON, truncated, wrong field type, unknown field */
+#define EOIR_ERR_FILE_VERSION      -302 /* written by a newer format version */
+/* -400 block: plugin negotiation */
+#define EOIR_ERR_ABI_MISMATCH      -400 /* host asked for an ABI major this library lacks */
+/* -900 block */
+#define EOIR_ERR_INTERNAL          -900 /* a bug: please report with eoir_last_error() */
+
+/* Message of the last failing call on this thread ("" after a success). */
+EOIR_API const char* eoir_last_error(void);
+/* Static symbolic name of a status, e.g. "EOIR_ERR_OUT_OF_RANGE". */
+EOIR_API const char* eoir_status_name(eoir_status status);
+
+/* ------------------------------------------------------------------- limits */
+/* Spec 3.1; fixed when the engine is compiled. */
+#define EOIR_MAX_SATELLITES        16
+#define EOIR_MAX_VEHICLES           6 /* aircraft plus ground vehicles */
+#define EOIR_MAX_MISSILES           6
+#define EOIR_MAX_MISSILE_STAGES    18
+#define EOIR_MAX_SENSORS            6 /* scene-generator/sensor-model pairs */
+#define EOIR_MAX_REFERENCE_PAIRS    8 /* sensitivity or saturation (spec 5.9, 5.10) */
+#define EOIR_MAX_NAME_LENGTH       63
+
+/* ------------------------------------------------------------------- engine */
+typedef struct eoir_engine_s* eoir_engine;
+
+typedef struct eoir_engine_desc {
+  uint32_t struct_size; /* sizeof(eoir_engine_desc) */
+  uint32_t threads;     /* worker threads, 0 = all cores */
+  uint64_t seed;        /* seed of the noise generator (saved in the state) */
+} eoir_engine_desc;
+
+/* desc may be NULL for defaults (all cores, seed 1). The new engine holds the
+ * Sun only, at J2000.0 TT. */
+EOIR_API eoir_status eoir_engine_create(const eoir_engine_desc* desc, eoir_engine* engine_out);
+/* Accepts NULL. */
+EOIR_API void eoir_engine_destroy(eoir_engine engine);
+
+/* --------------------------------------------------------------------- time */
+/* Two-part Julian date (jd1 + jd2, as ERFA) in an explicit time scale. The
+ * engine keeps time internally as TT days since J2000.0 and a fraction of a
+ * day (spec 3.2). */
+typedef enum eoir_time_scale {
+  EOIR_TIME_UTC = 0,
+  EOIR_TIME_TAI = 1,
+  EOIR_TIME_TT = 2,
+  EOIR_TIME_TDB = 3
+} eoir_time_scale;
+
+typedef struct eoir_time {
+  int32_t scale; /* eoir_time_scale */
+  double jd1;
+  double jd2;
+} eoir_time;
+
+EOIR_API eoir_status eoir_engine_set_time(eoir_engine engine, const eoir_time* time);
+EOIR_API eoir_status eoir_engine_get_time(eoir_engine engine, int32_t scale, eoir_time* time_out);
+/* ISO-8601 UTC ("2010-08-25T18:00:00Z", fractional seconds allowed) to a UTC
+ * two-part Julian date, and back (writes at most capacity bytes with '\0'). */
+EOIR_API eoir_status eoir_time_from_iso(const char* iso_utc, eoir_time* time_out);
+EOIR_API eoir_status eoir_time_to_iso(const eoir_time* time, char* buffer, size_t capacity);
+
+/* ------------------------------------------------------ the modeled universe */
+typedef enum eoir_object_kind {
+  EOIR_KIND_CENTRAL_BODY = 1,   /* Sun, Mercury..Neptune, Moon (names fixed) */
+  EOIR_KIND_STAR_FIELD = 2,     /* name "Stars" */
+  EOIR_KIND_SATELLITE = 3,
+  EOIR_KIND_AIRCRAFT = 4,
+  EOIR_KIND_GROUND_VEHICLE = 5,
+  EOIR_KIND_MISSILE = 6,
+  EOIR_KIND_SENSOR = 7          /* use eoir_sensor_add */
+} eoir_object_kind;
+
+/* Adds an object. Central bodies must be named Sun, Mercury, Venus, Earth,
+ * Mars, Jupiter, Saturn, Uranus, Neptune or Moon; the star field "Stars".
+ * Names are 1..63 bytes. Fails with EOIR_ERR_LIMIT_EXCEEDED past the limits. */
+EOIR_API eoir_status eoir_object_add(eoir_engine engine, int32_t kind, const char* name);
+/* Adds a scene-generator/sensor-model pair attached to a parent object (any
+ * object but the star field). The sensor starts with the defaults of
+ * `eoir sensor-defaults`. */
+EOIR_API eoir_status eoir_sensor_add(eoir_engine engine, const char* name, const char* parent);
+/* Removes an object (never the Sun); removing a parent removes its sensors. */
+EOIR_API eoir_status eoir_object_remove(eoir_engine engine, const char* name);
+EOIR_API eoir_status eoir_object_count(eoir_engine engine, size_t* count_out);
+/* Name and kind of the index-th object (0-based, in insertion order). */
+EOIR_API eoir_status eoir_object_at(eoir_engine engine, size_t index, const char** name_out, int32_t* kind_out);
+
+/* -------------------------------------------------------------------- state */
+typedef enum eoir_frame {
+  EOIR_FRAME_J2000 = 0,       /* Earth-centred inertial (GCRS ~ J2000), metres */
+  EOIR_FRAME_EARTH_FIXED = 1, /* Earth-centred Earth-fixed (ITRS, WGS84), metres */
+  EOIR_FRAME_GEODETIC = 2     /* position = {lat deg, lon deg, height m} on WGS84;
+                                 velocity and attitude as in EARTH_FIXED */
+} eoir_frame;
+
+typedef struct eoir_state {
+  uint32_t struct_size;
+  int32_t frame;        /* eoir_frame */
+  double position[3];   /* metres (or lat, lon, height for GEODETIC) */
+  double velocity[3];   /* m/s */
+  double attitude[4];   /* unit quaternion {w, x, y, z}: body to frame */
+} eoir_state;
+
+/* State of an object at a time (NULL time = the engine time). Between pushes
+ * the engine moves the object along its velocity (constant-velocity
+ * extrapolation). Central bodies move on their own (ERFA ephemerides) and
+ * refuse states. Sensors take their parent's position; a sensor's attitude
+ * set here overrides the parent's. */
+EOIR_API eoir_status eoir_object_set_state(eoir_engine engine, const char* name,
+                                           const eoir_time* time, const eoir_state* state);
+/* State at the engine time in the requested frame (struct_size and frame set
+ * by the caller). */
+EOIR_API eoir_status eoir_object_get_state(eoir_engine engine, const char* name, eoir_state* state_inout);
+
+/* --------------------------------------------------------------- properties */
+/* Objects and sensors carry named, typed properties. The names, types, units
+ * and ranges are listed by eoir_property_info and in README "Properties":
+ * e.g. shape ("sphere", "box", ...), dimensions_m, material, temperature_K,
+ * reflectance for objects; horizontal_pixels, horizontal_fov_deg,
+ * band_low_um, f_number, focal_length_cm, ... for sensors (spec 5). */
+typedef enum eoir_value_type {
+  EOIR_TYPE_NUMBER = 1,  /* double */
+  EOIR_TYPE_INTEGER = 2, /* int64_t */
+  EOIR_TYPE_BOOL = 3,    /* int32_t 0/1 */
+  EOIR_TYPE_STRING = 4,
+  EOIR_TYPE_ARRAY = 5,   /* array of doubles */
+  EOIR_TYPE_CURVE = 6    /* data providers only: x and y arrays */
+} eoir_value_type;
+
+EOIR_API eoir_status eoir_set_number(eoir_engine engine, const char* object, const char* property, double value);
+EOIR_API eoir_status eoir_set_integer(eoir_engine engine, const char* object, const char* property, int64_t value);
+EOIR_API eoir_status eoir_set_bool(eoir_engine engine, const char* object, const char* property, int32_t value);
+EOIR_API eoir_status eoir_set_string(eoir_engine engine, const char* object, const char* property, const char* value);
+EOIR_API eoir_status eoir_set_array(eoir_engine engine, const char* object, const char* property,
+                                    const double* values, size_t count);
+
+EOIR_API eoir_status eoir_get_number(eoir_engine engine, const char* object, const char* property, double* value_out);
+EOIR_API eoir_status eoir_get_integer(eoir_engine engine, const char* object, const char* property, int64_t* value_out);
+EOIR_API eoir_status eoir_get_bool(eoir_engine engine, const char* object, const char* property, int32_t* value_out);
+/* Copies at most capacity bytes including '\0'; EOIR_ERR_BUFFER_TOO_SMALL
+ * if it does not fit. */
+EOIR_API eoir_status eoir_get_string(eoir_engine engine, const char* object, const char* property,
+                                     char* buffer, size_t capacity);
+/* *count_out receives the length; values may be NULL to ask for it. */
+EOIR_API eoir_status eoir_get_array(eoir_engine engine, const char* object, const char* property,
+                                    double* values, size_t capacity, size_t* count_out);
+
+typedef struct eoir_property_info {
+  uint32_t struct_size;
+  const char* name;        /* static */
+  int32_t type;            /* eoir_value_type */
+  const char* unit;        /* static, "" if none */
+  const char* description; /* static */
+} eoir_property_info;
+
+/* The index-th property of an object (0-based); EOIR_ERR_OUT_OF_RANGE past
+ * the end. */
+EOIR_API eoir_status eoir_property_info_at(eoir_engine engine, const char* object, size_t index,
+                                           eoir_property_info* info_out);
+
+/* ----------------------------------------------------------- data providers */
+/* The report-generator interface. Groups and elements are named as in the
+ * STK EOIR reports, e.g. group "EOIR Sensor Optics", element
+ * "Ensquared Energy". target may be NULL for groups without a target. */
+typedef struct eoir_element_info {
+  uint32_t struct_size;
+  const char* name;   /* static */
+  int32_t type;       /* EOIR_TYPE_NUMBER, EOIR_TYPE_INTEGER, EOIR_TYPE_BOOL or EOIR_TYPE_CURVE */
+  const char* unit;   /* static; for curves the unit of y */
+  const char* x_unit; /* static; curves only ("cycles/mrad"), else "" */
+} eoir_element_info;
+
+EOIR_API eoir_status eoir_provider_group_at(size_t index, const char** group_out);
+EOIR_API eoir_status eoir_provider_element_at(const char* group, size_t index, eoir_element_info* info_out);
+
+/* A scalar element (number, integer or bool, returned as double) at the
+ * engine time. */
+EOIR_API eoir_status eoir_provider_get(eoir_engine engine, const char* group, const char* element,
+                                       const char* sensor, const char* target, double* value_out);
+/* A curve element: x (spatial frequency, cycles/mrad) and y arrays, caller
+ * allocated; x or y may be NULL to ask for *count_out. */
+EOIR_API eoir_status eoir_provider_get_curve(eoir_engine engine, const char* group, const char* element,
+                                             const char* sensor, const char* target,
+                                             double* x, double* y, size_t capacity, size_t* count_out);
+
+/* ------------------------------------------------------------ save, restore */
+/* The whole engine state (objects, properties, sensors, time, noise seeds) as
+ * a versioned JSON .scd file (schemas/scd.schema.json). Written to a
+ * temporary file beside path and renamed; on any error the file on disk and
+ * the engine are left as they were. */
+EOIR_API eoir_status eoir_state_save(eoir_engine engine, const char* path);
+EOIR_API eoir_status eoir_state_load(eoir_engine engine, const char* path);
+/* One sensor's parameters on their own (spec 3.4; schemas/sensor.schema.json).
+ * Loading replaces the parameters of an existing sensor. */
+EOIR_API eoir_status eoir_sensor_save(eoir_engine engine, const char* sensor, const char* path);
+EOIR_API eoir_status eoir_sensor_load(eoir_engine engine, const char* sensor, const char* path);
+
+/* ------------------------------------------------------------------- plugin */
+/* The host's services, passed to the plugin entry point. Any pointer may be
+ * NULL. */
+typedef struct eoir_host_api {
+  uint32_t struct_size;
+  void* user;
+  /* level: 0 debug, 1 info, 2 warning, 3 error */
+  void (*log)(void* user, int32_t level, const char* message);
+  /* fraction in [0, 1]; return non-zero to ask the engine to cancel */
+  int32_t (*progress)(void* user, double fraction, const char* what);
+} eoir_host_api;
+
+/* Append-only function table of ABI major 1. New entries only at the end;
+ * check struct_size before using one. */
+typedef struct eoir_api_v1 {
+  uint32_t struct_size;
+  uint32_t abi_major;
+  uint32_t abi_minor;
+  uint32_t (*version)(void);
+  const char* (*last_error)(void);
+  const char* (*status_name)(eoir_status);
+  eoir_status (*engine_create)(const eoir_engine_desc*, eoir_engine*);
+  void (*engine_destroy)(eoir_engine);
+  eoir_status (*engine_set_time)(eoir_engine, const eoir_time*);
+  eoir_status (*engine_get_time)(eoir_engine, int32_t, eoir_time*);
+  eoir_status (*time_from_iso)(const char*, eoir_time*);
+  eoir_status (*time_to_iso)(const eoir_time*, char*, size_t);
+  eoir_status (*object_add)(eoir_engine, int32_t, const char*);
+  eoir_status (*sensor_add)(eoir_engine, const char*, const char*);
+  eoir_status (*object_remove)(eoir_engine, const char*);
+  eoir_status (*object_count)(eoir_engine, size_t*);
+  eoir_status (*object_at)(eoir_engine, size_t, const char**, int32_t*);
+  eoir_status (*object_set_state)(eoir_engine, const char*, const eoir_time*, const eoir_state*);
+  eoir_status (*object_get_state)(eoir_engine, const char*, eoir_state*);
+  eoir_status (*set_number)(eoir_engine, const char*, const char*, double);
+  eoir_status (*set_integer)(eoir_engine, const char*, const char*, int64_t);
+  eoir_status (*set_bool)(eoir_engine, const char*, const char*, int32_t);
+  eoir_status (*set_string)(eoir_engine, const char*, const char*, const char*);
+  eoir_status (*set_array)(eoir_engine, const char*, const char*, const double*, size_t);
+  eoir_status (*get_number)(eoir_engine, const char*, const char*, double*);
+  eoir_status (*get_integer)(eoir_engine, const char*, const char*, int64_t*);
+  eoir_status (*get_bool)(eoir_engine, const char*, const char*, int32_t*);
+  eoir_status (*get_string)(eoir_engine, const char*, const char*, char*, size_t);
+  eoir_status (*get_array)(eoir_engine, const char*, const char*, double*, size_t, size_t*);
+  eoir_status (*property_info_at)(eoir_engine, const char*, size_t, eoir_property_info*);
+  eoir_status (*provider_group_at)(size_t, const char**);
+  eoir_status (*provider_element_at)(const char*, size_t, eoir_element_info*);
+  eoir_status (*provider_get)(eoir_engine, const char*, const char*, const char*, const char*, double*);
+  eoir_status (*provider_get_curve)(eoir_engine, const char*, const char*, const char*, const char*,
+                                    double*, double*, size_t, size_t*);
+  eoir_status (*state_save)(eoir_engine, const char*);
+  eoir_status (*state_load)(eoir_engine, const char*);
+  eoir_status (*sensor_save)(eoir_engine, const char*, const char*);
+  eoir_status (*sensor_load)(eoir_engine, const char*, const char*);
+} eoir_api_v1;
+
+/* The plugin's one entry point (resolved by name with dlsym). Returns, in
+ * *api_out, the table for abi_major (cast to eoir_api_v1* for major 1), or
+ * EOIR_ERR_ABI_MISMATCH with a message naming both majors. host may be NULL. */
+typedef eoir_status (*eoir_plugin_entry_fn)(uint32_t abi_major, const eoir_host_api* host, const void** api_out);
+EOIR_API eoir_status eoir_plugin_entry(uint32_t abi_major, const eoir_host_api* host, const void** api_out);
+#define EOIR_PLUGIN_ENTRY_SYMBOL "eoir_plugin_entry"
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* EOIR_EOIR_H */

@@ -1,0 +1,173 @@
+// Engine lifetime, time, object registration and states.
+#include <cstring>
+
+#include "capi_internal.hpp"
+#include "universe/object_motion.hpp"
+
+using namespace eoir;
+using eoir::capi::guarded;
+using eoir::capi::need;
+using eoir::capi::need_size;
+using eoir::capi::str;
+
+namespace {
+TimeScale scale_of(int32_t s, const char* field) {
+  if (s < EOIR_TIME_UTC || s > EOIR_TIME_TDB)
+    throw Error(Status::out_of_range, std::string(field) + ": unknown time scale " + std::to_string(s));
+  return static_cast<TimeScale>(s);
+}
+EngineTime time_of(const eoir_time* t, const char* field) {
+  need(t, field);
+  return EngineTime::from(JulianDate{scale_of(t->scale, (std::string(field) + ".scale").c_str()), t->jd1, t->jd2});
+}
+}  // namespace
+
+extern "C" {
+
+EOIR_API eoir_status eoir_engine_create(const eoir_engine_desc* desc, eoir_engine* engine_out) {
+  return guarded([&] {
+    need(engine_out, "engine_out");
+    *engine_out = nullptr;
+    EngineOptions options;
+    if (desc) {
+      need_size(desc->struct_size, sizeof(eoir_engine_desc), "desc");
+      options.threads = desc->threads;
+      options.seed = desc->seed;
+    }
+    auto handle = std::make_unique<eoir_engine_s>();
+    handle->engine = std::make_unique<Engine>(options);
+    *engine_out = handle.release();
+  });
+}
+
+EOIR_API void eoir_engine_destroy(eoir_engine engine) { delete engine; }
+
+EOIR_API eoir_status eoir_engine_set_time(eoir_engine engine, const eoir_time* time) {
+  return guarded([&] { capi::engine_of(engine).set_time(time_of(time, "time")); });
+}
+
+EOIR_API eoir_status eoir_engine_get_time(eoir_engine engine, int32_t scale, eoir_time* time_out) {
+  return guarded([&] {
+    Engine& e = capi::engine_of(engine);
+    need(time_out, "time_out");
+    const JulianDate d = e.time().to(scale_of(scale, "scale"));
+    time_out->scale = scale;
+    time_out->jd1 = d.jd1;
+    time_out->jd2 = d.jd2;
+  });
+}
+
+EOIR_API eoir_status eoir_time_from_iso(const char* iso_utc, eoir_time* time_out) {
+  return guarded([&] {
+    const std::string iso = str(iso_utc, "iso_utc");
+    need(time_out, "time_out");
+    const JulianDate d = utc_from_iso(iso);
+    time_out->scale = EOIR_TIME_UTC;
+    time_out->jd1 = d.jd1;
+    time_out->jd2 = d.jd2;
+  });
+}
+
+EOIR_API eoir_status eoir_time_to_iso(const eoir_time* time, char* buffer, size_t capacity) {
+  return guarded([&] {
+    need(buffer, "buffer");
+    const EngineTime t = time_of(time, "time");
+    const std::string iso = iso_from_utc(t.to(TimeScale::utc), 3);
+    if (iso.size() + 1 > capacity)
+      throw Error(Status::buffer_too_small, "capacity: " + std::to_string(iso.size() + 1) + " bytes needed");
+    std::memcpy(buffer, iso.c_str(), iso.size() + 1);
+  });
+}
+
+EOIR_API eoir_status eoir_object_add(eoir_engine engine, int32_t kind, const char* name) {
+  return guarded([&] {
+    Engine& e = capi::engine_of(engine);
+    const std::string n = str(name, "name");
+    if (kind < EOIR_KIND_CENTRAL_BODY || kind > EOIR_KIND_MISSILE) {
+      if (kind == EOIR_KIND_SENSOR)
+        throw Error(Status::out_of_range, "kind: add sensors with eoir_sensor_add (they need a parent)");
+      throw Error(Status::out_of_range, "kind: unknown object kind " + std::to_string(kind));
+    }
+    e.universe().add(static_cast<universe::ObjectKind>(kind), n);
+    e.invalidate_caches();
+  });
+}
+
+EOIR_API eoir_status eoir_sensor_add(eoir_engine engine, const char* name, const char* parent) {
+  return guarded([&] {
+    Engine& e = capi::engine_of(engine);
+    e.universe().add(universe::ObjectKind::sensor, str(name, "name"), str(parent, "parent"));
+    e.invalidate_caches();
+  });
+}
+
+EOIR_API eoir_status eoir_object_remove(eoir_engine engine, const char* name) {
+  return guarded([&] {
+    Engine& e = capi::engine_of(engine);
+    e.universe().remove(str(name, "name"));
+    e.invalidate_caches();
+  });
+}
+
+EOIR_API eoir_status eoir_object_count(eoir_engine engine, size_t* count_out) {
+  return guarded([&] {
+    Engine& e = capi::engine_of(engine);
+    need(count_out, "count_out");
+    *count_out = e.universe().objects().size();
+  });
+}
+
+EOIR_API eoir_status eoir_object_at(eoir_engine engine, size_t index, const char** name_out, int32_t* kind_out) {
+  return guarded([&] {
+    Engine& e = capi::engine_of(engine);
+    need(name_out, "name_out");
+    const auto& objects = e.universe().objects();
+    if (index >= objects.size())
+      throw Error(Status::out_of_range, "index: " + std::to_string(index) + " >= object count " +
+                                            std::to_string(objects.size()));
+    // The name lives as long as the object (until it is removed or the state
+    // is restored).
+    *name_out = objects[index].name.c_str();
+    if (kind_out) *kind_out = static_cast<int32_t>(objects[index].kind);
+  });
+}
+
+EOIR_API eoir_status eoir_object_set_state(eoir_engine engine, const char* name, const eoir_time* time,
+                                           const eoir_state* state) {
+  return guarded([&] {
+    Engine& e = capi::engine_of(engine);
+    universe::Object& o = e.universe().get(str(name, "name"));
+    need(state, "state");
+    need_size(state->struct_size, sizeof(eoir_state), "state");
+    const EngineTime epoch = time ? time_of(time, "time") : e.time();
+    universe::push_state(o, epoch, state->frame, state->position, state->velocity, state->attitude);
+  });
+}
+
+EOIR_API eoir_status eoir_object_get_state(eoir_engine engine, const char* name, eoir_state* state) {
+  return guarded([&] {
+    Engine& e = capi::engine_of(engine);
+    const universe::Object& o = e.universe().get(str(name, "name"));
+    need(state, "state");
+    need_size(state->struct_size, sizeof(eoir_state), "state");
+    const universe::Kinematics k = universe::kinematics_at(e.universe(), o, e.time());
+    frames::Vec3 r = k.position_m, v = k.velocity_m_s;
+    Eigen::Quaterniond q = k.attitude;
+    if (state->frame == EOIR_FRAME_EARTH_FIXED || state->frame == EOIR_FRAME_GEODETIC) {
+      frames::j2000_to_earth_fixed(e.time(), k.position_m, k.velocity_m_s, r, v);
+      q = Eigen::Quaterniond(frames::j2000_to_earth_fixed(e.time())) * k.attitude;
+      if (state->frame == EOIR_FRAME_GEODETIC) r = frames::earth_fixed_to_geodetic(r);
+    } else if (state->frame != EOIR_FRAME_J2000) {
+      throw Error(Status::out_of_range, "state.frame: unknown frame " + std::to_string(state->frame));
+    }
+    for (int i = 0; i < 3; ++i) {
+      state->position[i] = r[i];
+      state->velocity[i] = v[i];
+    }
+    state->attitude[0] = q.w();
+    state->attitude[1] = q.x();
+    state->attitude[2] = q.y();
+    state->attitude[3] = q.z();
+  });
+}
+}

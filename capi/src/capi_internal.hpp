@@ -1,0 +1,63 @@
+// Shared pieces of the C ABI implementation: the engine handle, the guard
+// that turns every C++ exception into a status and a thread-local message,
+// and argument checks.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "core/error.hpp"
+#include "engine.hpp"
+#include "eoir/eoir.h"
+
+struct eoir_engine_s {
+  std::unique_ptr<eoir::Engine> engine;
+};
+
+namespace eoir::capi {
+
+void set_last_error(eoir_status status, const std::string& message);
+void clear_last_error();
+
+// Runs f(); returns EOIR_OK or the status of the exception it threw. No
+// exception ever leaves this function.
+template <class F>
+eoir_status guarded(F&& f) noexcept {
+  try {
+    f();
+    clear_last_error();
+    return EOIR_OK;
+  } catch (const eoir::Error& e) {
+    set_last_error(static_cast<eoir_status>(e.status()), e.what());
+    return static_cast<eoir_status>(e.status());
+  } catch (const std::bad_alloc&) {
+    set_last_error(EOIR_ERR_INTERNAL, "out of memory");
+    return EOIR_ERR_INTERNAL;
+  } catch (const std::exception& e) {
+    set_last_error(EOIR_ERR_INTERNAL, std::string("internal error: ") + e.what());
+    return EOIR_ERR_INTERNAL;
+  } catch (...) {
+    set_last_error(EOIR_ERR_INTERNAL, "internal error: unknown exception");
+    return EOIR_ERR_INTERNAL;
+  }
+}
+
+// Throw eoir::Error(null_argument) naming `field` if p is NULL.
+inline void need(const void* p, const char* field) {
+  if (!p) throw Error(Status::null_argument, std::string(field) + ": must not be NULL");
+}
+inline Engine& engine_of(eoir_engine e) {
+  need(e, "engine");
+  return *e->engine;
+}
+// A struct passed in must declare at least `minimum` bytes.
+inline void need_size(uint32_t struct_size, size_t minimum, const char* field) {
+  if (struct_size < minimum)
+    throw Error(Status::struct_size, std::string(field) + ".struct_size: " + std::to_string(struct_size) +
+                                         " is smaller than the " + std::to_string(minimum) + " bytes of ABI v1");
+}
+inline std::string str(const char* s, const char* field) {
+  need(s, field);
+  return s;
+}
+
+}  // namespace eoir::capi

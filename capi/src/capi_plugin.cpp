@@ -1,0 +1,72 @@
+// The plugin entry point: one exported function returning the append-only
+// function table of the requested ABI major (after SQLite's
+// sqlite3_api_routines and OpenFX's fetchSuite).
+#include <mutex>
+
+#include "capi_internal.hpp"
+
+using eoir::capi::guarded;
+
+namespace {
+std::mutex host_mutex;
+eoir_host_api host_services{};  // the host's log/progress callbacks (per process)
+
+const eoir_api_v1 api_v1 = {
+    sizeof(eoir_api_v1),
+    1,
+    EOIR_VERSION_MINOR,
+    eoir_version,
+    eoir_last_error,
+    eoir_status_name,
+    eoir_engine_create,
+    eoir_engine_destroy,
+    eoir_engine_set_time,
+    eoir_engine_get_time,
+    eoir_time_from_iso,
+    eoir_time_to_iso,
+    eoir_object_add,
+    eoir_sensor_add,
+    eoir_object_remove,
+    eoir_object_count,
+    eoir_object_at,
+    eoir_object_set_state,
+    eoir_object_get_state,
+    eoir_set_number,
+    eoir_set_integer,
+    eoir_set_bool,
+    eoir_set_string,
+    eoir_set_array,
+    eoir_get_number,
+    eoir_get_integer,
+    eoir_get_bool,
+    eoir_get_string,
+    eoir_get_array,
+    eoir_property_info_at,
+    eoir_provider_group_at,
+    eoir_provider_element_at,
+    eoir_provider_get,
+    eoir_provider_get_curve,
+    eoir_state_save,
+    eoir_state_load,
+    eoir_sensor_save,
+    eoir_sensor_load,
+};
+}  // namespace
+
+extern "C" EOIR_API eoir_status eoir_plugin_entry(uint32_t abi_major, const eoir_host_api* host,
+                                                  const void** api_out) {
+  return guarded([&] {
+    eoir::capi::need(api_out, "api_out");
+    *api_out = nullptr;
+    if (abi_major != 1)
+      throw eoir::Error(eoir::Status::abi_mismatch,
+                        "abi_major: the host asks for EOIR ABI major " + std::to_string(abi_major) +
+                            "; this engine library (" + eoir_version_string() + ") provides major 1 only");
+    if (host) {
+      eoir::capi::need_size(host->struct_size, sizeof(eoir_host_api), "host");
+      std::lock_guard<std::mutex> lock(host_mutex);
+      host_services = *host;
+    }
+    *api_out = &api_v1;
+  });
+}

@@ -1,0 +1,45 @@
+// Errors of the engine: a status code of the C ABI plus a message that names
+// the offending field. Thrown inside the engine, caught at the C boundary.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace eoir {
+
+// Mirrors the EOIR_ERR_* values of capi/include/eoir/eoir.h (never renumbered).
+enum class Status : int {
+  ok = 0,
+  null_argument = -100,
+  struct_size = -101,
+  out_of_range = -102,
+  unknown_name = -103,
+  type_mismatch = -104,
+  buffer_too_small = -105,
+  limit_exceeded = -200,
+  already_exists = -201,
+  not_allowed = -202,
+  no_state = -203,
+  io = -300,
+  corrupt_file = -301,
+  file_version = -302,
+  abi_mismatch = -400,
+  internal = -900,
+};
+
+class Error : public std::runtime_error {
+ public:
+  Error(Status status, const std::string& message) : std::runtime_error(message), status_(status) {}
+  Status status() const { return status_; }
+
+ private:
+  Status status_;
+};
+
+// Throws out_of_range naming `field` unless value is finite.
+void require_finite(double value, const std::string& field);
+// Throws out_of_range naming `field` unless value is finite and > 0.
+void require_positive(double value, const std::string& field);
+// Throws out_of_range naming `field` unless value is finite and >= 0.
+void require_non_negative(double value, const std::string& field);
+
+}  // namespace eoir

@@ -1,0 +1,45 @@
+// Engine time (spec 3.2): TT kept as whole days since J2000.0 plus a fraction
+// of a day, so that a step of one millisecond is exact over centuries.
+// Conversions between scales go through ERFA.
+#pragma once
+#include <string>
+
+namespace eoir {
+
+enum class TimeScale : int { utc = 0, tai = 1, tt = 2, tdb = 3 };
+
+// A two-part Julian date in a given scale (as ERFA's date1 + date2).
+struct JulianDate {
+  TimeScale scale = TimeScale::tt;
+  double jd1 = 2451545.0;
+  double jd2 = 0.0;
+};
+
+class EngineTime {
+ public:
+  EngineTime() = default;
+  // From any scale; throws eoir::Error(out_of_range) for non-finite parts or
+  // dates ERFA cannot convert.
+  static EngineTime from(const JulianDate& date);
+  static EngineTime from_tt_days(double days_since_j2000, double fraction_of_day);
+  JulianDate to(TimeScale scale) const;
+  // Whole TT days since J2000.0 and fraction of a day in [0, 1).
+  double days() const { return days_; }
+  double fraction() const { return fraction_; }
+  // Seconds from `other` to this (exact to well below a microsecond).
+  double seconds_since(const EngineTime& other) const;
+  EngineTime plus_seconds(double seconds) const;
+  bool operator==(const EngineTime& o) const { return days_ == o.days_ && fraction_ == o.fraction_; }
+
+ private:
+  void normalise();
+  double days_ = 0.0;
+  double fraction_ = 0.0;
+};
+
+// ISO-8601 UTC "YYYY-MM-DDThh:mm:ss[.fff][Z]" <-> UTC two-part JD. Throws
+// eoir::Error(out_of_range) naming the problem.
+JulianDate utc_from_iso(const std::string& iso);
+std::string iso_from_utc(const JulianDate& utc, int decimals = 3);
+
+}  // namespace eoir

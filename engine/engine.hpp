@@ -1,0 +1,61 @@
+// The engine: one modeled universe, its time, its sensors' cached metrics and
+// its noise generator. No terminal I/O, no global state; one engine per host
+// thread (calls on one engine must not overlap).
+#pragma once
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+
+#include "core/time.hpp"
+#include "metrics/static_providers.hpp"
+#include "sensor/static_metrics.hpp"
+#include "universe/universe.hpp"
+
+namespace eoir {
+
+struct EngineOptions {
+  std::uint32_t threads = 0;  // 0 = all cores
+  std::uint64_t seed = 1;
+};
+
+class Engine {
+ public:
+  explicit Engine(const EngineOptions& options = {});
+
+  universe::Universe& universe() { return universe_; }
+  const universe::Universe& universe() const { return universe_; }
+
+  const EngineTime& time() const { return time_; }
+  void set_time(const EngineTime& t) { time_ = t; }
+
+  const EngineOptions& options() const { return options_; }
+  std::mt19937_64& noise_rng() { return noise_rng_; }
+  const std::mt19937_64& noise_rng() const { return noise_rng_; }
+  void set_noise_rng(const std::mt19937_64& rng) { noise_rng_ = rng; }
+
+  // Static metrics of a sensor, recomputed only after its parameters change.
+  // Throws eoir::Error (unknown sensor, inconsistent parameters).
+  const sensor::StaticMetrics& static_metrics(const std::string& sensor);
+
+  // One data-provider element at the engine time. `target` may be empty.
+  metrics::ElementValue provider(const std::string& group, const std::string& element, const std::string& sensor,
+                                 const std::string& target);
+
+  // Drop every cached result (after a restore or removal).
+  void invalidate_caches() { metric_cache_.clear(); }
+
+ private:
+  struct CachedMetrics {
+    std::uint64_t revision;
+    std::shared_ptr<const sensor::StaticMetrics> metrics;
+  };
+  EngineOptions options_;
+  universe::Universe universe_;
+  EngineTime time_;
+  std::mt19937_64 noise_rng_;
+  std::map<std::string, CachedMetrics> metric_cache_;
+};
+
+}  // namespace eoir

@@ -1,0 +1,278 @@
+#include "state/scd.hpp"
+
+#include <set>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "sensor/sensor_properties.hpp"
+#include "state/atomic_file.hpp"
+#include "universe/object_motion.hpp"
+#include "universe/object_properties.hpp"
+
+namespace eoir::state {
+namespace {
+using nlohmann::json;
+using universe::Object;
+using universe::ObjectKind;
+
+[[noreturn]] void corrupt(const std::string& where, const std::string& what) {
+  throw Error(Status::corrupt_file, where + ": " + what);
+}
+
+// Refuses fields other than `allowed` and checks the required ones.
+void check_fields(const json& j, const std::string& where, const std::set<std::string>& allowed,
+                  const std::set<std::string>& required) {
+  if (!j.is_object()) corrupt(where, "expected an object");
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (!allowed.count(it.key())) corrupt(where + "." + it.key(), "unknown field");
+  for (const auto& r : required)
+    if (!j.contains(r)) corrupt(where + "." + r, "missing");
+}
+
+template <class T>
+T field(const json& j, const std::string& key, const std::string& where) {
+  try {
+    return j.at(key).get<T>();
+  } catch (const json::exception&) {
+    corrupt(where + "." + key, "missing or of the wrong type");
+  }
+}
+
+void check_format(const json& doc, const char* format, int version, const std::string& where) {
+  const auto f = field<std::string>(doc, "format", where);
+  if (f != format) corrupt(where + ".format", "expected '" + std::string(format) + "', got '" + f + "'");
+  const auto v = field<int>(doc, "version", where);
+  if (v > version)
+    throw Error(Status::file_version, where + ".version: file format version " + std::to_string(v) +
+                                          " is newer than this engine reads (" + std::to_string(version) + ")");
+  if (v < 1) corrupt(where + ".version", "must be >= 1");
+}
+
+json value_to_json(const Value& v) {
+  return std::visit([](const auto& x) { return json(x); }, v);
+}
+
+Value json_to_value(const json& j, ValueType type, const std::string& where) {
+  switch (type) {
+    case ValueType::number:
+      if (!j.is_number()) corrupt(where, "expected a number");
+      return j.get<double>();
+    case ValueType::integer:
+      if (!j.is_number_integer()) corrupt(where, "expected an integer");
+      return j.get<std::int64_t>();
+    case ValueType::boolean:
+      if (!j.is_boolean()) corrupt(where, "expected true or false");
+      return j.get<bool>();
+    case ValueType::string:
+      if (!j.is_string()) corrupt(where, "expected a string");
+      return j.get<std::string>();
+    case ValueType::array: {
+      if (!j.is_array()) corrupt(where, "expected an array of numbers");
+      std::vector<double> a;
+      for (const auto& x : j) {
+        if (!x.is_number()) corrupt(where, "expected an array of numbers");
+        a.push_back(x.get<double>());
+      }
+      return a;
+    }
+  }
+  corrupt(where, "unsupported type");
+}
+
+bool fixed_property(const Object& o, const std::string& name) {
+  return o.kind == ObjectKind::central_body && (name == "shape" || name == "dimensions_m");
+}
+
+json properties_to_json(const Object& o) {
+  json p = json::object();
+  for (const auto& spec : universe::properties_of(o.kind))
+    if (!fixed_property(o, spec.name)) p[spec.name] = value_to_json(spec.get(o));
+  return p;
+}
+
+void apply_properties(Object& o, const json& p, const std::string& where) {
+  if (!p.is_object()) corrupt(where, "expected an object");
+  // Apply in the table's order (shape before dimensions_m, preset before W_rms).
+  std::set<std::string> seen;
+  for (const auto& spec : universe::properties_of(o.kind)) {
+    if (!p.contains(spec.name)) continue;
+    seen.insert(spec.name);
+    const std::string at = where + "." + spec.name;
+    try {
+      universe::set_property(o, spec.name, json_to_value(p.at(spec.name), spec.type, at));
+    } catch (const Error& e) {
+      if (e.status() == Status::corrupt_file) throw;
+      corrupt(at, e.what());
+    }
+  }
+  for (auto it = p.begin(); it != p.end(); ++it)
+    if (!seen.count(it.key())) corrupt(where + "." + it.key(), "unknown property of a " + std::string(kind_name(o.kind)));
+}
+
+json vec(const frames::Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+frames::Vec3 vec_from(const json& j, const std::string& key, const std::string& where) {
+  const auto a = field<std::vector<double>>(j, key, where);
+  if (a.size() != 3) corrupt(where + "." + key, "expected 3 numbers");
+  return frames::Vec3(a[0], a[1], a[2]);
+}
+
+ObjectKind kind_from(const std::string& s, const std::string& where) {
+  for (int k = 1; k <= 7; ++k)
+    if (s == universe::kind_name(static_cast<ObjectKind>(k))) return static_cast<ObjectKind>(k);
+  corrupt(where, "unknown kind '" + s + "'");
+}
+}  // namespace
+
+json parse_document(const std::string& text, const std::string& path) {
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw Error(Status::corrupt_file, "file: '" + path + "' is not valid JSON (truncated or corrupt): " + e.what());
+  }
+}
+
+json engine_to_json(const Engine& engine) {
+  json doc;
+  doc["format"] = "eoir-scd";
+  doc["version"] = scd_format_version;
+  std::ostringstream rng;
+  rng << engine.noise_rng();
+  doc["engine"] = {{"seed", engine.options().seed}, {"noise_rng_state", rng.str()}};
+  const EngineTime& t = engine.time();
+  doc["time"] = {{"scale", "TT"},
+                 {"days_since_j2000", t.days()},
+                 {"fraction_of_day", t.fraction()},
+                 {"utc", iso_from_utc(t.to(TimeScale::utc), 6)}};
+  json objects = json::array();
+  for (const Object& o : engine.universe().objects()) {
+    json j{{"name", o.name}, {"kind", universe::kind_name(o.kind)}};
+    if (o.kind == ObjectKind::sensor) j["parent"] = o.parent;
+    j["properties"] = properties_to_json(o);
+    if (o.state.valid) {
+      const auto& s = o.state;
+      j["state"] = {{"epoch_days_since_j2000", s.epoch.days()},
+                    {"epoch_fraction_of_day", s.epoch.fraction()},
+                    {"frame", s.frame == universe::StateFrame::j2000 ? "j2000" : "earth_fixed"},
+                    {"position_m", vec(s.position_m)},
+                    {"velocity_m_s", vec(s.velocity_m_s)},
+                    {"attitude_wxyz", json::array({s.attitude.w(), s.attitude.x(), s.attitude.y(), s.attitude.z()})}};
+    }
+    objects.push_back(j);
+  }
+  doc["objects"] = objects;
+  return doc;
+}
+
+std::unique_ptr<Engine> engine_from_json(const json& doc, std::uint32_t threads) {
+  check_fields(doc, "scd", {"format", "version", "engine", "time", "objects"},
+               {"format", "version", "engine", "time", "objects"});
+  check_format(doc, "eoir-scd", scd_format_version, "scd");
+  const json& e = doc.at("engine");
+  check_fields(e, "scd.engine", {"seed", "noise_rng_state"}, {"seed", "noise_rng_state"});
+  EngineOptions options;
+  options.threads = threads;
+  options.seed = field<std::uint64_t>(e, "seed", "scd.engine");
+  auto engine = std::make_unique<Engine>(options);
+  {
+    std::mt19937_64 rng;
+    std::istringstream in(field<std::string>(e, "noise_rng_state", "scd.engine"));
+    in >> rng;
+    if (in.fail()) corrupt("scd.engine.noise_rng_state", "not a generator state");
+    engine->set_noise_rng(rng);
+  }
+  const json& t = doc.at("time");
+  check_fields(t, "scd.time", {"scale", "days_since_j2000", "fraction_of_day", "utc"},
+               {"scale", "days_since_j2000", "fraction_of_day"});
+  if (field<std::string>(t, "scale", "scd.time") != "TT") corrupt("scd.time.scale", "must be 'TT'");
+  try {
+    engine->set_time(EngineTime::from_tt_days(field<double>(t, "days_since_j2000", "scd.time"),
+                                              field<double>(t, "fraction_of_day", "scd.time")));
+  } catch (const Error& err) {
+    corrupt("scd.time", err.what());
+  }
+  const json& objects = doc.at("objects");
+  if (!objects.is_array()) corrupt("scd.objects", "expected an array");
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const std::string where = "scd.objects[" + std::to_string(i) + "]";
+    const json& j = objects[i];
+    check_fields(j, where, {"name", "kind", "parent", "properties", "state"}, {"name", "kind"});
+    const auto name = field<std::string>(j, "name", where);
+    const ObjectKind kind = kind_from(field<std::string>(j, "kind", where), where + ".kind");
+    Object* o = nullptr;
+    try {
+      if (name == "Sun" && kind == ObjectKind::central_body)
+        o = &engine->universe().get("Sun");
+      else
+        o = &engine->universe().add(kind, name, j.value("parent", std::string()));
+    } catch (const Error& err) {
+      corrupt(where, err.what());
+    }
+    if (j.contains("properties")) apply_properties(*o, j.at("properties"), where + ".properties");
+    if (j.contains("state")) {
+      const json& s = j.at("state");
+      const std::string sw = where + ".state";
+      check_fields(s, sw,
+                   {"epoch_days_since_j2000", "epoch_fraction_of_day", "frame", "position_m", "velocity_m_s",
+                    "attitude_wxyz"},
+                   {"epoch_days_since_j2000", "epoch_fraction_of_day", "frame", "position_m", "velocity_m_s",
+                    "attitude_wxyz"});
+      const auto frame = field<std::string>(s, "frame", sw);
+      if (frame != "j2000" && frame != "earth_fixed") corrupt(sw + ".frame", "must be j2000 or earth_fixed");
+      const auto q = field<std::vector<double>>(s, "attitude_wxyz", sw);
+      if (q.size() != 4) corrupt(sw + ".attitude_wxyz", "expected 4 numbers");
+      const frames::Vec3 r = vec_from(s, "position_m", sw), v = vec_from(s, "velocity_m_s", sw);
+      try {
+        const EngineTime epoch = EngineTime::from_tt_days(field<double>(s, "epoch_days_since_j2000", sw),
+                                                          field<double>(s, "epoch_fraction_of_day", sw));
+        const double rp[3] = {r.x(), r.y(), r.z()}, vp[3] = {v.x(), v.y(), v.z()};
+        universe::push_state(*o, epoch, frame == "j2000" ? 0 : 1, rp, vp, q.data());
+        // Keep the saved quaternion bit for bit (push_state normalises).
+        o->state.attitude = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+      } catch (const Error& err) {
+        corrupt(sw, err.what());
+      }
+    }
+  }
+  return engine;
+}
+
+json sensor_to_json(const Object& s) {
+  return json{{"format", "eoir-sensor"},
+              {"version", sensor_format_version},
+              {"name", s.name},
+              {"parameters", properties_to_json(s)}};
+}
+
+sensor::SensorParameters sensor_from_json(const json& doc) {
+  check_fields(doc, "sensor", {"format", "version", "name", "parameters"}, {"format", "version", "parameters"});
+  check_format(doc, "eoir-sensor", sensor_format_version, "sensor");
+  Object o;
+  o.kind = ObjectKind::sensor;
+  o.name = doc.value("name", std::string("sensor"));
+  apply_properties(o, doc.at("parameters"), "sensor.parameters");
+  try {
+    sensor::check_consistency(o.sensor);
+  } catch (const Error& err) {
+    corrupt("sensor.parameters", err.what());
+  }
+  return o.sensor;
+}
+
+void save_engine(const Engine& engine, const std::string& path) {
+  write_file_atomically(path, engine_to_json(engine).dump(1) + "\n");
+}
+
+std::unique_ptr<Engine> load_engine(const std::string& path, std::uint32_t threads) {
+  return engine_from_json(parse_document(read_file(path), path), threads);
+}
+
+void save_sensor(const Object& sensor, const std::string& path) {
+  write_file_atomically(path, sensor_to_json(sensor).dump(1) + "\n");
+}
+
+sensor::SensorParameters load_sensor(const std::string& path) {
+  return sensor_from_json(parse_document(read_file(path), path));
+}
+
+}  // namespace eoir::state

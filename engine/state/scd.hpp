@@ -1,0 +1,34 @@
+// The engine's whole state as a versioned JSON .scd file (spec 3.4,
+// schemas/scd.schema.json), and one sensor's parameters on their own.
+#pragma once
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "engine.hpp"
+
+namespace eoir::state {
+
+constexpr int scd_format_version = 1;
+constexpr int sensor_format_version = 1;
+
+nlohmann::json engine_to_json(const Engine& engine);
+// Builds a complete new engine from `doc`; throws eoir::Error(corrupt_file or
+// file_version) naming the JSON path of the problem. `threads` is the
+// restoring machine's choice, not the file's.
+std::unique_ptr<Engine> engine_from_json(const nlohmann::json& doc, std::uint32_t threads);
+
+nlohmann::json sensor_to_json(const universe::Object& sensor);
+// Returns the parameters the file describes (validated, consistent).
+sensor::SensorParameters sensor_from_json(const nlohmann::json& doc);
+
+// Parse text as JSON; a syntax error or truncation is corrupt_file naming the
+// byte offset.
+nlohmann::json parse_document(const std::string& text, const std::string& path);
+
+void save_engine(const Engine& engine, const std::string& path);
+std::unique_ptr<Engine> load_engine(const std::string& path, std::uint32_t threads);
+void save_sensor(const universe::Object& sensor, const std::string& path);
+sensor::SensorParameters load_sensor(const std::string& path);
+
+}  // namespace eoir::state

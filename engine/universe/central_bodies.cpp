@@ -1,0 +1,53 @@
+#include "universe/central_bodies.hpp"
+
+#include <erfa.h>
+
+#include "core/constants.hpp"
+
+namespace eoir::universe {
+
+const std::vector<CentralBodyInfo>& central_bodies() {
+  static const std::vector<CentralBodyInfo> table = {
+      {"Sun", 695700.0e3, 695700.0e3, 0},      {"Mercury", 2440.53e3, 2438.26e3, 1},
+      {"Venus", 6051.8e3, 6051.8e3, 2},        {"Earth", 6378137.0, 6356752.314245, 0},
+      {"Mars", 3396.19e3, 3376.20e3, 4},       {"Jupiter", 71492.0e3, 66854.0e3, 5},
+      {"Saturn", 60268.0e3, 54364.0e3, 6},     {"Uranus", 25559.0e3, 24973.0e3, 7},
+      {"Neptune", 24764.0e3, 24341.0e3, 8},    {"Moon", 1737.4e3, 1737.4e3, 0},
+  };
+  return table;
+}
+
+const CentralBodyInfo* find_central_body(const std::string& name) {
+  for (const auto& b : central_bodies())
+    if (name == b.name) return &b;
+  return nullptr;
+}
+
+void central_body_state_j2000(const CentralBodyInfo& body, const EngineTime& t, frames::Vec3& r_m,
+                              frames::Vec3& v_m_s) {
+  const JulianDate tdb = t.to(TimeScale::tdb);
+  constexpr double au = constants::au_m;
+  constexpr double au_per_day = constants::au_m / constants::seconds_per_day;
+  const std::string name = body.name;
+  r_m.setZero();
+  v_m_s.setZero();
+  if (name == "Earth") return;
+  double pv[2][3];
+  if (name == "Moon") {
+    eraMoon98(tdb.jd1, tdb.jd2, pv);
+    r_m = frames::Vec3(pv[0][0], pv[0][1], pv[0][2]) * au;
+    v_m_s = frames::Vec3(pv[1][0], pv[1][1], pv[1][2]) * au_per_day;
+    return;
+  }
+  double earth_h[2][3], earth_b[2][3];
+  eraEpv00(tdb.jd1, tdb.jd2, earth_h, earth_b);
+  frames::Vec3 rh(0, 0, 0), vh(0, 0, 0);  // heliocentric body (Sun: zero)
+  if (body.erfa_planet > 0) {
+    eraPlan94(tdb.jd1, tdb.jd2, body.erfa_planet, pv);
+    rh = frames::Vec3(pv[0][0], pv[0][1], pv[0][2]);
+    vh = frames::Vec3(pv[1][0], pv[1][1], pv[1][2]);
+  }
+  r_m = (rh - frames::Vec3(earth_h[0][0], earth_h[0][1], earth_h[0][2])) * au;
+  v_m_s = (vh - frames::Vec3(earth_h[1][0], earth_h[1][1], earth_h[1][2])) * au_per_day;
+}
+}  // namespace eoir::universe

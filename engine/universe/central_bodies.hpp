@@ -1,0 +1,31 @@
+// The central bodies of the modeled universe (spec 4.3.1): fixed physical
+// dimensions and positions from ERFA's analytic ephemerides.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/frames.hpp"
+#include "core/time.hpp"
+
+namespace eoir::universe {
+
+struct CentralBodyInfo {
+  const char* name;
+  double equatorial_radius_m;
+  double polar_radius_m;
+  int erfa_planet;  // eraPlan94 index (1 Mercury .. 8 Neptune), 0 for Sun, Earth, Moon
+};
+
+// Sun, Mercury..Neptune, Moon. Radii: IAU WG on cartographic coordinates
+// (2015) mean values; Earth is WGS84.
+const std::vector<CentralBodyInfo>& central_bodies();
+// nullptr if `name` is not a central body.
+const CentralBodyInfo* find_central_body(const std::string& name);
+
+// Geocentric J2000 position (m) and velocity (m/s) of a central body: Sun and
+// planets from eraEpv00/eraPlan94 (geometric, no light time), Moon from
+// eraMoon98, Earth at the origin.
+void central_body_state_j2000(const CentralBodyInfo& body, const EngineTime& t, frames::Vec3& r_m,
+                              frames::Vec3& v_m_s);
+
+}  // namespace eoir::universe

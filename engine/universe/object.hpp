@@ -1,0 +1,67 @@
+// One object of the modeled universe (spec 3.1): central body, star field,
+// satellite, aircraft, ground vehicle, missile, or sensor (an SSG-SMP).
+#pragma once
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/frames.hpp"
+#include "core/time.hpp"
+#include "sensor/sensor_parameters.hpp"
+
+namespace eoir::universe {
+
+enum class ObjectKind : int {
+  central_body = 1,
+  star_field = 2,
+  satellite = 3,
+  aircraft = 4,
+  ground_vehicle = 5,
+  missile = 6,
+  sensor = 7,
+};
+const char* kind_name(ObjectKind kind);  // "satellite", ...
+
+// Frame in which a pushed state is kept and extrapolated.
+enum class StateFrame : int { j2000 = 0, earth_fixed = 1 };
+
+// The last state a host pushed, in its own frame; the engine moves the object
+// along its velocity (and keeps its attitude fixed in that frame) until the
+// next push.
+struct PushedState {
+  bool valid = false;
+  EngineTime epoch;
+  StateFrame frame = StateFrame::j2000;
+  frames::Vec3 position_m = frames::Vec3::Zero();
+  frames::Vec3 velocity_m_s = frames::Vec3::Zero();
+  Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  // body -> frame
+};
+
+// Physical properties of a body-like object (satellites, vehicles, missiles;
+// central bodies have fixed shapes).
+struct BodyProperties {
+  std::string shape = "sphere";
+  std::vector<double> dimensions_m{1.0};
+  std::string material = "gray_body";
+  double temperature_K = 300.0;
+  double reflectance = 0.0;  // gray-body SRF; emissivity = 1 - SRF (spec 4.1.4.1)
+  std::int64_t stages = 1;   // missiles only (spec 4.3.6)
+};
+
+struct StarFieldProperties {
+  double limiting_magnitude = 9.0;
+};
+
+struct Object {
+  std::string name;
+  ObjectKind kind = ObjectKind::satellite;
+  std::string parent;  // sensors only
+  BodyProperties body;
+  StarFieldProperties stars;
+  sensor::SensorParameters sensor;
+  PushedState state;
+  std::uint64_t revision = 0;  // bumped on every property change (metric caches)
+};
+
+}  // namespace eoir::universe

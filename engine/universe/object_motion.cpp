@@ -1,0 +1,81 @@
+#include "universe/object_motion.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "universe/central_bodies.hpp"
+
+namespace eoir::universe {
+
+void push_state(Object& object, const EngineTime& epoch, int frame, const double position[3],
+                const double velocity[3], const double q[4]) {
+  if (object.kind == ObjectKind::central_body || object.kind == ObjectKind::star_field)
+    throw Error(Status::not_allowed, "state: '" + object.name + "' moves on its own ephemeris and takes no state");
+  for (int i = 0; i < 3; ++i) require_finite(position[i], "position[" + std::to_string(i) + "]");
+  for (int i = 0; i < 3; ++i) require_finite(velocity[i], "velocity[" + std::to_string(i) + "]");
+  for (int i = 0; i < 4; ++i) require_finite(q[i], "attitude[" + std::to_string(i) + "]");
+  const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (std::fabs(norm - 1.0) > 1e-6)
+    throw Error(Status::out_of_range, "attitude: quaternion must have unit norm (|q| - 1 within 1e-6), |q| = " +
+                                          std::to_string(norm));
+  PushedState s;
+  s.valid = true;
+  s.epoch = epoch;
+  s.attitude = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
+  s.velocity_m_s = frames::Vec3(velocity[0], velocity[1], velocity[2]);
+  switch (frame) {
+    case 0:
+      s.frame = StateFrame::j2000;
+      s.position_m = frames::Vec3(position[0], position[1], position[2]);
+      break;
+    case 1:
+      s.frame = StateFrame::earth_fixed;
+      s.position_m = frames::Vec3(position[0], position[1], position[2]);
+      break;
+    case 2:
+      if (position[0] < -90.0 || position[0] > 90.0)
+        throw Error(Status::out_of_range, "position[0] (latitude): must be in [-90, 90] deg, got " +
+                                              std::to_string(position[0]));
+      s.frame = StateFrame::earth_fixed;
+      s.position_m = frames::geodetic_to_earth_fixed(position[0], position[1], position[2]);
+      break;
+    default: throw Error(Status::out_of_range, "frame: unknown frame " + std::to_string(frame));
+  }
+  object.state = s;
+}
+
+Kinematics kinematics_at(const Universe& universe, const Object& object, const EngineTime& t) {
+  Kinematics k{frames::Vec3::Zero(), frames::Vec3::Zero(), Eigen::Quaterniond::Identity()};
+  if (object.kind == ObjectKind::central_body) {
+    central_body_state_j2000(*find_central_body(object.name), t, k.position_m, k.velocity_m_s);
+    return k;
+  }
+  if (object.kind == ObjectKind::star_field) return k;
+  if (object.kind == ObjectKind::sensor) {
+    const Object& parent = universe.get(object.parent, "parent");
+    k = kinematics_at(universe, parent, t);
+    if (object.state.valid) {
+      const PushedState& s = object.state;
+      k.attitude = s.frame == StateFrame::j2000
+                       ? s.attitude
+                       : Eigen::Quaterniond(frames::j2000_to_earth_fixed(t).transpose()) * s.attitude;
+    }
+    return k;
+  }
+  const PushedState& s = object.state;
+  if (!s.valid) throw Error(Status::no_state, "state: object '" + object.name + "' has no state; push one first");
+  const double dt = t.seconds_since(s.epoch);
+  const frames::Vec3 r = s.position_m + s.velocity_m_s * dt;  // constant-velocity extrapolation
+  if (s.frame == StateFrame::j2000) {
+    k.position_m = r;
+    k.velocity_m_s = s.velocity_m_s;
+    k.attitude = s.attitude;
+  } else {
+    frames::earth_fixed_to_j2000(t, r, s.velocity_m_s, k.position_m, k.velocity_m_s);
+    k.attitude = Eigen::Quaterniond(frames::j2000_to_earth_fixed(t).transpose()) * s.attitude;
+  }
+  return k;
+}
+
+}  // namespace eoir::universe

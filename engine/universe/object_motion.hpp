@@ -1,0 +1,27 @@
+// Where an object is at the engine time: pushed states moved along their
+// velocity, central bodies from their ephemerides, sensors on their parents.
+#pragma once
+#include <Eigen/Geometry>
+
+#include "core/frames.hpp"
+#include "universe/universe.hpp"
+
+namespace eoir::universe {
+
+struct Kinematics {
+  frames::Vec3 position_m;    // geocentric J2000
+  frames::Vec3 velocity_m_s;  // J2000
+  Eigen::Quaterniond attitude;  // body -> J2000
+};
+
+// Throws eoir::Error(no_state) if the object (or a sensor's parent) has no
+// pushed state.
+Kinematics kinematics_at(const Universe& universe, const Object& object, const EngineTime& t);
+
+// Validates and stores a state pushed by the host. frame: 0 J2000, 1
+// Earth-fixed, 2 geodetic (position = lat deg, lon deg, height m). Throws
+// eoir::Error naming the field (position[1], attitude, frame, ...).
+void push_state(Object& object, const EngineTime& epoch, int frame, const double position[3],
+                const double velocity[3], const double attitude_wxyz[4]);
+
+}  // namespace eoir::universe

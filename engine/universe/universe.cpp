@@ -1,0 +1,106 @@
+#include "universe/universe.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+#include "core/limits.hpp"
+#include "universe/central_bodies.hpp"
+
+namespace eoir::universe {
+namespace {
+void check_limit(std::size_t have, std::size_t limit, const char* what) {
+  if (have >= limit)
+    throw Error(Status::limit_exceeded, std::string("kind: at most ") + std::to_string(limit) + " " + what +
+                                            " (spec 3.1); remove one first");
+}
+}  // namespace
+
+Universe::Universe() { add(ObjectKind::central_body, "Sun"); }
+
+std::size_t Universe::count(ObjectKind kind) const {
+  return static_cast<std::size_t>(
+      std::count_if(objects_.begin(), objects_.end(), [kind](const Object& o) { return o.kind == kind; }));
+}
+
+Object& Universe::add(ObjectKind kind, const std::string& name, const std::string& parent) {
+  if (name.empty()) throw Error(Status::out_of_range, "name: must not be empty");
+  if (name.size() > limits::max_name_length)
+    throw Error(Status::out_of_range, "name: longer than " + std::to_string(limits::max_name_length) + " bytes");
+  if (find(name)) throw Error(Status::already_exists, "name: an object named '" + name + "' already exists");
+  Object o;
+  o.name = name;
+  o.kind = kind;
+  switch (kind) {
+    case ObjectKind::central_body: {
+      const CentralBodyInfo* body = find_central_body(name);
+      if (!body)
+        throw Error(Status::unknown_name, "name: '" + name +
+                                              "' is not a central body (Sun, Mercury, Venus, Earth, Mars, Jupiter, "
+                                              "Saturn, Uranus, Neptune, Moon)");
+      o.body.shape = "oblate";
+      o.body.dimensions_m = {body->equatorial_radius_m, body->polar_radius_m};
+      break;
+    }
+    case ObjectKind::star_field:
+      if (name != "Stars") throw Error(Status::unknown_name, "name: the star field must be named 'Stars'");
+      break;
+    case ObjectKind::satellite: check_limit(count(kind), limits::max_satellites, "satellites"); break;
+    case ObjectKind::aircraft:
+    case ObjectKind::ground_vehicle:
+      check_limit(count(ObjectKind::aircraft) + count(ObjectKind::ground_vehicle), limits::max_vehicles,
+                  "aircraft plus ground vehicles");
+      break;
+    case ObjectKind::missile: check_limit(count(kind), limits::max_missiles, "missiles"); break;
+    case ObjectKind::sensor: {
+      check_limit(count(kind), limits::max_sensors, "sensors (scene-generator/sensor-model pairs)");
+      const Object& p = get(parent, "parent");
+      if (p.kind == ObjectKind::star_field || p.kind == ObjectKind::sensor)
+        throw Error(Status::not_allowed,
+                    "parent: a sensor cannot be attached to " + std::string(kind_name(p.kind)) + " '" + parent + "'");
+      o.parent = parent;
+      break;
+    }
+    default: throw Error(Status::out_of_range, "kind: unknown object kind " + std::to_string(static_cast<int>(kind)));
+  }
+  objects_.push_back(std::move(o));
+  return objects_.back();
+}
+
+void Universe::remove(const std::string& name) {
+  const Object& o = get(name);
+  if (o.name == "Sun") throw Error(Status::not_allowed, "name: the Sun cannot be removed (spec 3.1)");
+  const std::string gone = o.name;
+  objects_.erase(std::remove_if(objects_.begin(), objects_.end(),
+                                [&](const Object& x) {
+                                  return x.name == gone || (x.kind == ObjectKind::sensor && x.parent == gone);
+                                }),
+                 objects_.end());
+}
+
+Object* Universe::find(const std::string& name) {
+  for (auto& o : objects_)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+const Object* Universe::find(const std::string& name) const {
+  for (const auto& o : objects_)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+Object& Universe::get(const std::string& name, const char* field) {
+  if (Object* o = find(name)) return *o;
+  throw Error(Status::unknown_name, std::string(field) + ": no object named '" + name + "'");
+}
+const Object& Universe::get(const std::string& name, const char* field) const {
+  if (const Object* o = find(name)) return *o;
+  throw Error(Status::unknown_name, std::string(field) + ": no object named '" + name + "'");
+}
+const Object& Universe::sensor(const std::string& name, const char* field) const {
+  const Object& o = get(name, field);
+  if (o.kind != ObjectKind::sensor)
+    throw Error(Status::unknown_name, std::string(field) + ": '" + name + "' is a " + kind_name(o.kind) +
+                                          ", not a sensor");
+  return o;
+}
+
+}  // namespace eoir::universe

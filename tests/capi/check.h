@@ -1,0 +1,61 @@
+/* A minimal C99 test harness for the C ABI tests. */
+#ifndef EOIR_TEST_CHECK_H
+#define EOIR_TEST_CHECK_H
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "eoir/eoir.h"
+
+static int check_failures = 0;
+static int check_count = 0;
+
+#define CHECK(cond)                                                              \
+  do {                                                                           \
+    ++check_count;                                                               \
+    if (!(cond)) {                                                               \
+      ++check_failures;                                                          \
+      fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);  \
+    }                                                                            \
+  } while (0)
+
+/* Calls must succeed. */
+#define OK(call)                                                                              \
+  do {                                                                                        \
+    eoir_status st_ = (call);                                                                 \
+    ++check_count;                                                                            \
+    if (st_ != EOIR_OK) {                                                                     \
+      ++check_failures;                                                                       \
+      fprintf(stderr, "%s:%d: %s -> %s: %s\n", __FILE__, __LINE__, #call, eoir_status_name(st_), \
+              eoir_last_error());                                                             \
+    }                                                                                         \
+  } while (0)
+
+/* Calls must fail with `status` and a message containing `field`. */
+#define FAILS(call, status, field)                                                                 \
+  do {                                                                                             \
+    eoir_status st_ = (call);                                                                      \
+    ++check_count;                                                                                 \
+    if (st_ != (status) || strstr(eoir_last_error(), (field)) == NULL) {                           \
+      ++check_failures;                                                                            \
+      fprintf(stderr, "%s:%d: %s -> %s (\"%s\"), expected %s naming \"%s\"\n", __FILE__, __LINE__, \
+              #call, eoir_status_name(st_), eoir_last_error(), eoir_status_name(status), (field));  \
+    }                                                                                              \
+  } while (0)
+
+/* |actual - expected| <= rel * |expected| */
+#define NEAR_REL(actual, expected, rel)                                                          \
+  do {                                                                                           \
+    double a_ = (actual), e_ = (expected);                                                       \
+    ++check_count;                                                                               \
+    if (!(fabs(a_ - e_) <= (rel) * fabs(e_))) {                                                  \
+      ++check_failures;                                                                          \
+      fprintf(stderr, "%s:%d: %s = %.9g, expected %.9g within %g relative\n", __FILE__, __LINE__, \
+              #actual, a_, e_, (double)(rel));                                                   \
+    }                                                                                            \
+  } while (0)
+
+#define CHECK_SUMMARY()                                                                  \
+  (printf("%d checks, %d failed\n", check_count, check_failures), check_failures ? 1 : 0)
+
+#endif

@@ -1,6 +1,12 @@
 #include "engine.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/error.hpp"
+#include "scene/scene_generator.hpp"
+#include "sensor/display.hpp"
+#include "sensor/image_chain.hpp"
 #include "sensor/sensor_properties.hpp"
 
 namespace eoir {
@@ -15,6 +21,45 @@ const sensor::StaticMetrics& Engine::static_metrics(const std::string& name) {
   auto m = std::make_shared<const sensor::StaticMetrics>(sensor::compute_static_metrics(s.sensor));
   metric_cache_[name] = CachedMetrics{s.revision, m};
   return *m;
+}
+
+const scene::Frame& Engine::render(const std::string& name) {
+  const sensor::StaticMetrics& m = static_metrics(name);
+  const universe::Object& s = universe_.sensor(name);
+  auto frame = std::make_shared<scene::Frame>();
+  scene::generate_scene(universe_, time_, s, m, options_.threads, *frame);
+  sensor::render_sensor_image(s.sensor, m, *frame, noise_rng_);
+  // Display images (spec 4.1.2): the scene view shows the irradiance of each
+  // sample of the field of view (L dOmega) with point sources added to the
+  // nearest sample; the sensor view shows electrons.
+  const scene::SampleGrid& g = frame->grid;
+  const std::int64_t w = g.width(), fw = g.pixels_x * scene::SampleGrid::per_pixel;
+  const std::int64_t fh = g.pixels_y * scene::SampleGrid::per_pixel, guard = g.guard_samples();
+  std::vector<double> irradiance(static_cast<std::size_t>(fw * fh));
+  for (std::int64_t r = 0; r < fh; ++r)
+    for (std::int64_t c = 0; c < fw; ++c)
+      irradiance[static_cast<std::size_t>(r * fw + c)] =
+          frame->scene_radiance[static_cast<std::size_t>((r + guard) * w + c + guard)] *
+          g.sample_solid_angle_sr(c + guard, r + guard);
+  for (const scene::PointSource& ps : frame->point_sources) {
+    const std::int64_t c = std::clamp<std::int64_t>(std::lround(ps.column) - guard, 0, fw - 1);
+    const std::int64_t r = std::clamp<std::int64_t>(std::lround(ps.row) - guard, 0, fh - 1);
+    irradiance[static_cast<std::size_t>(r * fw + c)] += ps.irradiance_W_cm2;
+  }
+  frame->scene_display = sensor::compress_for_display(irradiance, s.sensor.display_agc, s.sensor.display_gain_step, 1e-6);
+  const double full_scale = std::isfinite(m.saturation_electrons) ? m.saturation_electrons : 1e6;
+  frame->sensor_display =
+      sensor::compress_for_display(frame->sensor_electrons, s.sensor.display_agc, s.sensor.display_gain_step, full_scale);
+  frames_[name] = frame;
+  return *frame;
+}
+
+const scene::Frame& Engine::frame(const std::string& name) const {
+  universe_.sensor(name);
+  auto it = frames_.find(name);
+  if (it == frames_.end())
+    throw Error(Status::no_state, "sensor: no frame rendered for '" + name + "' yet; call eoir_render first");
+  return *it->second;
 }
 
 metrics::ElementValue Engine::provider(const std::string& group, const std::string& element,

@@ -10,6 +10,7 @@
 
 #include "core/time.hpp"
 #include "metrics/static_providers.hpp"
+#include "scene/frame.hpp"
 #include "sensor/static_metrics.hpp"
 #include "universe/universe.hpp"
 
@@ -43,8 +44,17 @@ class Engine {
   metrics::ElementValue provider(const std::string& group, const std::string& element, const std::string& sensor,
                                  const std::string& target);
 
+  // Renders the frame of `sensor` at the engine time (spec 4 and 5; DESIGN.md
+  // section 1 steps 1-7) and keeps it until the next render.
+  const scene::Frame& render(const std::string& sensor);
+  // The last frame rendered for `sensor`; throws Error(no_state) if none.
+  const scene::Frame& frame(const std::string& sensor) const;
+
   // Drop every cached result (after a restore or removal).
-  void invalidate_caches() { metric_cache_.clear(); }
+  void invalidate_caches() {
+    metric_cache_.clear();
+    frames_.clear();
+  }
 
  private:
   struct CachedMetrics {
@@ -56,6 +66,7 @@ class Engine {
   EngineTime time_;
   std::mt19937_64 noise_rng_;
   std::map<std::string, CachedMetrics> metric_cache_;
+  std::map<std::string, std::shared_ptr<scene::Frame>> frames_;
 };
 
 }  // namespace eoir

@@ -7,9 +7,7 @@ namespace eoir::capi {
 namespace {
 thread_local std::string last_message;
 }
-void set_last_error(eoir_status status, const std::string& message) {
-  last_message = std::string(eoir_status_name(status)) + ": " + message;
-}
+void set_last_error(eoir_status, const std::string& message) { last_message = message; }
 void clear_last_error() { last_message.clear(); }
 }  // namespace eoir::capi
 

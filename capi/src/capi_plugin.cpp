@@ -50,6 +50,11 @@ const eoir_api_v1 api_v1 = {
     eoir_state_load,
     eoir_sensor_save,
     eoir_sensor_load,
+    eoir_render,
+    eoir_image_info_get,
+    eoir_image_get,
+    eoir_image_get_bytes,
+    eoir_pick_get,
 };
 }  // namespace
 
@@ -62,11 +67,9 @@ extern "C" EOIR_API eoir_status eoir_plugin_entry(uint32_t abi_major, const eoir
       throw eoir::Error(eoir::Status::abi_mismatch,
                         "abi_major: the host asks for EOIR ABI major " + std::to_string(abi_major) +
                             "; this engine library (" + eoir_version_string() + ") provides major 1 only");
-    if (host) {
-      eoir::capi::need_size(host->struct_size, sizeof(eoir_host_api), "host");
-      std::lock_guard<std::mutex> lock(host_mutex);
-      host_services = *host;
-    }
+    if (host) eoir::capi::need_size(host->struct_size, sizeof(eoir_host_api), "host");
+    std::lock_guard<std::mutex> lock(host_mutex);
+    host_services = host ? *host : eoir_host_api{};  // NULL clears earlier callbacks
     *api_out = &api_v1;
   });
 }

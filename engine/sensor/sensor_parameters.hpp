@@ -45,6 +45,12 @@ struct SensorParameters {
   // Fidelity knobs (DESIGN.md section 4).
   std::int64_t psf_grid_size = 512;    // FFT grid of the PSF (eq. 40), power of two
   std::int64_t otf_curve_points = 101; // samples of the OTF/MTF report curves
+  // Image chain (spec 4.2, 4.1.2, 5.11).
+  std::string scene_mode = "coarse";       // "coarse" (4.2.1) or "smooth" (4.2.2)
+  std::string band_integration = "grid";   // "grid" (spec 5.3 intervals) or "exact" (Planck series)
+  bool noise_enabled = true;               // dark and photon noise (eqs. 53-54)
+  bool display_agc = true;                 // automatic gain control (spec 4.1.2)
+  std::int64_t display_gain_step = 0;      // without AGC: gain 30^step (spec 4.1.2)
 };
 
 // Hufnagel OQF presets of spec 5.6.1.2 (data, not code: ERRATA 5.6.1.2).

@@ -67,6 +67,27 @@ Spec integer(const char* name, const char* unit, const char* description, std::i
               }};
 }
 
+Spec choice(const char* name, const char* description, std::string P::*member, std::vector<std::string> options) {
+  return Spec{name, ValueType::string, "", description, [member](const P& p) { return Value(p.*member); },
+              [=](P& p, const Value& v) {
+                const std::string& s = as_string(v, name);
+                std::string list;
+                for (const auto& o : options) {
+                  if (s == o) {
+                    p.*member = s;
+                    return;
+                  }
+                  list += (list.empty() ? "" : ", ") + o;
+                }
+                throw Error(Status::unknown_name, std::string(name) + ": unknown value '" + s + "' (" + list + ")");
+              }};
+}
+
+Spec flag(const char* name, const char* description, bool P::*member) {
+  return Spec{name, ValueType::boolean, "", description, [member](const P& p) { return Value(p.*member); },
+              [=](P& p, const Value& v) { p.*member = as_bool(v, name); }};
+}
+
 const char* quantity_name(ApertureQuantity q) { return q == ApertureQuantity::irradiance ? "irradiance" : "radiance"; }
 ApertureQuantity parse_quantity(const Value& v, const char* field) {
   const std::string& s = as_string(v, field);
@@ -198,6 +219,19 @@ const std::vector<Spec>& sensor_properties() {
                      }});
     t.push_back(integer("otf_curve_points", "count", "Samples of the OTF and MTF report curves", &P::otf_curve_points,
                         2, 100000));
+    t.push_back(choice("scene_mode", "Scene generation mode (spec 4.2): coarse (one radiance per patch dA) or "
+                       "smooth (radiance evaluated at each sample's own surface point)",
+                       &P::scene_mode, {"coarse", "smooth"}));
+    t.push_back(choice("band_integration", "Band integration (eq. 48): grid (the spec 5.3 intervals, midpoint "
+                       "rule) or exact (series integral of Planck terms, independent of the interval count)",
+                       &P::band_integration, {"grid", "exact"}));
+    t.push_back(flag("noise_enabled", "Add dark and scene photon noise to the sensor image (eqs. 53-55)",
+                     &P::noise_enabled));
+    t.push_back(flag("display_agc", "Automatic gain control of the display images (spec 4.1.2)", &P::display_agc));
+    t.push_back(integer("display_gain_step", "count",
+                        "Display gain without AGC: each step multiplies the gain by 30 (spec 4.1.2); step 0 maps "
+                        "the saturation level (sensor) or 1e-6 W/cm^2 (scene) to 255",
+                        &P::display_gain_step, -10, 10));
     return t;
   }();
   return table;
@@ -205,9 +239,9 @@ const std::vector<Spec>& sensor_properties() {
 
 void check_consistency(const SensorParameters& p) {
   if (!(p.band_high_um > p.band_low_um))
-    throw Error(Status::out_of_range, "band_high_um: must be greater than band_low_um (" +
-                                          std::to_string(p.band_low_um) + " um), got " +
-                                          std::to_string(p.band_high_um) + " um");
+    throw Error(Status::out_of_range, "band_low_um, band_high_um: band edges reversed or equal (low " +
+                                          std::to_string(p.band_low_um) + " um >= high " +
+                                          std::to_string(p.band_high_um) + " um)");
 }
 
 }  // namespace eoir::sensor

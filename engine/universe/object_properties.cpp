@@ -76,6 +76,15 @@ std::vector<Spec> body_properties(bool missile) {
                        throw Error(Status::out_of_range, "reflectance: must be in [0, 1], got " + std::to_string(x));
                      o.body.reflectance = x;
                    }});
+  t.push_back(Spec{"patch_size_m", ValueType::number, "m",
+                   "Edge of the patches dA the surface is divided into (spec 4.1.5.2); 0 = automatic (785 km for "
+                   "central bodies as spec 4.2.3, an eighth of the object's size otherwise)",
+                   [](const Object& o) { return Value(o.body.patch_size_m); },
+                   [](Object& o, const Value& v) {
+                     const double x = number_of(v, "patch_size_m");
+                     require_non_negative(x, "patch_size_m");
+                     o.body.patch_size_m = x;
+                   }});
   if (missile)
     t.push_back(Spec{"stages", ValueType::integer, "count", "Number of stages, 1-18 (spec 4.3.6)",
                      [](const Object& o) { return Value(o.body.stages); },

@@ -7,6 +7,9 @@
  *  - Every call returns eoir_status (0 = EOIR_OK, negative = error) and leaves
  *    a thread-local message readable with eoir_last_error(); the message names
  *    the offending field, e.g. "position[1]: not finite (nan)".
+ *  - Checks that involve several fields (band edges in order) are made when
+ *    the sensor is evaluated (data providers, images), so that parameters can
+ *    be changed one at a time in any order.
  *  - Structs passed in begin with uint32_t struct_size; fields are only ever
  *    appended; the library reads at most struct_size bytes.
  *  - Buffers are caller-allocated. Strings returned as const char* are static
@@ -36,7 +39,7 @@ extern "C" {
 
 /* ------------------------------------------------------------------ version */
 #define EOIR_VERSION_MAJOR 1
-#define EOIR_VERSION_MINOR 0
+#define EOIR_VERSION_MINOR 1
 #define EOIR_VERSION_PATCH 0
 
 /* Returns EOIR_VERSION_MAJOR*10000 + MINOR*100 + PATCH of the loaded library. */
@@ -190,6 +193,8 @@ typedef enum eoir_value_type {
   EOIR_TYPE_CURVE = 6    /* data providers only: x and y arrays */
 } eoir_value_type;
 
+/* Integers are accepted where numbers are expected, and whole numbers where
+ * integers are; any other type mismatch is EOIR_ERR_TYPE_MISMATCH. */
 EOIR_API eoir_status eoir_set_number(eoir_engine engine, const char* object, const char* property, double value);
 EOIR_API eoir_status eoir_set_integer(eoir_engine engine, const char* object, const char* property, int64_t value);
 EOIR_API eoir_status eoir_set_bool(eoir_engine engine, const char* object, const char* property, int32_t value);
@@ -258,6 +263,73 @@ EOIR_API eoir_status eoir_state_load(eoir_engine engine, const char* path);
 EOIR_API eoir_status eoir_sensor_save(eoir_engine engine, const char* sensor, const char* path);
 EOIR_API eoir_status eoir_sensor_load(eoir_engine engine, const char* sensor, const char* path);
 
+/* ------------------------------------------------------------------- images */
+/* One frame of a scene-generator/sensor-model pair (spec 4.1, 5.11), rendered
+ * at the engine time. Images are stored as seen on the sky, row 0 at the top,
+ * row-major; column grows toward sensor body +x, row toward body -y (the
+ * focal-plane inversion of eqs. 15-16 is undone). */
+typedef enum eoir_image_kind {
+  EOIR_IMAGE_SCENE_RADIANCE = 1,  /* effective radiance per scene sample (eq. 48), W/(cm^2 sr); 4x4 per pixel */
+  EOIR_IMAGE_SCENE_DISPLAY = 2,   /* display bytes of the scene view (spec 4.1.2), one per sample */
+  EOIR_IMAGE_SENSOR_ELECTRONS = 3, /* total response with noise and saturation (eq. 55), electrons */
+  EOIR_IMAGE_SENSOR_MEAN = 4,     /* noise-free response r_L + r_E (eqs. 49-50), electrons */
+  EOIR_IMAGE_SENSOR_DISPLAY = 5   /* display bytes of the sensor view, one per pixel */
+} eoir_image_kind;
+
+/* Renders the frame of `sensor` at the engine time (ray casting, shading,
+ * band integration, OTF convolution, point sources, noise from the engine's
+ * seeded generator). The frame is kept until the next render of that sensor.
+ * Settings: sensor properties scene_mode ("coarse", "smooth"),
+ * band_integration ("grid", "exact"), noise_enabled, display_agc,
+ * display_gain_step, patch_size_m, ... (README "Properties"). */
+EOIR_API eoir_status eoir_render(eoir_engine engine, const char* sensor);
+
+typedef struct eoir_image_info {
+  uint32_t struct_size;
+  uint32_t width;        /* samples or pixels */
+  uint32_t height;
+  int32_t kind;          /* eoir_image_kind */
+  const char* unit;      /* static: "W/(cm^2 sr)", "electrons", "" (display) */
+  double time_jd_utc[2]; /* the frame's time, UTC two-part Julian date */
+  double boresight_ra_deg;   /* sensor +z in J2000 */
+  double boresight_dec_deg;
+  double up_ra_deg;          /* sensor +y in J2000 */
+  double up_dec_deg;
+} eoir_image_info;
+
+EOIR_API eoir_status eoir_image_info_get(eoir_engine engine, const char* sensor, int32_t kind,
+                                         eoir_image_info* info_out);
+/* Copies the image (width*height values) into a caller buffer; EOIR_ERR_NO_STATE
+ * if no frame was rendered. Display kinds use eoir_image_get_bytes. */
+EOIR_API eoir_status eoir_image_get(eoir_engine engine, const char* sensor, int32_t kind, double* values,
+                                    size_t capacity);
+EOIR_API eoir_status eoir_image_get_bytes(eoir_engine engine, const char* sensor, int32_t kind, uint8_t* bytes,
+                                          size_t capacity);
+
+/* "For Each Pixel Pick" (spec 6.2.1): what a scene sample (space 0) or a
+ * sensor pixel (space 1, its centre sample) sees in the last frame. */
+typedef struct eoir_pick {
+  uint32_t struct_size;
+  int32_t hit;               /* 0 sky, 1 object surface */
+  char object[64];           /* object name, "" for the sky */
+  int32_t patch;             /* patch dA index on that object, -1 for the sky */
+  double range_m;            /* to the surface; the sky sphere's radius for the sky */
+  int32_t has_geodetic;      /* central bodies: latitude/longitude valid */
+  double latitude_deg;
+  double longitude_deg;
+  double right_ascension_deg; /* sky: J2000 RA/Dec of the sample direction */
+  double declination_deg;
+  double effective_radiance;  /* W/(cm^2 sr), eq. 48 */
+  double temperature_K;
+} eoir_pick;
+
+/* wavelengths_um and spectral_radiance (W/(cm^2 sr um)) receive the spectral
+ * radiance vector on the sensor's spectral grid (spec 5.3); they may be NULL
+ * (then capacity is ignored); *count_out receives the grid size. */
+EOIR_API eoir_status eoir_pick_get(eoir_engine engine, const char* sensor, int32_t space, uint32_t x, uint32_t y,
+                                   eoir_pick* pick_out, double* wavelengths_um, double* spectral_radiance,
+                                   size_t capacity, size_t* count_out);
+
 /* ------------------------------------------------------------------- plugin */
 /* The host's services, passed to the plugin entry point. Any pointer may be
  * NULL. */
@@ -312,11 +384,20 @@ typedef struct eoir_api_v1 {
   eoir_status (*state_load)(eoir_engine, const char*);
   eoir_status (*sensor_save)(eoir_engine, const char*, const char*);
   eoir_status (*sensor_load)(eoir_engine, const char*, const char*);
+  /* appended in 1.1 (images) */
+  eoir_status (*render)(eoir_engine, const char*);
+  eoir_status (*image_info_get)(eoir_engine, const char*, int32_t, eoir_image_info*);
+  eoir_status (*image_get)(eoir_engine, const char*, int32_t, double*, size_t);
+  eoir_status (*image_get_bytes)(eoir_engine, const char*, int32_t, uint8_t*, size_t);
+  eoir_status (*pick_get)(eoir_engine, const char*, int32_t, uint32_t, uint32_t, eoir_pick*, double*, double*,
+                          size_t, size_t*);
 } eoir_api_v1;
 
 /* The plugin's one entry point (resolved by name with dlsym). Returns, in
  * *api_out, the table for abi_major (cast to eoir_api_v1* for major 1), or
- * EOIR_ERR_ABI_MISMATCH with a message naming both majors. host may be NULL. */
+ * EOIR_ERR_ABI_MISMATCH with a message naming both majors. The host table is
+ * copied and kept for the process until the next call; host may be NULL,
+ * which clears earlier callbacks. */
 typedef eoir_status (*eoir_plugin_entry_fn)(uint32_t abi_major, const eoir_host_api* host, const void** api_out);
 EOIR_API eoir_status eoir_plugin_entry(uint32_t abi_major, const eoir_host_api* host, const void** api_out);
 #define EOIR_PLUGIN_ENTRY_SYMBOL "eoir_plugin_entry"

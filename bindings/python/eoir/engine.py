@@ -1,0 +1,660 @@
+"""The Pythonic API over the C ABI: :class:`Engine` and module functions."""
+
+from __future__ import annotations
+
+import ctypes
+import datetime as _dt
+import functools
+import math
+import numbers
+import os
+from ctypes import byref, c_char_p, c_double, c_int32, c_int64, c_size_t
+from typing import Any, Dict, List, Optional, Tuple
+
+import numpy as np
+
+from . import _lib
+from . import errors
+from ._lib import check, decode, encode, lib
+
+__all__ = [
+    "Engine",
+    "KINDS",
+    "FRAMES",
+    "TIME_SCALES",
+    "TYPES",
+    "IMAGE_KINDS",
+    "version",
+    "version_string",
+    "status_name",
+    "last_error",
+    "provider_groups",
+    "provider_elements",
+    "time_from_iso",
+    "time_to_iso",
+]
+
+KINDS = {
+    "central_body": _lib.EOIR_KIND_CENTRAL_BODY,
+    "star_field": _lib.EOIR_KIND_STAR_FIELD,
+    "satellite": _lib.EOIR_KIND_SATELLITE,
+    "aircraft": _lib.EOIR_KIND_AIRCRAFT,
+    "ground_vehicle": _lib.EOIR_KIND_GROUND_VEHICLE,
+    "missile": _lib.EOIR_KIND_MISSILE,
+    "sensor": _lib.EOIR_KIND_SENSOR,
+}
+_KIND_NAMES = {v: k for k, v in KINDS.items()}
+
+FRAMES = {
+    "j2000": _lib.EOIR_FRAME_J2000,
+    "earth_fixed": _lib.EOIR_FRAME_EARTH_FIXED,
+    "geodetic": _lib.EOIR_FRAME_GEODETIC,
+}
+_FRAME_NAMES = {v: k for k, v in FRAMES.items()}
+
+TIME_SCALES = {
+    "utc": _lib.EOIR_TIME_UTC,
+    "tai": _lib.EOIR_TIME_TAI,
+    "tt": _lib.EOIR_TIME_TT,
+    "tdb": _lib.EOIR_TIME_TDB,
+}
+_SCALE_NAMES = {v: k for k, v in TIME_SCALES.items()}
+
+TYPES = {
+    "number": _lib.EOIR_TYPE_NUMBER,
+    "integer": _lib.EOIR_TYPE_INTEGER,
+    "bool": _lib.EOIR_TYPE_BOOL,
+    "string": _lib.EOIR_TYPE_STRING,
+    "array": _lib.EOIR_TYPE_ARRAY,
+    "curve": _lib.EOIR_TYPE_CURVE,
+}
+_TYPE_NAMES = {v: k for k, v in TYPES.items()}
+
+IMAGE_KINDS = {
+    "scene_radiance": _lib.EOIR_IMAGE_SCENE_RADIANCE,
+    "scene_display": _lib.EOIR_IMAGE_SCENE_DISPLAY,
+    "sensor_electrons": _lib.EOIR_IMAGE_SENSOR_ELECTRONS,
+    "sensor_mean": _lib.EOIR_IMAGE_SENSOR_MEAN,
+    "sensor_display": _lib.EOIR_IMAGE_SENSOR_DISPLAY,
+}
+_IMAGE_KIND_NAMES = {v: k for k, v in IMAGE_KINDS.items()}
+_DISPLAY_KINDS = (_lib.EOIR_IMAGE_SCENE_DISPLAY, _lib.EOIR_IMAGE_SENSOR_DISPLAY)
+_PICK_SPACES = {"sample": 0, "pixel": 1}
+
+_INITIAL_STRING_CAPACITY = 256
+_INITIAL_ARRAY_CAPACITY = 64
+
+
+def _lookup(table: Dict[str, int], value, what: str) -> int:
+    if isinstance(value, str):
+        try:
+            return table[value.lower()]
+        except KeyError:
+            raise ValueError(f"unknown {what} {value!r}; expected one of "
+                             f"{', '.join(sorted(table))}") from None
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    raise TypeError(f"{what} must be a str or an int, got {type(value).__name__}")
+
+
+def _type_name(code: int) -> str:
+    return _TYPE_NAMES.get(code, str(code))
+
+
+# ---------------------------------------------------------- module functions
+def version() -> int:
+    """eoir_version(): MAJOR*10000 + MINOR*100 + PATCH of the loaded library."""
+    return int(lib.eoir_version())
+
+
+def version_string() -> str:
+    """eoir_version_string(), e.g. "1.0.0"."""
+    return decode(lib.eoir_version_string())
+
+
+def status_name(status: int) -> str:
+    """eoir_status_name(), e.g. "EOIR_ERR_OUT_OF_RANGE"."""
+    return _lib.status_name(status)
+
+
+def last_error() -> str:
+    """eoir_last_error() of the calling thread."""
+    return _lib.last_error()
+
+
+def provider_groups() -> List[str]:
+    """Names of every data-provider group (eoir_provider_group_at)."""
+    out = []
+    name = c_char_p()
+    index = 0
+    while True:
+        status = lib.eoir_provider_group_at(index, byref(name))
+        if status == _lib.EOIR_ERR_OUT_OF_RANGE:
+            return out
+        check(status)
+        out.append(decode(name.value))
+        index += 1
+
+
+@functools.lru_cache(maxsize=None)
+def _elements(group: str) -> Tuple[Tuple[str, int, str, str], ...]:
+    out = []
+    g = encode(group)
+    index = 0
+    while True:
+        info = _lib.eoir_element_info()
+        info.struct_size = ctypes.sizeof(info)
+        status = lib.eoir_provider_element_at(g, index, byref(info))
+        if status == _lib.EOIR_ERR_OUT_OF_RANGE and index > 0:
+            return tuple(out)
+        if status == _lib.EOIR_ERR_OUT_OF_RANGE:
+            # An empty group (or an out-of-range answer for an unknown one).
+            if group in provider_groups():
+                return tuple(out)
+        check(status)
+        out.append((decode(info.name), int(info.type), decode(info.unit), decode(info.x_unit)))
+        index += 1
+
+
+def provider_elements(group: str) -> List[Dict[str, str]]:
+    """The elements of a data-provider group as dicts with keys name, type
+    ("number", "integer", "bool" or "curve"), unit and x_unit."""
+    return [{"name": n, "type": _type_name(t), "unit": u, "x_unit": xu}
+            for n, t, u, xu in _elements(group)]
+
+
+def _element(group: str, element: str):
+    for info in _elements(group):
+        if info[0] == element:
+            return info
+    return None
+
+
+def time_from_iso(iso_utc: str) -> Tuple[float, float, str]:
+    """ISO-8601 UTC to a two-part UTC Julian date (jd1, jd2, "utc")."""
+    t = _lib.eoir_time()
+    check(lib.eoir_time_from_iso(encode(iso_utc), byref(t)))
+    return (t.jd1, t.jd2, _SCALE_NAMES.get(t.scale, t.scale))
+
+
+def _iso_of(t: "_lib.eoir_time") -> str:
+    capacity = 64
+    while True:
+        buf = ctypes.create_string_buffer(capacity)
+        status = lib.eoir_time_to_iso(byref(t), buf, capacity)
+        if status == _lib.EOIR_ERR_BUFFER_TOO_SMALL and capacity < (1 << 16):
+            capacity *= 4
+            continue
+        check(status)
+        return decode(buf.value)
+
+
+def time_to_iso(time) -> str:
+    """A time (ISO string, (jd1, jd2, scale) or datetime) as ISO-8601 UTC."""
+    return _iso_of(_to_c_time(time))
+
+
+def _to_c_time(value) -> "_lib.eoir_time":
+    t = _lib.eoir_time()
+    if isinstance(value, _lib.eoir_time):
+        return value
+    if isinstance(value, _dt.datetime):
+        if value.tzinfo is not None:
+            value = value.astimezone(_dt.timezone.utc).replace(tzinfo=None)
+        value = value.isoformat() + "Z"
+    if isinstance(value, (str, bytes)):
+        check(lib.eoir_time_from_iso(encode(value), byref(t)))
+        return t
+    try:
+        parts = tuple(value)
+    except TypeError:
+        raise TypeError("a time is an ISO-8601 UTC string, a datetime or "
+                        "(jd1, jd2, scale)") from None
+    if len(parts) == 2:
+        jd1, jd2, scale = parts[0], parts[1], "utc"
+    elif len(parts) == 3:
+        jd1, jd2, scale = parts
+    else:
+        raise ValueError("a Julian date is (jd1, jd2, scale) or (jd1, jd2) in UTC")
+    t.scale = _lookup(TIME_SCALES, scale, "time scale")
+    t.jd1 = float(jd1)
+    t.jd2 = float(jd2)
+    return t
+
+
+def _vector(value, n: int, what: str) -> List[float]:
+    arr = np.asarray(value, dtype=np.float64).ravel()
+    if arr.size != n:
+        raise ValueError(f"{what} needs {n} values, got {arr.size}")
+    return [float(x) for x in arr]
+
+
+# -------------------------------------------------------------------- engine
+class Engine:
+    """One EOIR engine (eoir_engine_create .. eoir_engine_destroy).
+
+    >>> with Engine(threads=0, seed=1) as engine:
+    ...     engine.add_object("satellite", "Sat")
+    ...     engine.add_sensor("Sensor", "Sat")
+    ...     engine.provider("EOIR Sensor Optics", "Ensquared Energy", "Sensor")
+    """
+
+    def __init__(self, threads: int = 0, seed: int = 1):
+        if threads < 0:
+            raise ValueError("threads must be >= 0 (0 = all cores)")
+        desc = _lib.eoir_engine_desc()
+        desc.struct_size = ctypes.sizeof(desc)
+        desc.threads = int(threads)
+        desc.seed = int(seed) & 0xFFFFFFFFFFFFFFFF
+        handle = _lib.eoir_engine()
+        self._handle = None
+        check(lib.eoir_engine_create(byref(desc), byref(handle)))
+        if not handle.value:
+            raise errors.InternalError(_lib.EOIR_ERR_INTERNAL, "EOIR_ERR_INTERNAL",
+                                       "eoir_engine_create returned a NULL engine")
+        self._handle = handle
+        self._destroy = lib.eoir_engine_destroy  # kept for __del__ at exit
+
+    # ---------------------------------------------------------- lifetime
+    def close(self) -> None:
+        """Destroy the engine; further calls raise ValueError. Idempotent."""
+        handle, self._handle = getattr(self, "_handle", None), None
+        if handle is not None:
+            self._destroy(handle)
+
+    def __enter__(self) -> "Engine":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:
+            pass
+
+    @property
+    def closed(self) -> bool:
+        return self._handle is None
+
+    @property
+    def handle(self):
+        """The raw eoir_engine handle (ctypes.c_void_p)."""
+        if self._handle is None:
+            raise ValueError("the engine is closed")
+        return self._handle
+
+    def __repr__(self) -> str:
+        if self._handle is None:
+            return "<eoir.Engine closed>"
+        return f"<eoir.Engine {len(self.objects())} objects at {self.time_iso()}>"
+
+    # -------------------------------------------------------------- time
+    def set_time(self, time) -> None:
+        """Set the engine time: an ISO-8601 UTC string, a datetime, or
+        (jd1, jd2, scale) with scale "utc", "tai", "tt" or "tdb"."""
+        t = _to_c_time(time)
+        check(lib.eoir_engine_set_time(self.handle, byref(t)))
+
+    def get_time(self, scale="tt") -> Tuple[float, float, str]:
+        """The engine time as (jd1, jd2, scale)."""
+        t = _lib.eoir_time()
+        code = _lookup(TIME_SCALES, scale, "time scale")
+        check(lib.eoir_engine_get_time(self.handle, code, byref(t)))
+        return (t.jd1, t.jd2, _SCALE_NAMES.get(t.scale, t.scale))
+
+    def time_iso(self) -> str:
+        """The engine time as ISO-8601 UTC."""
+        t = _lib.eoir_time()
+        check(lib.eoir_engine_get_time(self.handle, _lib.EOIR_TIME_UTC, byref(t)))
+        return _iso_of(t)
+
+    # ----------------------------------------------------------- objects
+    def add_object(self, kind, name: str) -> None:
+        """Add an object; kind is "central_body", "star_field", "satellite",
+        "aircraft", "ground_vehicle" or "missile" (or its eoir_object_kind)."""
+        code = _lookup(KINDS, kind, "object kind")
+        check(lib.eoir_object_add(self.handle, code, encode(name)))
+
+    def add_sensor(self, name: str, parent: str) -> None:
+        """Add a scene-generator/sensor-model pair attached to parent."""
+        check(lib.eoir_sensor_add(self.handle, encode(name), encode(parent)))
+
+    def remove(self, name: str) -> None:
+        """Remove an object (its sensors go with it)."""
+        check(lib.eoir_object_remove(self.handle, encode(name)))
+
+    def object_count(self) -> int:
+        n = c_size_t()
+        check(lib.eoir_object_count(self.handle, byref(n)))
+        return int(n.value)
+
+    def objects(self) -> List[Tuple[str, str]]:
+        """Every object as (name, kind) in insertion order."""
+        out = []
+        name = c_char_p()
+        kind = c_int32()
+        for i in range(self.object_count()):
+            check(lib.eoir_object_at(self.handle, i, byref(name), byref(kind)))
+            out.append((decode(name.value), _KIND_NAMES.get(kind.value, kind.value)))
+        return out
+
+    def __contains__(self, name: str) -> bool:
+        return any(n == name for n, _ in self.objects())
+
+    # ------------------------------------------------------------- state
+    def set_state(self, name: str, position, velocity=(0.0, 0.0, 0.0),
+                  attitude=(1.0, 0.0, 0.0, 0.0), frame="j2000", time=None) -> None:
+        """Push a state: position in metres (or lat deg, lon deg, height m for
+        "geodetic"), velocity in m/s, attitude quaternion (w, x, y, z) body to
+        frame; time None means the engine time."""
+        st = _lib.eoir_state()
+        st.struct_size = ctypes.sizeof(st)
+        st.frame = _lookup(FRAMES, frame, "frame")
+        st.position[:] = _vector(position, 3, "position")
+        st.velocity[:] = _vector(velocity, 3, "velocity")
+        st.attitude[:] = _vector(attitude, 4, "attitude")
+        t = None if time is None else byref(_to_c_time(time))
+        check(lib.eoir_object_set_state(self.handle, encode(name), t, byref(st)))
+
+    def get_state(self, name: str, frame="j2000") -> Dict[str, Any]:
+        """The state at the engine time as a dict with numpy arrays position,
+        velocity, attitude and the frame name."""
+        st = _lib.eoir_state()
+        st.struct_size = ctypes.sizeof(st)
+        st.frame = _lookup(FRAMES, frame, "frame")
+        check(lib.eoir_object_get_state(self.handle, encode(name), byref(st)))
+        return {
+            "frame": _FRAME_NAMES.get(st.frame, st.frame),
+            "position": np.array(st.position[:], dtype=np.float64),
+            "velocity": np.array(st.velocity[:], dtype=np.float64),
+            "attitude": np.array(st.attitude[:], dtype=np.float64),
+        }
+
+    # -------------------------------------------------------- properties
+    def properties(self, obj: str) -> List[Dict[str, str]]:
+        """Every property of an object as dicts with keys name, type
+        ("number", "integer", "bool", "string" or "array"), unit, description."""
+        return [{"name": n, "type": _type_name(t), "unit": u, "description": d}
+                for n, t, u, d in self._property_infos(obj)]
+
+    def _property_infos(self, obj: str):
+        out = []
+        o = encode(obj)
+        index = 0
+        while True:
+            info = _lib.eoir_property_info()
+            info.struct_size = ctypes.sizeof(info)
+            status = lib.eoir_property_info_at(self.handle, o, index, byref(info))
+            if status == _lib.EOIR_ERR_OUT_OF_RANGE and (index > 0 or obj in self):
+                return out
+            check(status)
+            out.append((decode(info.name), int(info.type), decode(info.unit),
+                        decode(info.description)))
+            index += 1
+
+    def property_type(self, obj: str, prop: str) -> Optional[str]:
+        """The type name of a property, or None if the object lacks it."""
+        for n, t, _, _ in self._property_infos(obj):
+            if n == prop:
+                return _type_name(t)
+        return None
+
+    def _type_code(self, obj: str, prop: str, value=None) -> int:
+        for n, t, _, _ in self._property_infos(obj):
+            if n == prop:
+                return t
+        # Not listed: guess from the value and let the library name the error.
+        if value is None or isinstance(value, (float, numbers.Real)) and not isinstance(value, numbers.Integral):
+            return _lib.EOIR_TYPE_NUMBER
+        if isinstance(value, (bool, np.bool_)):
+            return _lib.EOIR_TYPE_BOOL
+        if isinstance(value, numbers.Integral):
+            return _lib.EOIR_TYPE_INTEGER
+        if isinstance(value, (str, bytes)):
+            return _lib.EOIR_TYPE_STRING
+        return _lib.EOIR_TYPE_ARRAY
+
+    def set(self, obj: str, prop: str, value) -> None:
+        """Set a property, converting value to the property's type (numbers,
+        integers, bools, strings; arrays from lists or numpy arrays, flattened)."""
+        h, o, p = self.handle, encode(obj), encode(prop)
+        t = self._type_code(obj, prop, value)
+        if t == _lib.EOIR_TYPE_NUMBER:
+            check(lib.eoir_set_number(h, o, p, float(value)))
+        elif t == _lib.EOIR_TYPE_INTEGER:
+            check(lib.eoir_set_integer(h, o, p, _as_integer(value, prop)))
+        elif t == _lib.EOIR_TYPE_BOOL:
+            if isinstance(value, str) or not isinstance(value, (bool, np.bool_, numbers.Integral)):
+                raise TypeError(f"{prop}: expected a bool, got {type(value).__name__}")
+            check(lib.eoir_set_bool(h, o, p, 1 if value else 0))
+        elif t == _lib.EOIR_TYPE_STRING:
+            if not isinstance(value, (str, bytes)):
+                raise TypeError(f"{prop}: expected a str, got {type(value).__name__}")
+            check(lib.eoir_set_string(h, o, p, encode(value)))
+        elif t == _lib.EOIR_TYPE_ARRAY:
+            arr = np.ascontiguousarray(np.asarray(value, dtype=np.float64).ravel())
+            ptr = arr.ctypes.data_as(ctypes.POINTER(c_double))
+            check(lib.eoir_set_array(h, o, p, ptr, arr.size))
+        else:
+            raise errors.TypeMismatchError(_lib.EOIR_ERR_TYPE_MISMATCH, "EOIR_ERR_TYPE_MISMATCH",
+                                           f"{prop}: properties of type {_type_name(t)} cannot be set")
+
+    def get(self, obj: str, prop: str):
+        """A property's value: float, int, bool, str or a numpy float64 array."""
+        h, o, p = self.handle, encode(obj), encode(prop)
+        t = self._type_code(obj, prop)
+        if t == _lib.EOIR_TYPE_NUMBER:
+            v = c_double()
+            check(lib.eoir_get_number(h, o, p, byref(v)))
+            return float(v.value)
+        if t == _lib.EOIR_TYPE_INTEGER:
+            v = c_int64()
+            check(lib.eoir_get_integer(h, o, p, byref(v)))
+            return int(v.value)
+        if t == _lib.EOIR_TYPE_BOOL:
+            v = c_int32()
+            check(lib.eoir_get_bool(h, o, p, byref(v)))
+            return bool(v.value)
+        if t == _lib.EOIR_TYPE_STRING:
+            capacity = _INITIAL_STRING_CAPACITY
+            while True:
+                buf = ctypes.create_string_buffer(capacity)
+                status = lib.eoir_get_string(h, o, p, buf, capacity)
+                if status == _lib.EOIR_ERR_BUFFER_TOO_SMALL and capacity < (1 << 26):
+                    capacity *= 4
+                    continue
+                check(status)
+                return decode(buf.value)
+        if t == _lib.EOIR_TYPE_ARRAY:
+            n = c_size_t()
+            check(lib.eoir_get_array(h, o, p, None, 0, byref(n)))
+            capacity = max(int(n.value), 1)
+            for _ in range(8):
+                arr = np.zeros(capacity, dtype=np.float64)
+                ptr = arr.ctypes.data_as(ctypes.POINTER(c_double))
+                status = lib.eoir_get_array(h, o, p, ptr, capacity, byref(n))
+                if status == _lib.EOIR_ERR_BUFFER_TOO_SMALL:
+                    capacity = max(int(n.value), capacity * 2)
+                    continue
+                check(status)
+                return arr[: int(n.value)].copy()
+            check(status)
+        raise errors.TypeMismatchError(_lib.EOIR_ERR_TYPE_MISMATCH, "EOIR_ERR_TYPE_MISMATCH",
+                                       f"{prop}: unsupported property type {_type_name(t)}")
+
+    # ---------------------------------------------------- data providers
+    def provider(self, group: str, element: str, sensor: str, target: Optional[str] = None):
+        """One data-provider element at the engine time: a float for numbers,
+        an int for integers, a bool for bools, and (x, y) numpy float64 arrays
+        for curves."""
+        info = _element(group, element)
+        etype = info[1] if info is not None else _lib.EOIR_TYPE_NUMBER
+        g, e, s = encode(group), encode(element), encode(sensor)
+        tg = None if target is None else encode(target)
+        if etype == _lib.EOIR_TYPE_CURVE:
+            return self._curve(g, e, s, tg)
+        v = c_double()
+        check(lib.eoir_provider_get(self.handle, g, e, s, tg, byref(v)))
+        value = float(v.value)
+        if etype == _lib.EOIR_TYPE_INTEGER:
+            return int(round(value)) if math.isfinite(value) else value
+        if etype == _lib.EOIR_TYPE_BOOL:
+            return value != 0.0
+        return value
+
+    def _curve(self, g, e, s, tg):
+        n = c_size_t()
+        check(lib.eoir_provider_get_curve(self.handle, g, e, s, tg, None, None, 0, byref(n)))
+        capacity = max(int(n.value), 1)
+        for _ in range(8):
+            x = np.zeros(capacity, dtype=np.float64)
+            y = np.zeros(capacity, dtype=np.float64)
+            dp = ctypes.POINTER(c_double)
+            status = lib.eoir_provider_get_curve(self.handle, g, e, s, tg,
+                                                 x.ctypes.data_as(dp), y.ctypes.data_as(dp),
+                                                 capacity, byref(n))
+            if status == _lib.EOIR_ERR_BUFFER_TOO_SMALL:
+                capacity = max(int(n.value), capacity * 2)
+                continue
+            check(status)
+            m = int(n.value)
+            return x[:m].copy(), y[:m].copy()
+        check(status)
+
+    def report(self, group: str, sensor: str, target: Optional[str] = None) -> Dict[str, Tuple[Any, str]]:
+        """Every element of a group: {element: (value, unit)} (curves give
+        ((x, y), y unit))."""
+        return {name: (self.provider(group, name, sensor, target), unit)
+                for name, _, unit, _ in _elements(group)}
+
+    # -------------------------------------------------------- save, load
+    def save(self, path) -> None:
+        """Save the whole engine state as a .scd file."""
+        check(lib.eoir_state_save(self.handle, os.fsencode(path)))
+
+    def load(self, path) -> None:
+        """Replace the engine state by a .scd file (unchanged on error)."""
+        check(lib.eoir_state_load(self.handle, os.fsencode(path)))
+
+    def save_sensor(self, sensor: str, path) -> None:
+        """Save one sensor's parameters."""
+        check(lib.eoir_sensor_save(self.handle, encode(sensor), os.fsencode(path)))
+
+    def load_sensor(self, sensor: str, path) -> None:
+        """Replace an existing sensor's parameters from a sensor file."""
+        check(lib.eoir_sensor_load(self.handle, encode(sensor), os.fsencode(path)))
+
+    # ------------------------------------------------------------ images
+    def render(self, sensor: str) -> None:
+        """Render the frame of a sensor at the engine time (eoir_render)."""
+        check(lib.eoir_render(self.handle, encode(sensor)))
+
+    def _image_info(self, sensor: str, code: int) -> "_lib.eoir_image_info":
+        info = _lib.eoir_image_info()
+        info.struct_size = ctypes.sizeof(info)
+        check(lib.eoir_image_info_get(self.handle, encode(sensor), code, byref(info)))
+        return info
+
+    def image_info(self, sensor: str, kind) -> Dict[str, Any]:
+        """Size, unit, time and pointing of the last frame's image of a kind
+        ("scene_radiance", "scene_display", "sensor_electrons", "sensor_mean",
+        "sensor_display"): a dict with width, height, kind, unit,
+        time_jd_utc (jd1, jd2), time (ISO-8601 UTC), boresight_ra_deg,
+        boresight_dec_deg, up_ra_deg, up_dec_deg."""
+        code = _lookup(IMAGE_KINDS, kind, "image kind")
+        info = self._image_info(sensor, code)
+        t = _lib.eoir_time()
+        t.scale = _lib.EOIR_TIME_UTC
+        t.jd1, t.jd2 = info.time_jd_utc[0], info.time_jd_utc[1]
+        return {
+            "width": int(info.width),
+            "height": int(info.height),
+            "kind": _IMAGE_KIND_NAMES.get(info.kind, int(info.kind)),
+            "unit": decode(info.unit),
+            "time_jd_utc": (float(info.time_jd_utc[0]), float(info.time_jd_utc[1])),
+            "time": _iso_of(t),
+            "boresight_ra_deg": float(info.boresight_ra_deg),
+            "boresight_dec_deg": float(info.boresight_dec_deg),
+            "up_ra_deg": float(info.up_ra_deg),
+            "up_dec_deg": float(info.up_dec_deg),
+        }
+
+    def image(self, sensor: str, kind) -> np.ndarray:
+        """The last frame's image of a kind as a (height, width) array, row 0
+        at the top as seen on the sky: float64 for "scene_radiance"
+        (W/(cm^2 sr)), "sensor_electrons" and "sensor_mean" (electrons);
+        uint8 for "scene_display" and "sensor_display"."""
+        code = _lookup(IMAGE_KINDS, kind, "image kind")
+        info = self._image_info(sensor, code)
+        h, w = int(info.height), int(info.width)
+        s = encode(sensor)
+        if code in _DISPLAY_KINDS:
+            out = np.zeros((h, w), dtype=np.uint8)
+            ptr = out.ctypes.data_as(ctypes.POINTER(ctypes.c_uint8))
+            check(lib.eoir_image_get_bytes(self.handle, s, code, ptr, out.size))
+        else:
+            out = np.zeros((h, w), dtype=np.float64)
+            ptr = out.ctypes.data_as(ctypes.POINTER(c_double))
+            check(lib.eoir_image_get(self.handle, s, code, ptr, out.size))
+        return out
+
+    def pick(self, sensor: str, x: int, y: int, space: str = "sample") -> Dict[str, Any]:
+        """What scene sample (space "sample") or sensor pixel ("pixel", its
+        centre sample) (x = column, y = row from the top) sees in the last
+        frame (spec 6.2.1): a dict with hit (bool), object ("" for the sky),
+        patch, range_m, has_geodetic, latitude_deg, longitude_deg,
+        right_ascension_deg, declination_deg, effective_radiance
+        (W/(cm^2 sr)), temperature_K, and numpy arrays wavelengths_um and
+        spectral_radiance (W/(cm^2 sr um)) on the sensor's spectral grid."""
+        code = _lookup(_PICK_SPACES, space, "pick space")
+        if not isinstance(x, numbers.Integral) or not isinstance(y, numbers.Integral):
+            raise TypeError("pick: x and y are integer sample or pixel indices")
+        if x < 0 or y < 0 or x > 0xFFFFFFFF or y > 0xFFFFFFFF:
+            raise ValueError(f"pick: x and y must be non-negative, got ({x}, {y})")
+        s = encode(sensor)
+        dp = ctypes.POINTER(c_double)
+        n = c_size_t()
+        pick = _lib.eoir_pick()
+        pick.struct_size = ctypes.sizeof(pick)
+        check(lib.eoir_pick_get(self.handle, s, code, int(x), int(y), byref(pick), None, None, 0, byref(n)))
+        capacity = max(int(n.value), 1)
+        for _ in range(8):
+            wl = np.zeros(capacity, dtype=np.float64)
+            rad = np.zeros(capacity, dtype=np.float64)
+            pick = _lib.eoir_pick()
+            pick.struct_size = ctypes.sizeof(pick)
+            status = lib.eoir_pick_get(self.handle, s, code, int(x), int(y), byref(pick),
+                                       wl.ctypes.data_as(dp), rad.ctypes.data_as(dp), capacity, byref(n))
+            if status == _lib.EOIR_ERR_BUFFER_TOO_SMALL:
+                capacity = max(int(n.value), capacity * 2)
+                continue
+            check(status)
+            m = int(n.value)
+            return {
+                "hit": bool(pick.hit),
+                "object": decode(pick.object),
+                "patch": int(pick.patch),
+                "range_m": float(pick.range_m),
+                "has_geodetic": bool(pick.has_geodetic),
+                "latitude_deg": float(pick.latitude_deg),
+                "longitude_deg": float(pick.longitude_deg),
+                "right_ascension_deg": float(pick.right_ascension_deg),
+                "declination_deg": float(pick.declination_deg),
+                "effective_radiance": float(pick.effective_radiance),
+                "temperature_K": float(pick.temperature_K),
+                "wavelengths_um": wl[:m].copy(),
+                "spectral_radiance": rad[:m].copy(),
+            }
+        check(status)
+
+
+def _as_integer(value, prop: str) -> int:
+    if isinstance(value, (bool, np.bool_)):
+        return int(value)
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    if isinstance(value, numbers.Real) and float(value).is_integer():
+        return int(value)
+    raise TypeError(f"{prop}: expected an integer, got {value!r}")

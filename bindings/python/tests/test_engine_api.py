@@ -1,0 +1,144 @@
+"""Objects, time, states and typed properties through the Pythonic API."""
+
+import datetime
+
+import numpy as np
+import pytest
+
+import eoir
+
+
+def test_objects_and_remove(engine):
+    engine.add_object("satellite", "Sat")
+    engine.add_object("aircraft", "Plane")
+    engine.add_object("ground_vehicle", "Truck")
+    engine.add_object("missile", "Rocket")
+    engine.add_object("central_body", "Earth")
+    engine.add_sensor("Cam", "Sat")
+    objs = engine.objects()
+    assert objs[0] == ("Sun", "central_body")
+    assert ("Sat", "satellite") in objs
+    assert ("Plane", "aircraft") in objs
+    assert ("Truck", "ground_vehicle") in objs
+    assert ("Rocket", "missile") in objs
+    assert ("Earth", "central_body") in objs
+    assert ("Cam", "sensor") in objs
+    assert [n for n, _ in objs].index("Sat") < [n for n, _ in objs].index("Plane")
+    engine.remove("Sat")  # takes its sensor with it
+    names = [n for n, _ in engine.objects()]
+    assert "Sat" not in names and "Cam" not in names
+    assert engine.object_count() == len(names)
+
+
+def test_time_iso_and_julian_dates(engine):
+    engine.set_time("2010-08-25T18:00:00Z")
+    assert engine.time_iso().startswith("2010-08-25T18:00:00")
+    jd1, jd2, scale = engine.get_time("utc")
+    assert scale == "utc"
+    assert jd1 + jd2 == pytest.approx(2455434.25, abs=1e-9)
+    tt = engine.get_time("tt")
+    # TT - UTC = 66.184 s in 2010.
+    assert ((tt[0] - jd1) + (tt[1] - jd2)) * 86400 == pytest.approx(66.184, abs=1e-3)
+    engine.set_time(tt)
+    assert engine.time_iso().startswith("2010-08-25T18:00:00")
+    engine.set_time((2451545.0, 0.0, "tt"))
+    assert engine.get_time("tt") == pytest.approx((2451545.0, 0.0, "tt")) or \
+        sum(engine.get_time("tt")[:2]) == pytest.approx(2451545.0, abs=1e-12)
+    engine.set_time(datetime.datetime(2012, 1, 1, 12, 0, 0, tzinfo=datetime.timezone.utc))
+    assert engine.time_iso().startswith("2012-01-01T12:00:00")
+    assert eoir.time_from_iso("2010-08-25T18:00:00Z")[2] == "utc"
+    assert eoir.time_to_iso((2455434.25, 0.0, "utc")).startswith("2010-08-25T18:00:00")
+
+
+def test_bad_iso_time(engine):
+    with pytest.raises(eoir.EoirError):
+        engine.set_time("not a time")
+
+
+def test_state_round_trip(engine):
+    engine.set_time("2010-08-25T18:00:00Z")
+    engine.add_object("satellite", "Sat")
+    q = np.array([0.5, 0.5, 0.5, 0.5])
+    engine.set_state("Sat", position=[7000e3, 1000.0, -2000.0], velocity=np.array([1.0, 7500.0, 3.0]),
+                     attitude=q)
+    s = engine.get_state("Sat")
+    assert s["frame"] == "j2000"
+    np.testing.assert_allclose(s["position"], [7000e3, 1000.0, -2000.0], rtol=0, atol=1e-6)
+    np.testing.assert_allclose(s["velocity"], [1.0, 7500.0, 3.0], atol=1e-9)
+    np.testing.assert_allclose(s["attitude"], q, atol=1e-12)
+    ef = engine.get_state("Sat", "earth_fixed")
+    assert np.linalg.norm(ef["position"]) == pytest.approx(np.linalg.norm(s["position"]), rel=1e-9)
+
+
+def test_geodetic_state(engine):
+    engine.set_time("2010-08-25T18:00:00Z")
+    engine.add_object("ground_vehicle", "Truck")
+    engine.set_state("Truck", position=(0.0, 0.0, 0.0), frame="geodetic")
+    ef = engine.get_state("Truck", "earth_fixed")
+    np.testing.assert_allclose(ef["position"], [6378137.0, 0.0, 0.0], atol=1e-3)
+    geo = engine.get_state("Truck", "geodetic")
+    np.testing.assert_allclose(geo["position"], [0.0, 0.0, 0.0], atol=1e-6)
+
+
+def test_state_at_explicit_time_extrapolates(engine):
+    engine.set_time("2010-08-25T18:00:00Z")
+    engine.add_object("aircraft", "Plane")
+    engine.set_state("Plane", position=(7000e3, 0, 0), velocity=(0, 100.0, 0),
+                     time="2010-08-25T17:59:50Z")
+    s = engine.get_state("Plane")
+    np.testing.assert_allclose(s["position"], [7000e3, 1000.0, 0.0], atol=1e-3)
+
+
+def test_state_shape_checked(engine):
+    engine.add_object("satellite", "Sat")
+    with pytest.raises(ValueError):
+        engine.set_state("Sat", position=(1.0, 2.0))
+
+
+def test_properties_listing(table3):
+    props = {p["name"]: p for p in table3.properties("Sensor")}
+    assert props["horizontal_pixels"]["type"] == "integer"
+    assert props["horizontal_fov_deg"]["type"] == "number"
+    assert props["horizontal_fov_deg"]["unit"] == "deg"
+    assert props["image_quality"]["type"] == "string"
+    assert props["sensitivity_pairs"]["type"] == "array"
+    assert all(p["description"] for p in props.values())
+    assert table3.property_type("Sensor", "f_number") == "number"
+    assert table3.property_type("Sensor", "nope") is None
+    # Objects have properties too (shape, material, ...), possibly none.
+    assert isinstance(table3.properties("Sat"), list)
+
+
+def test_typed_set_get(table3):
+    table3.set("Sensor", "horizontal_pixels", np.int64(256))
+    assert table3.get("Sensor", "horizontal_pixels") == 256
+    table3.set("Sensor", "horizontal_pixels", 64.0)  # integral floats are accepted
+    assert table3.get("Sensor", "horizontal_pixels") == 64
+    table3.set("Sensor", "f_number", np.float64(4.25))
+    assert table3.get("Sensor", "f_number") == 4.25
+    table3.set("Sensor", "f_number", 4)  # ints are fine for numbers
+    assert isinstance(table3.get("Sensor", "f_number"), float)
+    table3.set("Sensor", "image_quality", "mild")
+    assert table3.get("Sensor", "image_quality") == "mild"
+    table3.set("Sensor", "saturation_pairs", [[10.0, 1e-15], [20.0, 2e-15]])
+    got = table3.get("Sensor", "saturation_pairs")
+    assert isinstance(got, np.ndarray) and got.dtype == np.float64
+    np.testing.assert_array_equal(got, [10.0, 1e-15, 20.0, 2e-15])
+    pairs = np.array([(float(t), 1e-18 * t) for t in range(1, eoir.MAX_REFERENCE_PAIRS + 1)])
+    table3.set("Sensor", "sensitivity_pairs", pairs)
+    np.testing.assert_array_equal(table3.get("Sensor", "sensitivity_pairs"), pairs.ravel())
+    bools = [p["name"] for p in table3.properties("Sensor") if p["type"] == "bool"]
+    for name in bools:
+        old = table3.get("Sensor", name)
+        assert isinstance(old, bool)
+        table3.set("Sensor", name, not old)
+        assert table3.get("Sensor", name) is (not old)
+        table3.set("Sensor", name, old)
+
+
+def test_every_property_reads(table3):
+    for p in table3.properties("Sensor"):
+        value = table3.get("Sensor", p["name"])
+        expected = {"number": float, "integer": int, "bool": bool, "string": str,
+                    "array": np.ndarray}[p["type"]]
+        assert isinstance(value, expected), p["name"]

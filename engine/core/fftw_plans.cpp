@@ -1,0 +1,63 @@
+#include "core/fftw_plans.hpp"
+
+#include <algorithm>
+#include <map>
+#include <mutex>
+#include <thread>
+#include <tuple>
+
+#include "core/error.hpp"
+
+namespace eoir::fftw {
+namespace {
+
+class Cache {
+ public:
+  static Cache& instance() {
+    static Cache cache;
+    return cache;
+  }
+  fftw_plan get(bool forward, int rows, int cols) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto key = std::make_tuple(forward, rows, cols);
+    auto it = plans_.find(key);
+    if (it != plans_.end()) return it->second;
+    const std::size_t real_n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+    const std::size_t complex_n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols / 2 + 1);
+    RealBuffer r = real_buffer(real_n);
+    ComplexBuffer c = complex_buffer(complex_n);
+    fftw_plan plan = forward ? fftw_plan_dft_r2c_2d(rows, cols, r.get(), c.get(), FFTW_ESTIMATE)
+                             : fftw_plan_dft_c2r_2d(rows, cols, c.get(), r.get(), FFTW_ESTIMATE);
+    if (!plan)
+      throw Error(Status::internal, "fft: FFTW could not plan a " + std::to_string(rows) + "x" +
+                                        std::to_string(cols) + " transform");
+    plans_.emplace(key, plan);
+    return plan;
+  }
+
+ private:
+  Cache() {
+    fftw_init_threads();
+    const unsigned threads = std::thread::hardware_concurrency();
+    fftw_plan_with_nthreads(threads > 0 ? static_cast<int>(threads) : 1);
+  }
+  ~Cache() {
+    for (auto& entry : plans_) fftw_destroy_plan(entry.second);
+  }
+  std::mutex mutex_;
+  std::map<std::tuple<bool, int, int>, fftw_plan> plans_;
+};
+}  // namespace
+
+fftw_plan r2c_2d(int rows, int cols) { return Cache::instance().get(true, rows, cols); }
+fftw_plan c2r_2d(int rows, int cols) { return Cache::instance().get(false, rows, cols); }
+
+int good_size(int n) {
+  for (int m = std::max(n, 1);; ++m) {
+    int k = m;
+    for (int f : {2, 3, 5, 7})
+      while (k % f == 0) k /= f;
+    if (k == 1) return m;
+  }
+}
+}  // namespace eoir::fftw

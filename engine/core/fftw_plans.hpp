@@ -1,0 +1,30 @@
+// Process-wide FFTW plan cache. FFTW's planner is not thread-safe, so every
+// plan in the engine is made here, under one mutex, once per shape, and kept
+// for the life of the process; executing a kept plan on fresh aligned arrays
+// (fftw_execute_dft_r2c / _c2r) is thread-safe. FFTW_ESTIMATE planning:
+// FFTW_MEASURE costs 1-2 s per size (DESIGN.md section 8).
+#pragma once
+#include <fftw3.h>
+
+#include <cstddef>
+#include <memory>
+
+namespace eoir::fftw {
+
+// Real-to-complex and complex-to-real 2-D plans of rows x cols real samples
+// (row-major, the complex side rows x (cols/2 + 1)).
+fftw_plan r2c_2d(int rows, int cols);
+fftw_plan c2r_2d(int rows, int cols);
+
+struct Free {
+  void operator()(void* p) const { fftw_free(p); }
+};
+using RealBuffer = std::unique_ptr<double[], Free>;
+using ComplexBuffer = std::unique_ptr<fftw_complex[], Free>;
+inline RealBuffer real_buffer(std::size_t n) { return RealBuffer(fftw_alloc_real(n)); }
+inline ComplexBuffer complex_buffer(std::size_t n) { return ComplexBuffer(fftw_alloc_complex(n)); }
+
+// A size FFTW transforms quickly (only factors 2, 3, 5, 7) that is >= n.
+int good_size(int n);
+
+}  // namespace eoir::fftw

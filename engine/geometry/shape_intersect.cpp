@@ -1,0 +1,350 @@
+// Analytic ray/shape intersection in double precision (spec 4.1.3, 4.1.5.1).
+//
+// Robustness (DESIGN.md section 3): every ray is first moved to its point of
+// closest approach to the part origin (t0 = -o.d), so the quadratics below see
+// small coefficients whatever the range (a 1 m part at 10 km, the Moon at
+// 400,000 km); quadratics use the stable root pair q/A, C/q; the ellipsoid is
+// scaled to the unit sphere and its discriminant is 1 - |l|^2 with l the
+// perpendicular from the centre (no b^2 - ac cancellation). Closed shapes are
+// convex, so each is the intersection of slabs / a quadric region and the hit
+// is the entry of the ray's interval: only outward-facing surfaces are seen.
+#include "geometry/shape_intersect.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/constants.hpp"
+#include "core/error.hpp"
+
+namespace eoir::geometry {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = constants::pi;
+constexpr double kInsideTolerance = 1e-9;  // relative depth for "observer inside"
+
+// Sphere / ellipsoid of revolution, ray already shifted near the centre.
+bool hit_spheroid(double a, double c, const Vec3& o, const Vec3& d, double t_min, double t_max, double& t,
+                  Vec3& n) {
+  const Vec3 s(1.0 / a, 1.0 / a, 1.0 / c);
+  const Vec3 os = o.cwiseProduct(s);
+  const Vec3 ds = d.cwiseProduct(s);
+  const double len = ds.norm();  // scaled parameter = t * len
+  const Vec3 dh = ds / len;
+  const double b = os.dot(dh);
+  const Vec3 l = os - b * dh;  // perpendicular from the centre (scaled units)
+  const double ll = l.norm();
+  const double disc = (1.0 - ll) * (1.0 + ll);
+  if (!(disc >= 0.0)) return false;  // also rejects NaN
+  const double q = -(b + std::copysign(std::sqrt(disc), b));
+  const double cc = (os.squaredNorm() - 1.0);
+  double entry = q;  // scaled units
+  if (q != 0.0) entry = std::min(q, cc / q);
+  const double tt = entry / len;
+  if (!(tt > t_min && tt < t_max)) return false;
+  const Vec3 p = o + tt * d;
+  n = Vec3(p.x() / (a * a), p.y() / (a * a), p.z() / (c * c)).normalized();
+  t = tt;
+  return true;
+}
+
+bool hit_box(const ShapeGeom& g, const Vec3& o, const Vec3& d, double t_min, double t_max, double& t, Vec3& n) {
+  const Vec3 h(0.5 * g.x_m, 0.5 * g.y_m, 0.5 * g.z_m);
+  double t_enter = -kInf, t_exit = kInf;
+  int axis = -1;
+  for (int i = 0; i < 3; ++i) {
+    if (d[i] == 0.0) {
+      if (std::abs(o[i]) > h[i]) return false;
+      continue;
+    }
+    const double t1 = (-h[i] - o[i]) / d[i], t2 = (h[i] - o[i]) / d[i];
+    const double near = std::min(t1, t2), far = std::max(t1, t2);
+    if (near > t_enter) {
+      t_enter = near;
+      axis = i;
+    }
+    t_exit = std::min(t_exit, far);
+  }
+  if (axis < 0 || t_enter > t_exit || !(t_enter > t_min && t_enter < t_max)) return false;
+  n = Vec3::Zero();
+  n[axis] = d[axis] > 0 ? -1.0 : 1.0;
+  t = t_enter;
+  return true;
+}
+
+bool hit_plate(const ShapeGeom& g, const Vec3& o, const Vec3& d, double t_min, double t_max, double& t, Vec3& n) {
+  if (d.z() == 0.0) return false;  // edge-on
+  const double tt = -o.z() / d.z();
+  if (!(tt > t_min && tt < t_max)) return false;
+  const Vec3 p = o + tt * d;
+  if (std::abs(p.x()) > 0.5 * g.x_m || std::abs(p.y()) > 0.5 * g.y_m) return false;
+  n = Vec3(0, 0, d.z() > 0 ? -1.0 : 1.0);  // two-sided: the face the ray sees
+  t = tt;
+  return true;
+}
+
+// Frustum rho <= r(z) = rm + k z, |z| <= L/2 (cylinder k = 0, cone r_top = 0).
+// Within the slab r(z) >= 0, so rho <= r(z) <=> Q(t) = A t^2 + 2 B t + C <= 0.
+bool hit_frustum(const ShapeGeom& g, const Vec3& o, const Vec3& d, double t_min, double t_max, double& t,
+                 Vec3& n) {
+  const double h = 0.5 * g.length_m;
+  const double rm = 0.5 * (g.r_top_m + g.r_bottom_m);
+  const double k = (g.r_top_m - g.r_bottom_m) / g.length_m;
+  double lo = -kInf, hi = kInf;
+  if (d.z() == 0.0) {
+    if (std::abs(o.z()) > h) return false;
+  } else {
+    const double t1 = (-h - o.z()) / d.z(), t2 = (h - o.z()) / d.z();
+    lo = std::min(t1, t2);
+    hi = std::max(t1, t2);
+  }
+  bool side = false;  // entry through the side (else through a cap)
+  const double w0 = rm + k * o.z();
+  const double A = d.x() * d.x() + d.y() * d.y() - k * k * d.z() * d.z();
+  const double B = o.x() * d.x() + o.y() * d.y() - k * d.z() * w0;
+  const double C = o.x() * o.x() + o.y() * o.y() - w0 * w0;
+  if (A == 0.0) {  // linear: 2 B t + C <= 0
+    if (B > 0.0) {
+      hi = std::min(hi, -C / (2.0 * B));
+    } else if (B < 0.0) {
+      const double tt = -C / (2.0 * B);
+      if (tt > lo) {
+        lo = tt;
+        side = true;
+      }
+    } else if (C > 0.0) {
+      return false;
+    }
+  } else {
+    const double disc = B * B - A * C;
+    if (A > 0.0) {
+      if (!(disc >= 0.0)) return false;
+      const double q = -(B + std::copysign(std::sqrt(disc), B));
+      double r1 = q / A, r2 = r1;
+      if (q != 0.0) r2 = C / q;
+      if (r1 > r2) std::swap(r1, r2);
+      if (r1 > lo) {
+        lo = r1;
+        side = true;
+      }
+      hi = std::min(hi, r2);
+    } else if (disc >= 0.0) {  // A < 0: Q <= 0 outside [r1, r2]
+      const double q = -(B + std::copysign(std::sqrt(disc), B));
+      double r1 = q / A, r2 = r1;
+      if (q != 0.0) r2 = C / q;
+      if (r1 > r2) std::swap(r1, r2);
+      if (lo <= std::min(hi, r1)) {
+        hi = std::min(hi, r1);
+      } else if (r2 > lo) {
+        lo = r2;
+        side = true;
+      }
+    }  // A < 0 and no real root: Q < 0 on the whole slab segment
+  }
+  if (!(lo <= hi) || !(lo > t_min && lo < t_max)) return false;
+  if (side) {
+    const Vec3 p = o + lo * d;
+    const double rho = std::hypot(p.x(), p.y());
+    n = rho > 0.0 ? Vec3(p.x() / rho, p.y() / rho, -k).normalized() : Vec3(0, 0, 1);
+  } else {
+    n = Vec3(0, 0, d.z() > 0 ? -1.0 : 1.0);
+  }
+  t = lo;
+  return true;
+}
+
+// asinh(x)/x (s = +1) or asin(x)/x (s = -1), series near 0.
+double arc_ratio(double x, double s) {
+  if (x < 1e-3) return 1.0 - s * x * x / 6.0 + 3.0 * x * x * x * x / 40.0;
+  return s > 0 ? std::asinh(x) / x : std::asin(x) / x;
+}
+
+}  // namespace
+
+ShapeKind shape_kind(const std::string& name) {
+  static const struct {
+    const char* n;
+    ShapeKind k;
+  } table[] = {{"sphere", ShapeKind::sphere},     {"oblate", ShapeKind::oblate}, {"box", ShapeKind::box},
+               {"plate", ShapeKind::plate},       {"cylinder", ShapeKind::cylinder},
+               {"cone", ShapeKind::cone},         {"coupler", ShapeKind::coupler},
+               {"none", ShapeKind::none}};
+  for (const auto& e : table)
+    if (name == e.n) return e.k;
+  throw Error(Status::unknown_name, "shape: unknown shape '" + name + "'");
+}
+
+ShapeGeom shape_geom(const ShapePart& part) {
+  ShapeGeom g;
+  g.kind = shape_kind(part.shape);
+  const auto& d = part.dimensions_m;
+  static const size_t counts[] = {1, 2, 3, 2, 2, 2, 3, 0};
+  const size_t need = counts[static_cast<int>(g.kind)];
+  if (d.size() < need)
+    throw Error(Status::out_of_range, "shape '" + part.shape + "' needs " + std::to_string(need) + " dimensions");
+  for (size_t i = 0; i < need; ++i)
+    if (!(d[i] > 0.0) || !std::isfinite(d[i]))
+      throw Error(Status::out_of_range, "shape '" + part.shape + "': dimensions must be finite and > 0");
+  switch (g.kind) {
+    case ShapeKind::sphere: g.a_m = g.c_m = d[0]; break;
+    case ShapeKind::oblate: g.a_m = d[0]; g.c_m = d[1]; break;
+    case ShapeKind::box: g.x_m = d[0]; g.y_m = d[1]; g.z_m = d[2]; break;
+    case ShapeKind::plate: g.x_m = d[0]; g.y_m = d[1]; break;
+    case ShapeKind::cylinder: g.r_bottom_m = g.r_top_m = d[0]; g.length_m = d[1]; break;
+    case ShapeKind::cone: g.r_bottom_m = d[0]; g.r_top_m = 0.0; g.length_m = d[1]; break;
+    case ShapeKind::coupler: g.r_bottom_m = d[0]; g.r_top_m = d[1]; g.length_m = d[2]; break;
+    case ShapeKind::none: break;
+  }
+  return g;
+}
+
+bool intersect_shape(const ShapeGeom& g, const Vec3& origin_m, const Vec3& dir, double t_min, double t_max,
+                     double& t_m, Vec3& normal) {
+  if (g.kind == ShapeKind::none) return false;
+  // Move the origin to the closest approach to the part origin (small numbers).
+  const double t0 = -origin_m.dot(dir);
+  const Vec3 o = origin_m + t0 * dir;
+  const double lo = t_min - t0, hi = t_max - t0;
+  double t = 0;
+  bool hit = false;
+  switch (g.kind) {
+    case ShapeKind::sphere:
+    case ShapeKind::oblate: hit = hit_spheroid(g.a_m, g.c_m, o, dir, lo, hi, t, normal); break;
+    case ShapeKind::box: hit = hit_box(g, o, dir, lo, hi, t, normal); break;
+    case ShapeKind::plate: hit = hit_plate(g, o, dir, lo, hi, t, normal); break;
+    case ShapeKind::cylinder:
+    case ShapeKind::cone:
+    case ShapeKind::coupler: hit = hit_frustum(g, o, dir, lo, hi, t, normal); break;
+    case ShapeKind::none: break;
+  }
+  if (!hit) return false;
+  t_m = t0 + t;
+  return t_m > t_min && t_m < t_max;
+}
+
+bool shape_contains(const ShapeGeom& g, const Vec3& p) {
+  const double f = 1.0 - kInsideTolerance;
+  switch (g.kind) {
+    case ShapeKind::sphere:
+    case ShapeKind::oblate: {
+      const Vec3 s(p.x() / g.a_m, p.y() / g.a_m, p.z() / g.c_m);
+      return s.squaredNorm() < f * f;
+    }
+    case ShapeKind::box:
+      return std::abs(p.x()) < 0.5 * g.x_m * f && std::abs(p.y()) < 0.5 * g.y_m * f &&
+             std::abs(p.z()) < 0.5 * g.z_m * f;
+    case ShapeKind::cylinder:
+    case ShapeKind::cone:
+    case ShapeKind::coupler: {
+      const double h = 0.5 * g.length_m;
+      if (!(std::abs(p.z()) < h * f)) return false;
+      const double r = 0.5 * (g.r_top_m + g.r_bottom_m) + (g.r_top_m - g.r_bottom_m) / g.length_m * p.z();
+      return std::hypot(p.x(), p.y()) < r - kInsideTolerance * std::max(g.r_bottom_m, g.r_top_m);
+    }
+    case ShapeKind::plate:
+    case ShapeKind::none: return false;
+  }
+  return false;
+}
+
+double shape_bounding_radius_m(const ShapeGeom& g) {
+  switch (g.kind) {
+    case ShapeKind::sphere:
+    case ShapeKind::oblate: return std::max(g.a_m, g.c_m);
+    case ShapeKind::box: return 0.5 * std::sqrt(g.x_m * g.x_m + g.y_m * g.y_m + g.z_m * g.z_m);
+    case ShapeKind::plate: return 0.5 * std::hypot(g.x_m, g.y_m);
+    case ShapeKind::cylinder:
+    case ShapeKind::cone:
+    case ShapeKind::coupler:
+      return std::max(std::hypot(g.r_bottom_m, 0.5 * g.length_m), std::hypot(g.r_top_m, 0.5 * g.length_m));
+    case ShapeKind::none: return 0.0;
+  }
+  return 0.0;
+}
+
+double spheroid_zone_area_m2(double a, double c, double u1, double u2) {
+  // A = 2 pi a [G(u2) - G(u1)], G(u) = int_0^u sqrt(c^2 + (a^2 - c^2) v^2) dv, u = sin(beta).
+  const double kk = a * a - c * c;
+  const double s = kk >= 0 ? 1.0 : -1.0;
+  const auto G = [&](double u) {
+    const double x = std::sqrt(std::abs(kk)) * std::abs(u) / c;
+    return 0.5 * u * std::sqrt(c * c + kk * u * u) + 0.5 * c * u * arc_ratio(x, s);
+  };
+  return 2.0 * kPi * a * (G(u2) - G(u1));
+}
+
+double shape_surface_area_m2(const ShapeGeom& g) {
+  switch (g.kind) {
+    case ShapeKind::sphere:
+    case ShapeKind::oblate: return spheroid_zone_area_m2(g.a_m, g.c_m, -1.0, 1.0);
+    case ShapeKind::box: return 2.0 * (g.x_m * g.y_m + g.y_m * g.z_m + g.z_m * g.x_m);
+    case ShapeKind::plate: return 2.0 * g.x_m * g.y_m;
+    case ShapeKind::cylinder:
+    case ShapeKind::cone:
+    case ShapeKind::coupler: {
+      const double r1 = g.r_bottom_m, r2 = g.r_top_m;
+      return kPi * (r1 + r2) * std::hypot(r1 - r2, g.length_m) + kPi * (r1 * r1 + r2 * r2);
+    }
+    case ShapeKind::none: return 0.0;
+  }
+  return 0.0;
+}
+
+int box_face(const ShapeGeom& g, const Vec3& p) {
+  const Vec3 h(0.5 * g.x_m, 0.5 * g.y_m, 0.5 * g.z_m);
+  int axis = 0;
+  double best = -kInf;
+  for (int i = 0; i < 3; ++i) {
+    const double v = std::abs(p[i]) / h[i];
+    if (v > best) {
+      best = v;
+      axis = i;
+    }
+  }
+  return 2 * axis + (p[axis] < 0 ? 1 : 0);
+}
+
+int frustum_face(const ShapeGeom& g, const Vec3& p) {
+  const double h = 0.5 * g.length_m;
+  const double k = (g.r_top_m - g.r_bottom_m) / g.length_m;
+  const double r = 0.5 * (g.r_top_m + g.r_bottom_m) + k * p.z();
+  const double rho = std::hypot(p.x(), p.y());
+  int face = 0;
+  double best = std::abs(rho - r) / std::sqrt(1.0 + k * k);
+  if (std::abs(p.z() + h) < best && rho <= g.r_bottom_m * (1 + 1e-9)) {
+    best = std::abs(p.z() + h);
+    face = 1;
+  }
+  if (g.r_top_m > 0 && std::abs(p.z() - h) < best && rho <= g.r_top_m * (1 + 1e-9)) face = 2;
+  return face;
+}
+
+Vec3 shape_normal(const ShapeGeom& g, const Vec3& p) {
+  switch (g.kind) {
+    case ShapeKind::sphere:
+    case ShapeKind::oblate:
+      return Vec3(p.x() / (g.a_m * g.a_m), p.y() / (g.a_m * g.a_m), p.z() / (g.c_m * g.c_m)).normalized();
+    case ShapeKind::box: {
+      const int f = box_face(g, p);
+      Vec3 n = Vec3::Zero();
+      n[f / 2] = (f % 2) ? -1.0 : 1.0;
+      return n;
+    }
+    case ShapeKind::plate: return Vec3(0, 0, p.z() >= 0 ? 1.0 : -1.0);
+    case ShapeKind::cylinder:
+    case ShapeKind::cone:
+    case ShapeKind::coupler: {
+      const int f = frustum_face(g, p);
+      if (f == 1) return Vec3(0, 0, -1);
+      if (f == 2) return Vec3(0, 0, 1);
+      const double rho = std::hypot(p.x(), p.y());
+      const double k = (g.r_top_m - g.r_bottom_m) / g.length_m;
+      return rho > 0 ? Vec3(p.x() / rho, p.y() / rho, -k).normalized() : Vec3(0, 0, 1);
+    }
+    case ShapeKind::none: break;
+  }
+  return Vec3::UnitZ();
+}
+
+}  // namespace eoir::geometry

@@ -1,0 +1,64 @@
+// Analytic ray/shape intersection in double precision (spec 4.1.3, 4.1.5.1;
+// DESIGN.md section 3). Everything here works in one part's own frame.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "geometry/scene_geometry.hpp"
+
+namespace eoir::geometry {
+
+enum class ShapeKind { sphere, oblate, box, plate, cylinder, cone, coupler, none };
+
+// A part's shape with its dimensions decoded (metres). Sphere: a = c = r.
+// Frustum shapes (cylinder, cone, coupler) use r_bottom at z = -length/2 and
+// r_top at z = +length/2 (cone: r_top = 0).
+struct ShapeGeom {
+  ShapeKind kind = ShapeKind::none;
+  double a_m = 0, c_m = 0;                 // sphere / oblate: equatorial, polar radius
+  double x_m = 0, y_m = 0, z_m = 0;        // box / plate full edge lengths
+  double r_bottom_m = 0, r_top_m = 0, length_m = 0;  // frustum
+};
+
+// Throws eoir::Error(unknown_name / out_of_range) for bad shapes.
+ShapeKind shape_kind(const std::string& name);
+ShapeGeom shape_geom(const ShapePart& part);
+
+// Nearest hit with t_min < t < t_max of the ray origin + t * dir (dir unit,
+// part frame). Only outward-facing surfaces are reported: a ray that starts
+// inside a closed shape does not see its inner wall (the lead's rule: an object
+// containing the observer is invisible). The plate is two-sided: its normal is
+// returned facing the ray. Grazing rays give a clean miss or hit, never NaN.
+// Returns false on a miss; on a hit sets t_m and the outward unit normal.
+bool intersect_shape(const ShapeGeom& g, const Vec3& origin_m, const Vec3& dir, double t_min, double t_max,
+                     double& t_m, Vec3& normal);
+
+// True when p lies inside the closed shape by more than a relative 1e-9 of its
+// size (a point on the surface is outside). Plate and none contain nothing.
+bool shape_contains(const ShapeGeom& g, const Vec3& p_m);
+
+// Radius of a sphere about the part origin enclosing the shape (m).
+double shape_bounding_radius_m(const ShapeGeom& g);
+
+// Exact surface area (m^2); the plate counts both faces.
+double shape_surface_area_m2(const ShapeGeom& g);
+
+// Outward unit normal of the shape's surface at (or very near) p (part frame);
+// the plate returns +z for z >= 0 and -z otherwise.
+Vec3 shape_normal(const ShapeGeom& g, const Vec3& p_m);
+
+}  // namespace eoir::geometry
+
+namespace eoir::geometry {
+
+// Area (m^2) of the zone of an ellipsoid of revolution (equatorial radius a,
+// polar c) between parametric latitudes with sines u1 <= u2 (exact, closed form).
+double spheroid_zone_area_m2(double a_m, double c_m, double u1, double u2);
+
+// Face of a box nearest p: 0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z.
+int box_face(const ShapeGeom& g, const Vec3& p_m);
+// Face of a frustum (cylinder, cone, coupler) nearest p: 0 side, 1 bottom cap
+// (z = -length/2), 2 top cap (z = +length/2, absent for the cone).
+int frustum_face(const ShapeGeom& g, const Vec3& p_m);
+
+}  // namespace eoir::geometry

@@ -1,0 +1,51 @@
+// One rendered frame of a scene-generator/sensor-model pair: the scene
+// generator's output (effective-radiance samples and point sources, spec
+// 4.1.1), what each sample hit (for picks, spec 6.2.1), and the sensor image
+// (spec 5.11).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/time.hpp"
+#include "geometry/scene_geometry.hpp"
+#include "scene/patch_radiance.hpp"
+#include "scene/sample_grid.hpp"
+
+namespace eoir::scene {
+
+// An object smaller than a scene sample (spec 4.1.6.1), kept apart from the
+// sample grid at its exact focal-plane position.
+struct PointSource {
+  std::int32_t object_id = -1;
+  double column = 0, row = 0;         // fractional sample coordinates in the full grid
+  double irradiance_W_cm2 = 0;        // band-integrated at the aperture (eq. 52)
+  double range_m = 0;
+};
+
+// The surface a hit object is made of, for shading and picks.
+struct FrameObject {
+  std::string name;
+  bool central_body = false;
+  bool earth = false;  // body frame is Earth-fixed: hits have geodetic coordinates
+  SurfacePoint surface;
+};
+
+struct Frame {
+  EngineTime time;
+  SampleGrid grid;
+  SpectralView spectral;
+  Eigen::Vector3d boresight_j2000 = Eigen::Vector3d::UnitZ();  // sensor +z
+  Eigen::Vector3d up_j2000 = Eigen::Vector3d::UnitY();         // sensor +y
+  Eigen::Matrix3d body_to_j2000 = Eigen::Matrix3d::Identity();
+  std::vector<FrameObject> objects;          // indexed by object_id of hits
+  std::vector<geometry::Hit> hits;           // full grid incl. guard, row-major
+  std::vector<double> scene_radiance;        // W cm^-2 sr^-1, full grid incl. guard
+  std::vector<PointSource> point_sources;    // inside the field of view
+  std::vector<double> sensor_mean;           // electrons, pixels (noise-free r_L + r_E)
+  std::vector<double> sensor_electrons;      // electrons, pixels (eq. 55)
+  std::vector<std::uint8_t> scene_display;   // samples of the field of view
+  std::vector<std::uint8_t> sensor_display;  // pixels
+};
+
+}  // namespace eoir::scene

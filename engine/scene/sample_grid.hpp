@@ -1,0 +1,50 @@
+// The scene generator's angular sample grid (spec 4.1.3, 5.2): four samples
+// per pixel in each direction on a uniform focal-plane grid, mapped to
+// directions by the arctangent of eqs. 15-16, plus a guard band of samples
+// beyond the field of view so that the PSF convolution of an extended source
+// has real scene on both sides of the field edge (no edge fall-off, unlike
+// spec 7.2.2).
+//
+// Image orientation: images are stored as seen on the sky, row 0 at the top.
+// Column c grows toward sensor body +x, row r toward body -y; the focal-plane
+// inversion of eqs. 15-16 (alpha = -arctan(x'/f)) is undone, so that
+// direction = normalise(tan(alpha), tan(beta), 1) with tan(alpha) growing
+// with c and tan(beta) falling with r.
+#pragma once
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "sensor/sensor_parameters.hpp"
+#include "sensor/static_metrics.hpp"
+
+namespace eoir::scene {
+
+struct SampleGrid {
+  std::int64_t pixels_x = 0, pixels_y = 0;  // sensor pixels
+  std::int64_t guard_pixels = 0;           // guard band on each side, in pixels
+  double pitch_x_cm = 0, pitch_y_cm = 0, focal_length_cm = 0;
+
+  static constexpr std::int64_t per_pixel = 4;
+  std::int64_t width() const { return (pixels_x + 2 * guard_pixels) * per_pixel; }   // samples
+  std::int64_t height() const { return (pixels_y + 2 * guard_pixels) * per_pixel; }  // samples
+  std::int64_t guard_samples() const { return guard_pixels * per_pixel; }
+  // Tangents of the sample's direction (body x/z and y/z) for sample (c, r) of
+  // the full grid including the guard band.
+  double tan_x(std::int64_t c) const;
+  double tan_y(std::int64_t r) const;
+  // Unit direction in the sensor body frame.
+  Eigen::Vector3d direction_body(std::int64_t c, std::int64_t r) const;
+  // Solid angle of one sample at (c, r) (sr), for display irradiance.
+  double sample_solid_angle_sr(std::int64_t c, std::int64_t r) const;
+  // Fractional sample coordinates (c, r) of a body direction; false if the
+  // direction is behind the sensor.
+  bool sample_of(const Eigen::Vector3d& direction_body, double& c, double& r) const;
+};
+
+// Grid for a sensor; guard band wide enough for the PSF (about 20 lambda F#
+// of diffraction tail plus 4 sigma of jitter and the defocus blur), at least
+// one pixel, at most the sensor's size.
+SampleGrid make_sample_grid(const sensor::SensorParameters& p, const sensor::StaticMetrics& m);
+
+}  // namespace eoir::scene

@@ -1,0 +1,195 @@
+#include "sensor/system_psf.hpp"
+
+#include <cmath>
+#include <complex>
+
+#include "core/constants.hpp"
+#include "core/error.hpp"
+#include "core/fftw_plans.hpp"  // the process-wide plan cache (planning is not thread-safe)
+
+namespace eoir::sensor {
+namespace {
+
+double sinc_pi(double x) {  // sin(pi x) / (pi x)
+  const double a = constants::pi * x;
+  return std::abs(a) < 1.0e-8 ? 1.0 : std::sin(a) / a;
+}
+
+// Frequency of FFT index i on an n-point grid of spacing dx (cycles/cm).
+double frequency(std::int64_t i, std::int64_t n, double dx_cm) {
+  const std::int64_t signed_index = i <= n / 2 ? i : i - n;
+  return static_cast<double>(signed_index) / (static_cast<double>(n) * dx_cm);
+}
+
+// One frequency at which the spectrum is evaluated for an FFT bin: the bin's
+// own frequency or one of its aliases xi + m / dx, with xi^2 and the separable
+// factor of its axis (cell footprint sinc times the shift phase).
+struct AxisFrequency {
+  double xi_squared;
+  std::complex<double> factor;
+};
+
+// For every bin of one axis, the frequencies xi_bin + m / d with |xi| below
+// the cutoff. With d <= lambda F# / 2 that is the bin alone (or nothing);
+// with a coarser d the band-limited spectrum is folded onto the bins, which
+// is what sampling the focal plane at spacing d does (Poisson summation).
+std::vector<std::vector<AxisFrequency>> axis_frequencies(std::int64_t bins, std::int64_t n, double d_cm,
+                                                         double cutoff, double cell_cm, double offset_cm) {
+  std::vector<std::vector<AxisFrequency>> out(static_cast<std::size_t>(bins));
+  const double period = 1.0 / d_cm;  // cycles/cm between aliases
+  for (std::int64_t b = 0; b < bins; ++b) {
+    const double base = frequency(b, n, d_cm);
+    const auto m_low = static_cast<std::int64_t>(std::ceil((-cutoff - base) / period));
+    const auto m_high = static_cast<std::int64_t>(std::floor((cutoff - base) / period));
+    for (std::int64_t m = m_low; m <= m_high; ++m) {
+      const double xi = base + static_cast<double>(m) * period;
+      if (std::abs(xi) >= cutoff) continue;
+      out[static_cast<std::size_t>(b)].push_back(
+          {xi * xi, sinc_pi(xi * cell_cm) * std::polar(1.0, -2.0 * constants::pi * xi * offset_cm)});
+    }
+  }
+  return out;
+}
+
+// FFT points per output step along one axis. Nyquist-fine (fft_subdivisions)
+// when the FFT period n dx then spans the window plus a margin of
+// `period_margin_steps` (aliases of the PSF tails land that far out);
+// otherwise coarser (down to 1, the spectrum folded) so that it does. The
+// margin shrinks (to 1) if folding would evaluate the OTF more than
+// max(4 n^2, 2^22) times (~50 ms; the pixel is then over a hundred lambda F#
+// and the tails that alias are small).
+constexpr std::int64_t period_margin_steps = 9;
+
+std::int64_t subdivisions_for(const OpticsModel& optics, double step_cm, std::int64_t min_subdivisions,
+                              std::int64_t size, std::int64_t n) {
+  const std::int64_t nyquist = fft_subdivisions(optics, step_cm, min_subdivisions);
+  const double steps_per_cutoff = step_cm * optics.cutoff_cycles_per_cm();
+  std::int64_t period_steps = size + period_margin_steps;
+  auto folded_evaluations = [&](std::int64_t steps) {  // OTF points inside the cutoff disc
+    const double period_times_cutoff = static_cast<double>(steps) * steps_per_cutoff;
+    return constants::pi * period_times_cutoff * period_times_cutoff;
+  };
+  const double budget = std::max(4.0 * static_cast<double>(n) * static_cast<double>(n), 4194304.0);
+  while (period_steps > size + 1 && folded_evaluations(period_steps) > budget) --period_steps;
+  return std::max<std::int64_t>(1, std::min(nyquist, n / period_steps));
+}
+
+// The core: the PSF convolved with a cell_x x cell_y box (a unit-area delta
+// when cell_* = 0), shifted by (offset_x, offset_y), sampled at multiples of
+// (step_x, step_y) in a window of odd `size`.
+FocalPlaneSamples integrated_psf(const OpticsModel& optics, double cell_x_cm, double cell_y_cm, double step_x_cm,
+                                 double step_y_cm, std::int64_t size, double offset_x_cm, double offset_y_cm,
+                                 std::int64_t min_subdivisions, std::int64_t fft_size) {
+  if (!valid_psf_grid_size(fft_size))
+    throw Error(Status::out_of_range, "psf_grid_size: must be a power of two in [64, 4096], got " +
+                                          std::to_string(fft_size));
+  if (size < 1 || size % 2 == 0)
+    throw Error(Status::out_of_range, "psf window: must be odd and >= 1, got " + std::to_string(size));
+  const std::int64_t n = fft_size;
+  // The spatial period n dx must exceed the window by at least one step, so
+  // that aliased copies of the window's cells lie beyond it.
+  if (size + 1 > n)
+    throw Error(Status::out_of_range, "psf_grid_size: " + std::to_string(n) + " is too small for a window of " +
+                                          std::to_string(size) + " samples");
+  const std::int64_t kx = subdivisions_for(optics, step_x_cm, min_subdivisions, size, n);
+  const std::int64_t ky = subdivisions_for(optics, step_y_cm, min_subdivisions, size, n);
+  const double dx = step_x_cm / static_cast<double>(kx);
+  const double dy = step_y_cm / static_cast<double>(ky);
+  const std::int64_t nc = n / 2 + 1;  // complex columns of the c2r input
+  const double cutoff = optics.cutoff_cycles_per_cm();
+  const double cutoff2 = cutoff * cutoff;
+  const auto fx = axis_frequencies(nc, n, dx, cutoff, cell_x_cm, offset_x_cm);
+  const auto fy = axis_frequencies(n, n, dy, cutoff, cell_y_cm, offset_y_cm);
+
+  const fftw::ComplexBuffer in = fftw::complex_buffer(static_cast<std::size_t>(n * nc));
+  const fftw::RealBuffer out = fftw::real_buffer(static_cast<std::size_t>(n * n));
+  // Sum over the frequency grid times d xi_x d xi_y = 1 / (n^2 dx dy): the
+  // inverse transform of eq. 40 as a Riemann sum. A cell footprint of area
+  // a b integrates the PSF over the cell, so it carries the factor a b.
+  const double cell_area = (cell_x_cm > 0 ? cell_x_cm : 1.0) * (cell_y_cm > 0 ? cell_y_cm : 1.0);
+  const double scale = cell_area / (static_cast<double>(n) * static_cast<double>(n) * dx * dy);
+  // The OTF is radial and row n - j holds the negated frequencies of row j
+  // (with conjugate factors), so each OTF value serves both rows.
+  for (std::int64_t j = 0; j <= n / 2; ++j) {
+    const std::int64_t mirror = (n - j) % n;
+    const bool has_mirror = j != 0 && j != n / 2;
+    const auto& row = fy[static_cast<std::size_t>(j)];
+    for (std::int64_t i = 0; i < nc; ++i) {
+      std::complex<double> value(0.0), mirrored(0.0);
+      for (const AxisFrequency& ax : fx[static_cast<std::size_t>(i)]) {
+        for (const AxisFrequency& ay : row) {
+          const double r2 = ax.xi_squared + ay.xi_squared;
+          if (r2 >= cutoff2) continue;
+          const std::complex<double> t = optics.system(std::sqrt(r2)) * ax.factor;
+          value += t * ay.factor;
+          mirrored += t * std::conj(ay.factor);
+        }
+      }
+      in[static_cast<std::size_t>(j * nc + i)][0] = scale * value.real();
+      in[static_cast<std::size_t>(j * nc + i)][1] = scale * value.imag();
+      if (has_mirror) {
+        in[static_cast<std::size_t>(mirror * nc + i)][0] = scale * mirrored.real();
+        in[static_cast<std::size_t>(mirror * nc + i)][1] = scale * mirrored.imag();
+      }
+    }
+  }
+  // Thread-safe: a kept plan executed on this call's own aligned arrays.
+  fftw_execute_dft_c2r(fftw::c2r_2d(static_cast<int>(n), static_cast<int>(n)), in.get(), out.get());
+
+  FocalPlaneSamples result;
+  result.size = size;
+  result.step_x_cm = step_x_cm;
+  result.step_y_cm = step_y_cm;
+  result.values.resize(static_cast<std::size_t>(size * size));
+  const std::int64_t half = size / 2;
+  for (std::int64_t iy = -half; iy <= half; ++iy) {
+    const std::int64_t out_row = ((iy * ky) % n + n) % n;
+    for (std::int64_t ix = -half; ix <= half; ++ix) {
+      const std::int64_t col = ((ix * kx) % n + n) % n;
+      result.values[static_cast<std::size_t>((iy + half) * size + (ix + half))] =
+          out[static_cast<std::size_t>(out_row * n + col)];
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+double FocalPlaneSamples::sum() const {
+  double s = 0;
+  for (double v : values) s += v;
+  return s;
+}
+
+bool valid_psf_grid_size(std::int64_t n) { return n >= 64 && n <= 4096 && (n & (n - 1)) == 0; }
+
+std::int64_t fft_subdivisions(const OpticsModel& optics, double step_cm, std::int64_t min_subdivisions) {
+  const double nyquist_spacing_cm = 0.5 * optics.diffraction_wavelength_cm * optics.f_number;
+  const auto k = static_cast<std::int64_t>(std::ceil(step_cm / nyquist_spacing_cm * (1.0 - 1.0e-12)));
+  return std::max(k, min_subdivisions);
+}
+
+FocalPlaneSamples sampled_psf(const OpticsModel& optics, double spacing_x_cm, double spacing_y_cm,
+                              std::int64_t size, std::int64_t fft_size, bool cell_integrated) {
+  FocalPlaneSamples psf =
+      integrated_psf(optics, cell_integrated ? spacing_x_cm : 0.0, cell_integrated ? spacing_y_cm : 0.0,
+                     spacing_x_cm, spacing_y_cm, size, 0.0, 0.0, 1, fft_size);
+  const double total = psf.sum();
+  for (double& v : psf.values) v /= total;
+  return psf;
+}
+
+FocalPlaneSamples energy_on_detector(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm,
+                                     std::int64_t window, double offset_x_cm, double offset_y_cm,
+                                     std::int64_t fft_size) {
+  // At least 4 FFT points per pixel (the p / 4 sample interval of eqs. 13-14)
+  // unless the spectrum is folded (see subdivisions_for).
+  return integrated_psf(optics, pitch_x_cm, pitch_y_cm, pitch_x_cm, pitch_y_cm, window, offset_x_cm, offset_y_cm,
+                        4, fft_size);
+}
+
+double ensquared_energy(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm, std::int64_t fft_size) {
+  return energy_on_detector(optics, pitch_x_cm, pitch_y_cm, 1, 0.0, 0.0, fft_size).values[0];
+}
+
+}  // namespace eoir::sensor

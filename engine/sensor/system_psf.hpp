@@ -1,0 +1,67 @@
+// The system PSF (spec 5.7, eq. 40) and the energy it puts on detectors
+// (eqs. 41-42, 51), by FFT of the system OTF (eq. 39) with FFTW.
+//
+// Method: the quantity wanted, the PSF integrated over a rectangular cell
+// (a pixel for eq. 51, a sample cell for the scene grid), is the inverse
+// Fourier transform of OTF(xi) * A sinc(xi_x a) sinc(xi_y b). The OTF is
+// band-limited at 1/(lambda F#), so sampling it on an N x N frequency grid
+// that covers the cutoff (focal-plane spacing dx <= lambda F# / 2) makes the
+// inverse FFT exact up to aliasing of the PSF tails from the spatial period
+// N dx. The spacing is an integer fraction of the output step (the pixel pitch
+// or the sample spacing), so pixel values are FFT outputs, not interpolations.
+// When Nyquist-fine spacing would leave a period shorter than the window plus
+// one step (pixels of hundreds of lambda F#), dx is coarser and the spectrum
+// is folded (each bin sums its aliases xi + m / dx inside the cutoff), which
+// is still exact sampling; only the period, not the accuracy of the OTF
+// sampling, is then limited by the grid size.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "sensor/otf.hpp"
+
+namespace eoir::sensor {
+
+// Values on a square focal-plane grid centred on the origin: element
+// (ix, iy), -half <= ix, iy <= half, is at (ix step_x, iy step_y).
+struct FocalPlaneSamples {
+  std::int64_t size = 0;  // odd, samples per side
+  double step_x_cm = 0, step_y_cm = 0;
+  std::vector<double> values;  // row-major: [(iy + half) * size + (ix + half)]
+
+  std::int64_t half() const { return size / 2; }
+  double at(std::int64_t ix, std::int64_t iy) const {
+    return values[static_cast<std::size_t>((iy + half()) * size + (ix + half()))];
+  }
+  double sum() const;
+};
+
+// FFT focal-plane spacing for an output step: step / k with the smallest
+// integer k >= min_subdivisions such that step / k <= lambda F# / 2 (capped
+// at fft_size / (window + 1), where folding takes over).
+std::int64_t fft_subdivisions(const OpticsModel& optics, double step_cm, std::int64_t min_subdivisions);
+
+// (a) The system PSF on a grid of the given spacing and odd size, normalised
+// to unit sum. cell_integrated: each value is the PSF integrated over its
+// spacing_x x spacing_y cell (what a convolution on that grid needs);
+// otherwise the PSF is point-sampled. Throws out_of_range naming
+// psf_grid_size when size + 1 > fft_size (the FFT period must hold the window
+// plus one step; the same holds below).
+FocalPlaneSamples sampled_psf(const OpticsModel& optics, double spacing_x_cm, double spacing_y_cm,
+                              std::int64_t size, std::int64_t fft_size, bool cell_integrated = true);
+
+// (b) Energy on detector, eq. 51, for a point source at (offset_x, offset_y)
+// from the centre of pixel (0, 0): element (m, n) is the fraction of the
+// source's energy on the pixel centred at (m p_x, n p_y). window is odd.
+FocalPlaneSamples energy_on_detector(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm,
+                                     std::int64_t window, double offset_x_cm, double offset_y_cm,
+                                     std::int64_t fft_size);
+
+// (c) Ensquared energy, eq. 42: EOD of the centre pixel for a point source at
+// its centre.
+double ensquared_energy(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm, std::int64_t fft_size);
+
+// True for powers of two in [64, 4096], the allowed psf_grid_size values.
+bool valid_psf_grid_size(std::int64_t n);
+
+}  // namespace eoir::sensor

@@ -1,0 +1,43 @@
+// The engine as the CLI sees it: libeoir loaded as a plugin through
+// eoir_plugin_loader (never linked), its function table, and one engine.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+#include "plugin_loader.h"
+
+namespace eoir::cli {
+
+// An engine call failed. what() is "WHERE: engine message (STATUS_NAME)".
+class EngineError : public std::runtime_error {
+ public:
+  EngineError(const std::string& message, eoir_status status) : std::runtime_error(message), status_(status) {}
+  eoir_status status() const { return status_; }
+
+ private:
+  eoir_status status_;
+};
+
+class Engine {
+ public:
+  // library: path of libeoir (NULL: EOIR_LIBRARY or the build's). Throws
+  // std::runtime_error with the loader's message.
+  explicit Engine(const char* library = nullptr, bool verbose = false);
+  ~Engine();
+  Engine(const Engine&) = delete;
+  Engine& operator=(const Engine&) = delete;
+
+  const eoir_api_v1& api() const { return *plugin_.api; }
+  eoir_engine handle() const { return engine_; }
+  const char* library_path() const { return plugin_.path; }
+  // Throws EngineError("where: last_error (STATUS)") if status is an error.
+  void check(eoir_status status, const std::string& where) const;
+
+ private:
+  eoir_loader_plugin plugin_{};
+  eoir_host_api host_{};
+  eoir_engine engine_ = nullptr;
+  bool verbose_ = false;
+};
+
+}  // namespace eoir::cli

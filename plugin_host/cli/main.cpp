@@ -1,0 +1,402 @@
+// eoir — the command-line host of the EOIR engine. It loads libeoir as a
+// plugin (through eoir_plugin_loader, never by linking it), builds a scenario
+// through the C ABI, drives time and states, and reports data providers.
+//
+// Exit status: 0 success, 1 bad command line, 2 bad scenario or an engine
+// error (the message names the JSON path or the engine's complaint).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "engine.hpp"
+#include "iso_time.hpp"
+#include "report.hpp"
+#include "run.hpp"
+#include "scenario.hpp"
+#include "session.hpp"
+
+#ifndef EOIR_CLI_VERSION
+#define EOIR_CLI_VERSION "0.0.0"
+#endif
+#ifndef EOIR_SCENARIO_DIR_DEFAULT
+#define EOIR_SCENARIO_DIR_DEFAULT "scenarios"
+#endif
+
+namespace {
+
+using namespace eoir::cli;
+
+constexpr const char* kTargetGroup = "EOIR Sensor-to-Target Metrics";
+
+const char* const kUsage =
+    "usage: eoir [--library PATH] [COMMAND ...]\n"
+    "\n"
+    "Headless EO/IR sensor engine, command-line host.\n"
+    "\n"
+    "commands:\n"
+    "  (none)                 run the bundled demo scenario (scenarios/demo/default.json)\n"
+    "                         and print its static sensor metrics\n"
+    "  report SCENARIO --provider GROUP --sensor NAME [--target NAME]\n"
+    "         [--start ISO] [--stop ISO] [--step SECONDS]\n"
+    "         [--format json|csv] [--out FILE] [--quiet]\n"
+    "                         evaluate every element of a data-provider group over time\n"
+    "                         (default: the scenario start only; with --stop, every --step\n"
+    "                         seconds, stop included; --step defaults to the scenario's step_s)\n"
+    "  run SCENARIO --out DIR [--start ISO] [--stop ISO] [--step SECONDS]\n"
+    "         [--sensor NAME ...] [--quiet]\n"
+    "                         render every sensor (or those named) at each time step and\n"
+    "                         write per frame <sensor>_<NNNN>_radiance.fits,\n"
+    "                         _electrons.fits, _mean_electrons.fits, _scene.png, _sensor.png\n"
+    "                         and a summary.json into DIR (created if missing); the times\n"
+    "                         default to the scenario's start, stop and step_s\n"
+    "  validate SCENARIO      check a scenario file and load it into an engine\n"
+    "  groups                 list the data-provider groups and their elements\n"
+    "  --help, -h             this help\n"
+    "  --version              program and engine versions\n"
+    "\n"
+    "options:\n"
+    "  --library PATH         engine library to load (else $EOIR_LIBRARY, else the build's)\n"
+    "\n"
+    "environment: EOIR_LIBRARY (engine library), EOIR_SCENARIO_DIR (bundled scenarios)\n"
+    "exit status: 0 ok, 1 bad command line, 2 bad scenario or engine error\n";
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::string scenario_dir() {
+  const char* env = std::getenv("EOIR_SCENARIO_DIR");
+  return (env != nullptr && env[0] != '\0') ? env : EOIR_SCENARIO_DIR_DEFAULT;
+}
+
+double parse_seconds(const std::string& s, const char* option) {
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || end == nullptr || *end != '\0' || !std::isfinite(v))
+    throw UsageError(std::string(option) + ": '" + s + "' is not a number of seconds");
+  return v;
+}
+
+double parse_time_option(const std::string& s, const char* option) {
+  try {
+    return parse_iso(s);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string(option) + ": " + e.what());
+  }
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string out;
+  for (const auto& s : v) out += (out.empty() ? "'" : ", '") + s + "'";
+  return out.empty() ? "(none)" : out;
+}
+
+// Names of the engine's objects of a kind (0 = any).
+std::vector<std::string> engine_objects(const Engine& engine, int32_t kind) {
+  std::vector<std::string> names;
+  std::size_t n = 0;
+  engine.check(engine.api().object_count(engine.handle(), &n), "object_count");
+  for (std::size_t i = 0; i < n; ++i) {
+    const char* name = nullptr;
+    int32_t k = 0;
+    engine.check(engine.api().object_at(engine.handle(), i, &name, &k), "object_at");
+    if (kind == 0 || k == kind) names.emplace_back(name ? name : "");
+  }
+  return names;
+}
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+  for (const auto& x : v)
+    if (x == s) return true;
+  return false;
+}
+
+// Writes through a temporary file renamed into place, or to stdout.
+void emit(const std::optional<std::string>& out_file, const std::string& text) {
+  if (!out_file) {
+    std::cout << text;
+    std::cout.flush();
+    return;
+  }
+  const std::string tmp = *out_file + ".tmp";
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    if (!(f << text) || !f.flush()) throw std::runtime_error("--out: cannot write " + tmp);
+  }
+  if (std::rename(tmp.c_str(), out_file->c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("--out: cannot write " + *out_file);
+  }
+}
+
+int cmd_report(const std::vector<std::string>& args, const char* library) {
+  std::optional<std::string> scenario_file, provider, sensor, target, start, stop, step, out_file;
+  std::string format = "json";
+  bool quiet = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    const auto value = [&](const char* opt) {
+      if (i + 1 >= args.size()) throw UsageError(std::string(opt) + " needs a value");
+      return args[++i];
+    };
+    if (a == "--provider") provider = value("--provider");
+    else if (a == "--sensor") sensor = value("--sensor");
+    else if (a == "--target") target = value("--target");
+    else if (a == "--start") start = value("--start");
+    else if (a == "--stop") stop = value("--stop");
+    else if (a == "--step") step = value("--step");
+    else if (a == "--format") format = value("--format");
+    else if (a == "--out") out_file = value("--out");
+    else if (a == "--quiet" || a == "-q") quiet = true;
+    else if (!a.empty() && a[0] == '-') throw UsageError("report: unknown option " + a);
+    else if (!scenario_file) scenario_file = a;
+    else throw UsageError("report: unexpected argument '" + a + "'");
+  }
+  if (!scenario_file) throw UsageError("report: missing SCENARIO");
+  if (!provider) throw UsageError("report: missing --provider GROUP");
+  if (!sensor) throw UsageError("report: missing --sensor NAME");
+  if (format != "json" && format != "csv") throw UsageError("--format: '" + format + "' is not json or csv");
+  std::optional<double> step_s;
+  if (step) {
+    step_s = parse_seconds(*step, "--step");
+    if (!(*step_s > 0)) throw UsageError("--step: must be positive, not " + *step);
+  }
+  std::optional<double> start_s, stop_s;
+  if (start) start_s = parse_time_option(*start, "--start");
+  if (stop) stop_s = parse_time_option(*stop, "--stop");
+  if (start_s && stop_s && *stop_s < *start_s)
+    throw UsageError("--stop " + *stop + " is before --start " + *start);
+
+  const Scenario sc = load_scenario(*scenario_file);
+  const double t0 = start_s.value_or(sc.start_s);
+  const double t1 = stop_s.value_or(t0);
+  if (t1 < t0) throw UsageError("--stop " + *stop + " is before the start " + format_iso(t0));
+  const double dt = step_s.value_or(sc.step_s);
+  std::vector<double> times;
+  for (long long k = 0;; ++k) {
+    const double t = t0 + static_cast<double>(k) * dt;
+    if (t > t1 + 1e-6) break;
+    times.push_back(t);
+    if (times.size() > 10000000) throw UsageError("report: more than 10^7 rows; use a larger --step");
+  }
+  if (times.back() < t1 - 1e-6) times.push_back(t1);
+
+  Engine engine(library);
+  Session session(engine, sc);
+  const std::vector<std::string> groups = provider_groups(engine.api());
+  if (!contains(groups, *provider))
+    throw UsageError("--provider: unknown data-provider group '" + *provider + "'; known groups: " + join(groups));
+  const std::vector<std::string> sensors = engine_objects(engine, EOIR_KIND_SENSOR);
+  if (!contains(sensors, *sensor))
+    throw UsageError("--sensor: unknown sensor '" + *sensor + "' in " + *scenario_file + "; sensors: " + join(sensors));
+  if (target && !contains(engine_objects(engine, 0), *target))
+    throw UsageError("--target: unknown object '" + *target + "' in " + *scenario_file);
+  if (*provider == kTargetGroup && !target)
+    throw UsageError("--provider '" + *provider + "' needs --target NAME");
+  const std::vector<ElementInfo> elements = provider_elements(engine.api(), *provider);
+
+  std::vector<ReportRow> rows;
+  rows.reserve(times.size());
+  const auto began = std::chrono::steady_clock::now();
+  bool progress_shown = false;
+  // On a terminal a line rewritten in place every 1 %; otherwise a line every 10 %.
+  const bool tty = isatty(fileno(stderr)) != 0;
+  const std::size_t every = std::max<std::size_t>(1, times.size() / (tty ? 100 : 10));
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    session.set_time(times[i]);
+    rows.push_back(evaluate_row(engine, *provider, elements, *sensor, target, times[i]));
+    if (!quiet) {
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+      if ((times.size() > 100 || elapsed > 2.0) && ((i + 1) % every == 0 || i + 1 == times.size())) {
+        std::fprintf(stderr, "%seoir report: %zu/%zu rows (%.0f %%)%s", tty ? "\r" : "", i + 1, times.size(),
+                     100.0 * static_cast<double>(i + 1) / static_cast<double>(times.size()), tty ? "" : "\n");
+        progress_shown = tty;
+      }
+    }
+  }
+  if (progress_shown) std::fprintf(stderr, "\n");
+
+  std::ostringstream text;
+  if (format == "json") {
+    write_json(text, *provider, *sensor, target, rows);
+  } else if (write_csv(text, elements, rows)) {
+    std::fprintf(stderr, "eoir report: curve elements are not written to CSV (use --format json)\n");
+  }
+  emit(out_file, text.str());
+  return 0;
+}
+
+int cmd_run(const std::vector<std::string>& args, const char* library) {
+  std::optional<std::string> scenario_file, out_dir, start, stop, step;
+  RunOptions opt;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    const auto value = [&](const char* o) {
+      if (i + 1 >= args.size()) throw UsageError(std::string(o) + " needs a value");
+      return args[++i];
+    };
+    if (a == "--out") out_dir = value("--out");
+    else if (a == "--start") start = value("--start");
+    else if (a == "--stop") stop = value("--stop");
+    else if (a == "--step") step = value("--step");
+    else if (a == "--sensor") opt.sensors.push_back(value("--sensor"));
+    else if (a == "--quiet" || a == "-q") opt.quiet = true;
+    else if (!a.empty() && a[0] == '-') throw UsageError("run: unknown option " + a);
+    else if (!scenario_file) scenario_file = a;
+    else throw UsageError("run: unexpected argument '" + a + "'");
+  }
+  if (!scenario_file) throw UsageError("run: missing SCENARIO");
+  if (!out_dir) throw UsageError("run: missing --out DIR");
+  if (out_dir->empty()) throw UsageError("--out: empty directory name");
+  std::optional<double> step_s;
+  if (step) {
+    step_s = parse_seconds(*step, "--step");
+    if (!(*step_s > 0)) throw UsageError("--step: must be positive, not " + *step);
+  }
+  std::optional<double> start_s, stop_s;
+  if (start) start_s = parse_time_option(*start, "--start");
+  if (stop) stop_s = parse_time_option(*stop, "--stop");
+  if (start_s && stop_s && *stop_s < *start_s)
+    throw UsageError("--stop " + *stop + " is before --start " + *start);
+
+  const Scenario sc = load_scenario(*scenario_file);
+  const double t0 = start_s.value_or(sc.start_s);
+  const double t1 = stop_s.value_or(start_s && *start_s > sc.stop_s ? t0 : sc.stop_s);
+  if (t1 < t0) throw UsageError("--stop " + format_iso(t1) + " is before the start " + format_iso(t0));
+  const double dt = step_s.value_or(sc.step_s);
+  for (long long k = 0;; ++k) {
+    const double t = t0 + static_cast<double>(k) * dt;
+    if (t > t1 + 1e-6) break;
+    opt.times.push_back(t);
+    if (opt.times.size() > 9999) throw UsageError("run: more than 9999 time steps; use a larger --step");
+  }
+  if (opt.times.back() < t1 - 1e-6) opt.times.push_back(t1);
+  opt.scenario_file = *scenario_file;
+  opt.out_dir = *out_dir;
+
+  Engine engine(library);
+  run_frames(engine, sc, opt);
+  return 0;
+}
+
+int cmd_validate(const std::vector<std::string>& args, const char* library) {
+  if (args.size() != 1) throw UsageError("validate: expected exactly one SCENARIO");
+  const Scenario sc = load_scenario(args[0]);
+  Engine engine(library);
+  Session session(engine, sc);
+  std::size_t steps = 0;
+  for (long long k = 0;; ++k) {
+    const double t = sc.start_s + static_cast<double>(k) * sc.step_s;
+    if (t > sc.stop_s + 1e-6) break;
+    session.set_time(t);
+    if (++steps > 1000000) break;
+  }
+  session.set_time(sc.stop_s);
+  std::printf("%s: valid (scenario '%s': %zu objects, %zu sensors, %zu time steps)\n", args[0].c_str(),
+              sc.name.c_str(), sc.objects.size(), sc.sensors.size(), steps);
+  return 0;
+}
+
+int cmd_default(const char* library) {
+  const std::string file = scenario_dir() + "/demo/default.json";
+  const Scenario sc = load_scenario(file);
+  Engine engine(library);
+  Session session(engine, sc);
+  session.set_time(sc.start_s);
+  std::cout << "EOIR " << EOIR_CLI_VERSION << " (engine " << engine.api().version() / 10000 << "."
+            << engine.api().version() / 100 % 100 << "." << engine.api().version() % 100 << ", "
+            << engine.library_path() << ")\n"
+            << "scenario: " << sc.name << " (" << file << ")\n";
+  if (!sc.description.empty()) std::cout << sc.description << "\n";
+  std::cout << "time: " << format_iso(sc.start_s) << "\n";
+  for (const SensorSpec& s : sc.sensors) {
+    std::cout << "\nsensor " << s.name << " on " << s.parent << "\n";
+    for (const std::string& group : provider_groups(engine.api())) {
+      if (group == kTargetGroup) continue;  // needs a target
+      const std::vector<ElementInfo> elements = provider_elements(engine.api(), group);
+      try {
+        const ReportRow row = evaluate_row(engine, group, elements, s.name, std::nullopt, sc.start_s);
+        std::cout << "\n";
+        write_table(std::cout, group, row);
+      } catch (const EngineError& e) {
+        std::cerr << "eoir: skipped " << group << ": " << e.what() << "\n";
+      }
+    }
+  }
+  std::cout << "\nRun `eoir --help` for the commands.\n";
+  return 0;
+}
+
+int cmd_groups(const char* library) {
+  Engine engine(library);
+  for (const std::string& g : provider_groups(engine.api())) {
+    std::cout << g << "\n";
+    for (const ElementInfo& e : provider_elements(engine.api(), g))
+      std::cout << "  " << e.name << (e.unit.empty() ? "" : " [" + e.unit + "]")
+                << (e.type == EOIR_TYPE_CURVE ? " (curve vs " + e.x_unit + ")" : "") << "\n";
+  }
+  return 0;
+}
+
+int cmd_version(const char* library) {
+  std::cout << "eoir " << EOIR_CLI_VERSION << " (C ABI " << EOIR_VERSION_MAJOR << "." << EOIR_VERSION_MINOR << ")\n";
+  try {
+    Engine engine(library);
+    const uint32_t v = engine.api().version();
+    std::cout << "engine " << v / 10000 << "." << v / 100 % 100 << "." << v % 100 << " (" << engine.library_path()
+              << ")\n";
+  } catch (const std::exception& e) {
+    std::cout << "engine: not loaded (" << e.what() << ")\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  std::string library_storage;
+  const char* library = nullptr;
+  try {
+    if (args.size() >= 2 && args[0] == "--library") {
+      library_storage = args[1];
+      library = library_storage.c_str();
+      args.erase(args.begin(), args.begin() + 2);
+    }
+    if (args.empty()) return cmd_default(library);
+    const std::string cmd = args[0];
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+      std::cout << kUsage;
+      return 0;
+    }
+    if (cmd == "--version") return cmd_version(library);
+    if (cmd == "report") return cmd_report(rest, library);
+    if (cmd == "run") return cmd_run(rest, library);
+    if (cmd == "validate") return cmd_validate(rest, library);
+    if (cmd == "groups") return cmd_groups(library);
+    throw UsageError("unknown command '" + cmd + "'");
+  } catch (const UsageError& e) {
+    std::cerr << "eoir: " << e.what() << "\n(run `eoir --help` for usage)\n";
+    return 1;
+  } catch (const ScenarioError& e) {
+    std::cerr << "eoir: " << e.what() << "\n";
+    return 2;
+  } catch (const EngineError& e) {
+    std::cerr << "eoir: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "eoir: " << e.what() << "\n";
+    return 2;
+  }
+}

@@ -1,0 +1,371 @@
+#include "run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <system_error>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "fits_writer.hpp"
+#include "iso_time.hpp"
+#include "png_writer.hpp"
+#include "session.hpp"
+
+#ifndef EOIR_CLI_VERSION
+#define EOIR_CLI_VERSION "0.0.0"
+#endif
+
+namespace eoir::cli {
+namespace {
+
+namespace fs = std::filesystem;
+namespace io = eoir::imageio;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+
+struct Stats {
+  double min = 0, max = 0, mean = 0;
+  std::size_t non_finite = 0;
+};
+
+Stats stats_of(const std::vector<double>& v) {
+  Stats s;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo, sum = 0;
+  std::size_t n = 0;
+  for (double x : v) {
+    if (!std::isfinite(x)) {
+      ++s.non_finite;
+      continue;
+    }
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+    sum += x;
+    ++n;
+  }
+  if (n == 0) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    s.min = s.max = s.mean = nan;
+  } else {
+    s.min = lo;
+    s.max = hi;
+    s.mean = sum / static_cast<double>(n);
+  }
+  return s;
+}
+
+nlohmann::json stats_json(const Stats& s) {
+  const auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  return {{"min", num(s.min)}, {"max", num(s.max)}, {"mean", num(s.mean)}, {"non_finite", s.non_finite}};
+}
+
+struct Vec3 {
+  double x, y, z;
+};
+
+Vec3 unit_radec(double ra_deg, double dec_deg) {
+  const double ra = ra_deg * kDeg, dec = dec_deg * kDeg;
+  return {std::cos(dec) * std::cos(ra), std::cos(dec) * std::sin(ra), std::sin(dec)};
+}
+
+double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+// Position angle (east of north) at the boresight of the up vector, both
+// given as J2000 RA/Dec.
+double position_angle_deg(double ra0, double dec0, double up_ra, double up_dec) {
+  const double ra = ra0 * kDeg, dec = dec0 * kDeg;
+  const Vec3 east{-std::sin(ra), std::cos(ra), 0.0};
+  const Vec3 north{-std::sin(dec) * std::cos(ra), -std::sin(dec) * std::sin(ra), std::cos(dec)};
+  const Vec3 up = unit_radec(up_ra, up_dec);
+  return std::atan2(dot(up, east), dot(up, north)) / kDeg;
+}
+
+class RunContext {
+ public:
+  RunContext(Engine& engine, const Scenario& sc) : engine_(engine), sc_(sc) {}
+
+  double number(const std::string& object, const char* property) const {
+    double v = 0;
+    engine_.check(engine_.api().get_number(engine_.handle(), object.c_str(), property, &v),
+                  object + "." + property);
+    return v;
+  }
+
+  eoir_image_info info(const std::string& sensor, int32_t kind, const std::string& where) const {
+    eoir_image_info in{};
+    in.struct_size = sizeof in;
+    engine_.check(engine_.api().image_info_get(engine_.handle(), sensor.c_str(), kind, &in), where);
+    if (in.width == 0 || in.height == 0)
+      throw EngineError(where + ": the engine reports an empty image (" + std::to_string(in.width) + "x" +
+                            std::to_string(in.height) + ")",
+                        EOIR_ERR_INTERNAL);
+    return in;
+  }
+
+  std::vector<double> values(const std::string& sensor, int32_t kind, const eoir_image_info& in,
+                             const std::string& where) const {
+    std::vector<double> v(static_cast<std::size_t>(in.width) * in.height);
+    engine_.check(engine_.api().image_get(engine_.handle(), sensor.c_str(), kind, v.data(), v.size()), where);
+    return v;
+  }
+
+  std::vector<std::uint8_t> bytes(const std::string& sensor, int32_t kind, const eoir_image_info& in,
+                                  const std::string& where) const {
+    std::vector<std::uint8_t> v(static_cast<std::size_t>(in.width) * in.height);
+    engine_.check(engine_.api().image_get_bytes(engine_.handle(), sensor.c_str(), kind, v.data(), v.size()), where);
+    return v;
+  }
+
+  std::string iso_of(const eoir_image_info& in) const {
+    eoir_time t{};
+    t.scale = EOIR_TIME_UTC;
+    t.jd1 = in.time_jd_utc[0];
+    t.jd2 = in.time_jd_utc[1];
+    char buf[64];
+    engine_.check(engine_.api().time_to_iso(&t, buf, sizeof buf), "image time");
+    return buf;
+  }
+
+  // Header common to every FITS file of a frame; samples_per_pixel is 4 for
+  // the scene (4x4 samples per pixel) and 1 for the sensor images.
+  io::FitsHeader header(const SensorSpec& s, std::size_t index, const eoir_image_info& in, const char* kind_name,
+                        const char* bunit, int samples_per_pixel) const {
+    io::FitsHeader h;
+    h.set_string("DATE-OBS", iso_of(in), "frame time (UTC)");
+    h.set_string("TIMESYS", "UTC", "time scale of DATE-OBS");
+    h.set_double("MJD-OBS", (in.time_jd_utc[0] - 2400000.5) + in.time_jd_utc[1], "frame time, MJD (UTC)");
+    h.set_string("BUNIT", bunit, "unit of the pixel values");
+    h.set_string("INSTRUME", s.name, "EOIR sensor");
+    h.set_string("SENSOR", s.name, "EOIR sensor name");
+    h.set_string("PARENT", s.parent, "object carrying the sensor");
+    h.set_string("SCENARIO", sc_.name, "scenario name");
+    h.set_integer("FRAME", static_cast<long long>(index), "time-step index of this run (0-based)");
+    h.set_string("IMAGTYPE", kind_name, "EOIR image kind");
+    h.set_integer("SAMPPIX", samples_per_pixel, "image samples per sensor pixel along each axis");
+    h.set_double("BORE_RA", in.boresight_ra_deg, "[deg] J2000 RA of the sensor +z (boresight)");
+    h.set_double("BORE_DEC", in.boresight_dec_deg, "[deg] J2000 Dec of the sensor +z (boresight)");
+    h.set_double("UP_RA", in.up_ra_deg, "[deg] J2000 RA of the sensor +y (image up)");
+    h.set_double("UP_DEC", in.up_dec_deg, "[deg] J2000 Dec of the sensor +y (image up)");
+    h.set_double("EXPTIME", number(s.name, "integration_time_ms") / 1000.0, "[s] integration time");
+    h.set_double("BANDLO", number(s.name, "band_low_um"), "[um] band lower edge");
+    h.set_double("BANDHI", number(s.name, "band_high_um"), "[um] band upper edge");
+    // TAN (gnomonic) pointing, written as a CD matrix. Column grows toward
+    // body +x, row toward body -y; the writer flips rows so FITS pixel (1,1)
+    // is the lower left and FITS rows grow toward +y (image up). In the
+    // intermediate coordinates (east, north) at the boresight, one column
+    // step is body +x = y cross z = d1 (cos PA, -sin PA) and one FITS row
+    // step is +y = d2 (sin PA, cos PA), PA being the up vector's position
+    // angle east of north. Samples are uniform on the focal plane (spec
+    // 5.2), i.e. uniform in tan(angle): the TAN pitch is 2 tan(FOV/2) / N.
+    const double hfov = number(s.name, "horizontal_fov_deg"), vfov = number(s.name, "vertical_fov_deg");
+    const double d1 = 2.0 * std::tan(hfov * kDeg / 2.0) / static_cast<double>(in.width) / kDeg;
+    const double d2 = 2.0 * std::tan(vfov * kDeg / 2.0) / static_cast<double>(in.height) / kDeg;
+    const double pa =
+        position_angle_deg(in.boresight_ra_deg, in.boresight_dec_deg, in.up_ra_deg, in.up_dec_deg) * kDeg;
+    h.set_integer("WCSAXES", 2, "number of WCS axes");
+    h.set_string("CTYPE1", "RA---TAN", "gnomonic projection");
+    h.set_string("CTYPE2", "DEC--TAN", "gnomonic projection");
+    h.set_string("CUNIT1", "deg");
+    h.set_string("CUNIT2", "deg");
+    h.set_double("CRVAL1", in.boresight_ra_deg, "[deg] RA at the reference pixel (boresight)");
+    h.set_double("CRVAL2", in.boresight_dec_deg, "[deg] Dec at the reference pixel (boresight)");
+    h.set_double("CRPIX1", (static_cast<double>(in.width) + 1.0) / 2.0, "reference pixel: image centre");
+    h.set_double("CRPIX2", (static_cast<double>(in.height) + 1.0) / 2.0, "reference pixel: image centre");
+    h.set_double("CD1_1", d1 * std::cos(pa));
+    h.set_double("CD1_2", d2 * std::sin(pa));
+    h.set_double("CD2_1", -d1 * std::sin(pa));
+    h.set_double("CD2_2", d2 * std::cos(pa));
+    h.set_string("RADESYS", "ICRS", "J2000 axes of the engine (GCRS ~ ICRS)");
+    h.set_string("ORIGIN", "eoir " EOIR_CLI_VERSION, "eoir run");
+    return h;
+  }
+
+  void write_fits(const std::string& path, const std::vector<double>& v, const eoir_image_info& in,
+                  const io::FitsHeader& h) const {
+    io::FitsWriteOptions o;
+    o.pixel_type = io::FitsPixelType::Float32;
+    io::write_fits_image(path, v.data(), in.width, in.height, h, o);
+  }
+
+ private:
+  Engine& engine_;
+  const Scenario& sc_;
+};
+
+std::string format_duration(double s) {
+  char buf[32];
+  if (!std::isfinite(s) || s < 0) return "?";
+  if (s < 60) std::snprintf(buf, sizeof buf, "%.1f s", s);
+  else if (s < 3600) std::snprintf(buf, sizeof buf, "%dm%02ds", static_cast<int>(s) / 60, static_cast<int>(s) % 60);
+  else std::snprintf(buf, sizeof buf, "%dh%02dm", static_cast<int>(s) / 3600, static_cast<int>(s) / 60 % 60);
+  return buf;
+}
+
+void make_out_dir(const std::string& dir) {
+  if (dir.empty()) throw std::runtime_error("--out: empty directory name");
+  std::error_code ec;
+  const fs::path p(dir);
+  if (fs::exists(p, ec) && !fs::is_directory(p, ec))
+    throw std::runtime_error("--out: '" + dir + "' exists and is not a directory");
+  fs::create_directories(p, ec);
+  if (ec) throw std::runtime_error("--out: cannot create directory '" + dir + "': " + ec.message());
+  if (!fs::is_directory(p, ec)) throw std::runtime_error("--out: '" + dir + "' is not a directory");
+  if (access(dir.c_str(), W_OK | X_OK) != 0)
+    throw std::runtime_error("--out: directory '" + dir + "' is not writable");
+}
+
+void write_text_atomically(const std::string& path, const std::string& text) {
+  try {
+    io::write_file_atomically(path, text.data(), text.size());
+  } catch (const io::ImageIoError& e) {
+    throw std::runtime_error(std::string("cannot write summary: ") + e.what());
+  }
+}
+
+}  // namespace
+
+std::string file_stem(const std::string& name) {
+  std::string out = name;
+  for (char& c : out) {
+    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '.' ||
+                    c == '_' || c == '-';
+    if (!ok) c = '_';
+  }
+  if (out.empty() || out[0] == '.') out.insert(out.begin(), '_');
+  return out;
+}
+
+std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt) {
+  // Which sensors, in scenario order (or the order given).
+  std::vector<const SensorSpec*> sensors;
+  if (opt.sensors.empty()) {
+    for (const SensorSpec& s : sc.sensors) sensors.push_back(&s);
+  } else {
+    for (const std::string& name : opt.sensors) {
+      const SensorSpec* s = sc.find_sensor(name);
+      if (s == nullptr) {
+        std::string known;
+        for (const SensorSpec& k : sc.sensors) known += (known.empty() ? "'" : ", '") + k.name + "'";
+        throw std::runtime_error("--sensor: unknown sensor '" + name + "' in " + opt.scenario_file +
+                                 "; sensors: " + (known.empty() ? "(none)" : known));
+      }
+      if (std::find(sensors.begin(), sensors.end(), s) == sensors.end()) sensors.push_back(s);
+    }
+  }
+  if (sensors.empty()) throw std::runtime_error(opt.scenario_file + ": the scenario has no sensors to render");
+  // Two sensors must not share file names.
+  for (std::size_t i = 0; i < sensors.size(); ++i)
+    for (std::size_t j = i + 1; j < sensors.size(); ++j)
+      if (file_stem(sensors[i]->name) == file_stem(sensors[j]->name))
+        throw std::runtime_error("sensors '" + sensors[i]->name + "' and '" + sensors[j]->name +
+                                 "' would write the same file names ('" + file_stem(sensors[i]->name) + "_...')");
+  if (opt.times.size() > 9999)
+    throw std::runtime_error("run: " + std::to_string(opt.times.size()) +
+                             " time steps; at most 9999 per run (use a larger --step)");
+
+  make_out_dir(opt.out_dir);
+  Session session(engine, sc);
+  RunContext ctx(engine, sc);
+
+  const std::size_t total = opt.times.size() * sensors.size();
+  const auto began = std::chrono::steady_clock::now();
+  const bool tty = isatty(fileno(stderr)) != 0;
+  nlohmann::json frames = nlohmann::json::array();
+  std::size_t done = 0;
+  const fs::path dir(opt.out_dir);
+
+  for (std::size_t i = 0; i < opt.times.size(); ++i) {
+    session.set_time(opt.times[i]);
+    for (const SensorSpec* s : sensors) {
+      const std::string where = "render " + s->name + " at " + format_iso(opt.times[i]);
+      engine.check(engine.api().render(engine.handle(), s->name.c_str()), where);
+
+      char index_text[32];
+      std::snprintf(index_text, sizeof index_text, "%04zu", i);
+      const std::string base = file_stem(s->name) + "_" + index_text + "_";
+      const std::string f_rad = base + "radiance.fits", f_el = base + "electrons.fits",
+                        f_mean = base + "mean_electrons.fits", f_scene = base + "scene.png",
+                        f_sensor = base + "sensor.png";
+
+      const eoir_image_info in_rad = ctx.info(s->name, EOIR_IMAGE_SCENE_RADIANCE, where + ": scene radiance");
+      const eoir_image_info in_el = ctx.info(s->name, EOIR_IMAGE_SENSOR_ELECTRONS, where + ": sensor electrons");
+      const eoir_image_info in_mean = ctx.info(s->name, EOIR_IMAGE_SENSOR_MEAN, where + ": sensor mean");
+      const eoir_image_info in_sd = ctx.info(s->name, EOIR_IMAGE_SCENE_DISPLAY, where + ": scene display");
+      const eoir_image_info in_pd = ctx.info(s->name, EOIR_IMAGE_SENSOR_DISPLAY, where + ": sensor display");
+      const std::vector<double> rad = ctx.values(s->name, EOIR_IMAGE_SCENE_RADIANCE, in_rad, where + ": scene radiance");
+      const std::vector<double> el = ctx.values(s->name, EOIR_IMAGE_SENSOR_ELECTRONS, in_el, where + ": electrons");
+      const std::vector<double> mean = ctx.values(s->name, EOIR_IMAGE_SENSOR_MEAN, in_mean, where + ": mean");
+      const std::vector<std::uint8_t> sd = ctx.bytes(s->name, EOIR_IMAGE_SCENE_DISPLAY, in_sd, where + ": display");
+      const std::vector<std::uint8_t> pd = ctx.bytes(s->name, EOIR_IMAGE_SENSOR_DISPLAY, in_pd, where + ": display");
+
+      try {
+        ctx.write_fits((dir / f_rad).string(), rad, in_rad,
+                       ctx.header(*s, i, in_rad, "scene_radiance", "W/(cm2 sr)", 4));
+        ctx.write_fits((dir / f_el).string(), el, in_el,
+                       ctx.header(*s, i, in_el, "sensor_electrons", "electrons", 1));
+        ctx.write_fits((dir / f_mean).string(), mean, in_mean,
+                       ctx.header(*s, i, in_mean, "sensor_mean", "electrons", 1));
+        io::write_png_gray8((dir / f_scene).string(), sd.data(), in_sd.width, in_sd.height);
+        io::write_png_gray8((dir / f_sensor).string(), pd.data(), in_pd.width, in_pd.height);
+      } catch (const io::ImageIoError& e) {
+        throw std::runtime_error(std::string("cannot write frame ") + index_text + " of " + s->name + ": " +
+                                 e.what());
+      }
+
+      nlohmann::json fr;
+      fr["index"] = i;
+      fr["time"] = ctx.iso_of(in_el);
+      fr["sensor"] = s->name;
+      fr["files"] = {{"radiance", f_rad},   {"electrons", f_el},  {"mean_electrons", f_mean},
+                     {"scene_png", f_scene}, {"sensor_png", f_sensor}};
+      fr["scene_size"] = {{"width", in_rad.width}, {"height", in_rad.height}};
+      fr["sensor_size"] = {{"width", in_el.width}, {"height", in_el.height}};
+      fr["boresight_ra_deg"] = in_el.boresight_ra_deg;
+      fr["boresight_dec_deg"] = in_el.boresight_dec_deg;
+      fr["up_ra_deg"] = in_el.up_ra_deg;
+      fr["up_dec_deg"] = in_el.up_dec_deg;
+      fr["electrons"] = stats_json(stats_of(el));
+      fr["mean_electrons"] = stats_json(stats_of(mean));
+      fr["radiance"] = stats_json(stats_of(rad));
+      frames.push_back(std::move(fr));
+
+      ++done;
+      if (!opt.quiet) {
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+        const double eta = elapsed / static_cast<double>(done) * static_cast<double>(total - done);
+        std::fprintf(stderr, "%seoir run: frame %zu of %zu (%s, %s), elapsed %s, ETA %s%s", tty ? "\r\033[K" : "",
+                     done, total, s->name.c_str(), format_iso(opt.times[i]).c_str(),
+                     format_duration(elapsed).c_str(), format_duration(eta).c_str(), tty ? "" : "\n");
+        std::fflush(stderr);
+      }
+    }
+  }
+  if (!opt.quiet && tty) std::fprintf(stderr, "\n");
+
+  nlohmann::json sensors_json = nlohmann::json::array();
+  for (const SensorSpec* s : sensors) sensors_json.push_back({{"name", s->name}, {"parent", s->parent}});
+  nlohmann::json summary;
+  summary["format"] = "eoir-run-summary";
+  summary["version"] = 1;
+  summary["scenario"] = sc.name;
+  summary["scenario_file"] = opt.scenario_file;
+  summary["start"] = format_iso(opt.times.front());
+  summary["stop"] = format_iso(opt.times.back());
+  summary["time_steps"] = opt.times.size();
+  summary["sensors"] = sensors_json;
+  summary["units"] = {{"radiance", "W/(cm2 sr)"}, {"electrons", "electrons"}};
+  summary["frames"] = frames;
+  write_text_atomically((dir / "summary.json").string(), summary.dump(2) + "\n");
+  if (!opt.quiet)
+    std::fprintf(stderr, "eoir run: wrote %zu frames to %s (summary.json)\n", done, opt.out_dir.c_str());
+  return done;
+}
+
+}  // namespace eoir::cli

@@ -1,0 +1,37 @@
+// `eoir run`: renders every sensor of a scenario over time through the C ABI
+// (eoir_render, eoir_image_info_get, eoir_image_get, eoir_image_get_bytes)
+// and writes FITS and PNG files plus summary.json
+// (schemas/run_summary.schema.json) into an output directory.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "engine.hpp"
+#include "scenario.hpp"
+
+namespace eoir::cli {
+
+struct RunOptions {
+  std::string scenario_file;
+  std::string out_dir;
+  std::vector<double> times;         // seconds since J2000 (UTC-based, see iso_time.hpp)
+  std::vector<std::string> sensors;  // empty: every sensor of the scenario
+  bool quiet = false;
+};
+
+// Per frame (time step i, sensor s), in DIR:
+//   <s>_<i:04d>_radiance.fits        scene radiance, 4x4 samples per pixel, W/(cm2 sr)
+//   <s>_<i:04d>_electrons.fits       sensor response with noise, electrons
+//   <s>_<i:04d>_mean_electrons.fits  noise-free sensor response, electrons
+//   <s>_<i:04d>_scene.png            scene display bytes
+//   <s>_<i:04d>_sensor.png           sensor display bytes
+// then summary.json. File names keep [A-Za-z0-9._-] of the sensor name and
+// replace other characters with '_'.
+// Throws EngineError, ScenarioError or std::runtime_error naming the problem.
+// Returns the number of frames written.
+std::size_t run_frames(Engine& engine, const Scenario& scenario, const RunOptions& options);
+
+// The file-name form of a sensor name.
+std::string file_stem(const std::string& sensor_name);
+
+}  // namespace eoir::cli

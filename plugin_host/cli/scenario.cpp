@@ -1,0 +1,345 @@
+#include "scenario.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "iso_time.hpp"
+
+namespace eoir::cli {
+namespace {
+
+using nlohmann::json;
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+[[noreturn]] void fail(const std::string& path, const std::string& why) { throw ScenarioError(path + ": " + why); }
+
+const char* type_name(const json& j) { return j.type_name(); }
+
+void only_keys(const json& obj, const std::string& path, std::initializer_list<const char*> allowed) {
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    bool ok = false;
+    for (const char* a : allowed) ok = ok || it.key() == a;
+    if (!ok) fail(path + "." + it.key(), "unknown field");
+  }
+}
+
+const json& need(const json& obj, const std::string& path, const char* key) {
+  auto it = obj.find(key);
+  if (it == obj.end()) fail(path, std::string("missing required field '") + key + "'");
+  return *it;
+}
+
+const json& need_object(const json& j, const std::string& path) {
+  if (!j.is_object()) fail(path, std::string("must be an object, not ") + type_name(j));
+  return j;
+}
+
+double get_number(const json& obj, const std::string& path, const char* key) {
+  const json& j = need(obj, path, key);
+  if (!j.is_number()) fail(path + "." + key, std::string("must be a number, not ") + type_name(j));
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) fail(path + "." + key, "must be finite");
+  return v;
+}
+
+double get_number_or(const json& obj, const std::string& path, const char* key, double fallback) {
+  return obj.contains(key) ? get_number(obj, path, key) : fallback;
+}
+
+std::string get_string(const json& obj, const std::string& path, const char* key) {
+  const json& j = need(obj, path, key);
+  if (!j.is_string()) fail(path + "." + key, std::string("must be a string, not ") + type_name(j));
+  return j.get<std::string>();
+}
+
+double get_time(const json& obj, const std::string& path, const char* key) {
+  const std::string s = get_string(obj, path, key);
+  try {
+    return parse_iso(s);
+  } catch (const std::invalid_argument& e) {
+    fail(path + "." + key, e.what());
+  }
+}
+
+Vec3 get_vec3(const json& obj, const std::string& path, const char* key) {
+  const json& j = need(obj, path, key);
+  if (!j.is_array() || j.size() != 3) fail(path + "." + key, "must be an array of 3 numbers");
+  Vec3 v{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (!j[i].is_number()) fail(path + "." + key + "[" + std::to_string(i) + "]", "must be a number");
+    v[i] = j[i].get<double>();
+  }
+  return v;
+}
+
+void check_name(const std::string& name, const std::string& path) {
+  if (name.empty() || name.size() > 63) fail(path, "names are 1 to 63 bytes");
+}
+
+Attitude parse_attitude(const json& j, const std::string& path) {
+  need_object(j, path);
+  Attitude a;
+  const std::string type = get_string(j, path, "type");
+  if (type == "fixed_inertial") {
+    only_keys(j, path, {"type", "quaternion"});
+    const json& q = need(j, path, "quaternion");
+    if (!q.is_array() || q.size() != 4) fail(path + ".quaternion", "must be [w, x, y, z]");
+    for (std::size_t i = 0; i < 4; ++i) {
+      if (!q[i].is_number()) fail(path + ".quaternion[" + std::to_string(i) + "]", "must be a number");
+      a.quaternion[i] = q[i].get<double>();
+    }
+    try {
+      a.quaternion = normalize(a.quaternion);
+    } catch (const std::domain_error&) {
+      fail(path + ".quaternion", "must be a non-zero quaternion");
+    }
+    a.type = Attitude::Type::fixed_inertial;
+  } else if (type == "nadir") {
+    only_keys(j, path, {"type"});
+    a.type = Attitude::Type::nadir;
+  } else if (type == "target") {
+    only_keys(j, path, {"type", "target"});
+    a.target = get_string(j, path, "target");
+    a.type = Attitude::Type::target;
+  } else {
+    fail(path + ".type", "'" + type + "' is not one of fixed_inertial, nadir, target");
+  }
+  return a;
+}
+
+Motion parse_motion(const json& j, const std::string& path) {
+  need_object(j, path);
+  Motion m;
+  const std::string type = get_string(j, path, "type");
+  if (type == "fixed_geodetic") {
+    only_keys(j, path, {"type", "lat_deg", "lon_deg", "alt_m"});
+    m.kind = Motion::Kind::fixed_geodetic;
+    m.lat_deg = get_number(j, path, "lat_deg");
+    m.lon_deg = get_number(j, path, "lon_deg");
+    m.alt_m = get_number_or(j, path, "alt_m", 0.0);
+    if (std::fabs(m.lat_deg) > 90) fail(path + ".lat_deg", "must be in [-90, 90]");
+  } else if (type == "kepler") {
+    only_keys(j, path, {"type", "central_body", "semi_major_axis_km", "eccentricity", "inclination_deg", "raan_deg",
+                        "arg_perigee_deg", "true_anomaly_deg", "mean_anomaly_deg", "epoch"});
+    if (j.contains("central_body") && get_string(j, path, "central_body") != "Earth")
+      fail(path + ".central_body", "only \"Earth\" is supported");
+    KeplerElements el;
+    el.semi_major_axis_m = get_number(j, path, "semi_major_axis_km") * 1e3;
+    el.eccentricity = get_number_or(j, path, "eccentricity", 0.0);
+    el.inclination = get_number_or(j, path, "inclination_deg", 0.0) * kDeg;
+    el.raan = get_number_or(j, path, "raan_deg", 0.0) * kDeg;
+    el.arg_perigee = get_number_or(j, path, "arg_perigee_deg", 0.0) * kDeg;
+    if (!(el.semi_major_axis_m > 0)) fail(path + ".semi_major_axis_km", "must be positive");
+    if (!(el.eccentricity >= 0 && el.eccentricity < 1)) fail(path + ".eccentricity", "must be in [0, 1)");
+    const bool has_true = j.contains("true_anomaly_deg"), has_mean = j.contains("mean_anomaly_deg");
+    if (has_true && has_mean) fail(path, "give true_anomaly_deg or mean_anomaly_deg, not both");
+    if (has_mean)
+      el.mean_anomaly_at_epoch = get_number(j, path, "mean_anomaly_deg") * kDeg;
+    else
+      el.mean_anomaly_at_epoch =
+          true_to_mean_anomaly(get_number_or(j, path, "true_anomaly_deg", 0.0) * kDeg, el.eccentricity);
+    el.epoch_s = get_time(j, path, "epoch");
+    try {
+      m.kepler = std::make_shared<KeplerOrbit>(el);
+    } catch (const std::invalid_argument& e) {
+      fail(path, e.what());
+    }
+    m.kind = Motion::Kind::kepler;
+  } else if (type == "ephemeris") {
+    only_keys(j, path, {"type", "frame", "points"});
+    const std::string frame = get_string(j, path, "frame");
+    if (frame != "j2000" && frame != "earth_fixed") fail(path + ".frame", "must be \"j2000\" or \"earth_fixed\"");
+    m.earth_fixed = frame == "earth_fixed";
+    const json& pts = need(j, path, "points");
+    if (!pts.is_array()) fail(path + ".points", "must be an array");
+    std::vector<EphemerisPoint> points;
+    bool with_velocity = true;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const std::string p = path + ".points[" + std::to_string(i) + "]";
+      need_object(pts[i], p);
+      only_keys(pts[i], p, {"time", "position_m", "velocity_m_s"});
+      EphemerisPoint e;
+      e.t_s = get_time(pts[i], p, "time");
+      e.position = get_vec3(pts[i], p, "position_m");
+      const bool v = pts[i].contains("velocity_m_s");
+      if (i > 0 && v != with_velocity) fail(p, "give velocity_m_s at every point or at none");
+      with_velocity = v;
+      if (v) e.velocity = get_vec3(pts[i], p, "velocity_m_s");
+      points.push_back(e);
+    }
+    try {
+      m.ephemeris = std::make_shared<Ephemeris>(std::move(points), with_velocity);
+    } catch (const std::invalid_argument& e) {
+      fail(path, e.what());
+    }
+    m.kind = Motion::Kind::ephemeris;
+  } else {
+    fail(path + ".type", "'" + type + "' is not one of fixed_geodetic, kepler, ephemeris");
+  }
+  return m;
+}
+
+}  // namespace
+
+const ObjectSpec* Scenario::find_object(const std::string& n) const {
+  for (const auto& o : objects)
+    if (o.name == n) return &o;
+  return nullptr;
+}
+
+const SensorSpec* Scenario::find_sensor(const std::string& n) const {
+  for (const auto& s : sensors)
+    if (s.name == n) return &s;
+  return nullptr;
+}
+
+Scenario parse_scenario(const json& doc, const std::string& file) {
+  Scenario sc;
+  sc.file = file;
+  const std::string root = "scenario";
+  if (!doc.is_object()) fail(root, "must be a JSON object");
+  only_keys(doc, "", {"$schema", "format", "version", "name", "description", "start", "stop", "step_s",
+                      "central_bodies", "stars", "objects", "sensors"});
+  if (get_string(doc, root, "format") != "eoir-scenario") fail("format", "must be \"eoir-scenario\"");
+  const json& version = need(doc, root, "version");
+  if (!version.is_number_integer()) fail("version", "must be an integer");
+  if (version.get<long long>() > 1)
+    fail("version", "written by a newer format version (" + version.dump() + "); this program reads version 1");
+  if (version.get<long long>() < 1) fail("version", "must be 1");
+  sc.name = get_string(doc, root, "name");
+  if (doc.contains("description")) sc.description = get_string(doc, root, "description");
+  try {
+    sc.start_s = parse_iso(get_string(doc, root, "start"));
+  } catch (const std::invalid_argument& e) {
+    fail("start", e.what());
+  }
+  try {
+    sc.stop_s = doc.contains("stop") ? parse_iso(get_string(doc, root, "stop")) : sc.start_s;
+  } catch (const std::invalid_argument& e) {
+    fail("stop", e.what());
+  }
+  if (sc.stop_s < sc.start_s) fail("stop", "is before start");
+  sc.step_s = get_number_or(doc, root, "step_s", 60.0);
+  if (!(sc.step_s > 0)) fail("step_s", "must be positive");
+
+  static const std::set<std::string> bodies{"Sun",     "Mercury", "Venus",  "Earth",   "Mars",
+                                            "Jupiter", "Saturn",  "Uranus", "Neptune", "Moon"};
+  std::set<std::string> names{"Sun"};
+  if (doc.contains("central_bodies")) {
+    const json& cb = doc["central_bodies"];
+    if (!cb.is_array()) fail("central_bodies", "must be an array of names or {\"name\", \"properties\"} objects");
+    for (std::size_t i = 0; i < cb.size(); ++i) {
+      const std::string p = "central_bodies[" + std::to_string(i) + "]";
+      const json* name = &cb[i];
+      if (cb[i].is_object()) {
+        only_keys(cb[i], p, {"name", "properties"});
+        name = &need(cb[i], p, "name");
+        if (cb[i].contains("properties")) {
+          if (!cb[i]["properties"].is_object()) fail(p + ".properties", "must be an object");
+        }
+      }
+      const std::string np = cb[i].is_object() ? p + ".name" : p;
+      if (!name->is_string() || !bodies.count(name->get<std::string>()))
+        fail(np, "must be one of Sun, Mercury, Venus, Earth, Mars, Jupiter, Saturn, Uranus, Neptune, Moon");
+      const std::string b = name->get<std::string>();
+      if (b != "Sun" && !names.insert(b).second) fail(np, "'" + b + "' is listed twice");
+      if (b != "Sun") sc.central_bodies.push_back(b);
+      if (cb[i].is_object() && cb[i].contains("properties"))
+        sc.body_properties.push_back({b, cb[i]["properties"], p});
+    }
+  }
+  if (doc.contains("stars")) {
+    if (!doc["stars"].is_boolean()) fail("stars", "must be true or false");
+    sc.stars = doc["stars"].get<bool>();
+    if (sc.stars) names.insert("Stars");
+  }
+
+  if (doc.contains("objects")) {
+    const json& objs = doc["objects"];
+    if (!objs.is_array()) fail("objects", "must be an array");
+    for (std::size_t i = 0; i < objs.size(); ++i) {
+      ObjectSpec o;
+      o.path = "objects[" + std::to_string(i) + "]";
+      need_object(objs[i], o.path);
+      only_keys(objs[i], o.path, {"name", "kind", "motion", "attitude", "properties"});
+      o.name = get_string(objs[i], o.path, "name");
+      check_name(o.name, o.path + ".name");
+      if (!names.insert(o.name).second) fail(o.path + ".name", "an object named '" + o.name + "' exists already");
+      o.kind = get_string(objs[i], o.path, "kind");
+      if (o.kind != "satellite" && o.kind != "aircraft" && o.kind != "ground_vehicle" && o.kind != "missile")
+        fail(o.path + ".kind", "'" + o.kind + "' is not one of satellite, aircraft, ground_vehicle, missile");
+      o.motion = parse_motion(need(objs[i], o.path, "motion"), o.path + ".motion");
+      if (objs[i].contains("attitude")) o.attitude = parse_attitude(objs[i]["attitude"], o.path + ".attitude");
+      if (objs[i].contains("properties")) o.properties = need_object(objs[i]["properties"], o.path + ".properties");
+      sc.objects.push_back(std::move(o));
+    }
+  }
+  if (doc.contains("sensors")) {
+    const json& sens = doc["sensors"];
+    if (!sens.is_array()) fail("sensors", "must be an array");
+    for (std::size_t i = 0; i < sens.size(); ++i) {
+      SensorSpec s;
+      s.path = "sensors[" + std::to_string(i) + "]";
+      need_object(sens[i], s.path);
+      only_keys(sens[i], s.path, {"name", "parent", "pointing", "parameters"});
+      s.name = get_string(sens[i], s.path, "name");
+      check_name(s.name, s.path + ".name");
+      if (!names.insert(s.name).second) fail(s.path + ".name", "an object named '" + s.name + "' exists already");
+      s.parent = get_string(sens[i], s.path, "parent");
+      if (!sc.find_object(s.parent) && !std::count(sc.central_bodies.begin(), sc.central_bodies.end(), s.parent) &&
+          s.parent != "Sun")
+        fail(s.path + ".parent", "unknown object '" + s.parent + "'");
+      if (sens[i].contains("pointing")) s.pointing = parse_attitude(sens[i]["pointing"], s.path + ".pointing");
+      if (sens[i].contains("parameters"))
+        s.parameters = need_object(sens[i]["parameters"], s.path + ".parameters");
+      sc.sensors.push_back(std::move(s));
+    }
+  }
+  // Attitude targets must name something in the scenario.
+  const auto check_target = [&](const Attitude& a, const std::string& path, const std::string& self) {
+    if (a.type != Attitude::Type::target) return;
+    if (!names.count(a.target)) fail(path + ".target", "unknown object '" + a.target + "'");
+    if (a.target == self) fail(path + ".target", "an object cannot point at itself");
+  };
+  for (const auto& o : sc.objects) check_target(o.attitude, o.path + ".attitude", o.name);
+  for (const auto& s : sc.sensors) check_target(s.pointing, s.path + ".pointing", s.parent);
+  return sc;
+}
+
+Scenario load_scenario(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw ScenarioError(file + ": cannot open the scenario file");
+  json doc;
+  try {
+    doc = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw ScenarioError(file + ": not valid JSON: " + e.what());
+  }
+  try {
+    return parse_scenario(doc, file);
+  } catch (const ScenarioError& e) {
+    throw ScenarioError(file + ": " + e.what());
+  }
+}
+
+PosVel motion_state(const ObjectSpec& o, double t) {
+  const Motion& m = o.motion;
+  switch (m.kind) {
+    case Motion::Kind::fixed_geodetic:
+      return PosVel{{m.lat_deg, m.lon_deg, m.alt_m}, {0, 0, 0}};
+    case Motion::Kind::kepler:
+      return m.kepler->at(t);
+    case Motion::Kind::ephemeris:
+      try {
+        return m.ephemeris->at(t);
+      } catch (const std::out_of_range& e) {
+        throw ScenarioError(o.path + ".motion: " + e.what());
+      }
+  }
+  throw ScenarioError(o.path + ".motion: unknown kind");
+}
+
+}  // namespace eoir::cli

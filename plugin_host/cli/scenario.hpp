@@ -1,0 +1,89 @@
+// The scenario file of the eoir CLI (schemas/scenario.schema.json): parsed
+// and checked here, with errors that name the JSON path of the bad field,
+// e.g. "objects[2].motion.eccentricity: must be in [0, 1)".
+#pragma once
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "motion.hpp"
+
+namespace eoir::cli {
+
+// A problem in the scenario (bad field, or a motion evaluated out of range).
+// what() is "PATH: message".
+class ScenarioError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Attitude {
+  enum class Type { none, fixed_inertial, nadir, target };
+  Type type = Type::none;
+  Quat quaternion{1, 0, 0, 0};  // body -> J2000 (fixed_inertial)
+  std::string target;           // object name (target)
+};
+
+// Where the host pushes an object's state from.
+struct Motion {
+  enum class Kind { fixed_geodetic, kepler, ephemeris };
+  Kind kind = Kind::fixed_geodetic;
+  double lat_deg = 0, lon_deg = 0, alt_m = 0;  // fixed_geodetic
+  std::shared_ptr<const KeplerOrbit> kepler;   // kepler (J2000)
+  std::shared_ptr<const Ephemeris> ephemeris;  // ephemeris
+  bool earth_fixed = false;                    // ephemeris frame
+};
+
+struct ObjectSpec {
+  std::string name;
+  std::string kind;  // satellite, aircraft, ground_vehicle, missile
+  Motion motion;
+  Attitude attitude;
+  nlohmann::json properties = nlohmann::json::object();
+  std::string path;  // "objects[i]"
+};
+
+struct SensorSpec {
+  std::string name, parent;
+  Attitude pointing;
+  nlohmann::json parameters = nlohmann::json::object();
+  std::string path;  // "sensors[i]"
+};
+
+// Properties of a central body (central_bodies[i] given as an object).
+struct BodyProperties {
+  std::string name;
+  nlohmann::json properties = nlohmann::json::object();
+  std::string path;  // "central_bodies[i]"
+};
+
+struct Scenario {
+  std::string file;
+  std::string name, description;
+  double start_s = 0, stop_s = 0, step_s = 60;
+  std::vector<std::string> central_bodies;   // added in this order (never the Sun, always present)
+  std::vector<BodyProperties> body_properties;  // applied after the bodies are added (may name the Sun)
+  bool stars = false;
+  std::vector<ObjectSpec> objects;
+  std::vector<SensorSpec> sensors;
+
+  const ObjectSpec* find_object(const std::string& name) const;
+  const SensorSpec* find_sensor(const std::string& name) const;
+};
+
+// Reads and checks a scenario file. Throws ScenarioError ("FILE: PATH: why").
+Scenario load_scenario(const std::string& file);
+// Checks a parsed JSON document (file is used in messages only).
+Scenario parse_scenario(const nlohmann::json& doc, const std::string& file);
+
+// The object's position and velocity at t in its own frame (J2000 for kepler
+// and j2000 ephemerides, Earth-fixed for earth_fixed ephemerides, geodetic
+// {lat, lon, height} for fixed_geodetic). Throws ScenarioError naming
+// "objects[i].motion" (e.g. a time outside the ephemeris).
+PosVel motion_state(const ObjectSpec& object, double t_s);
+
+}  // namespace eoir::cli

@@ -1,0 +1,188 @@
+#include "session.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "iso_time.hpp"
+
+namespace eoir::cli {
+namespace {
+
+int32_t kind_code(const std::string& kind) {
+  if (kind == "satellite") return EOIR_KIND_SATELLITE;
+  if (kind == "aircraft") return EOIR_KIND_AIRCRAFT;
+  if (kind == "ground_vehicle") return EOIR_KIND_GROUND_VEHICLE;
+  return EOIR_KIND_MISSILE;
+}
+
+bool natural_j2000(const ObjectSpec& o) {
+  return o.motion.kind == Motion::Kind::kepler || (o.motion.kind == Motion::Kind::ephemeris && !o.motion.earth_fixed);
+}
+
+int32_t natural_frame(const ObjectSpec& o) {
+  if (o.motion.kind == Motion::Kind::fixed_geodetic) return EOIR_FRAME_GEODETIC;
+  return natural_j2000(o) ? EOIR_FRAME_J2000 : EOIR_FRAME_EARTH_FIXED;
+}
+
+}  // namespace
+
+Session::Session(Engine& engine, const Scenario& sc) : engine_(engine), scenario_(sc) {
+  const eoir_api_v1& api = engine_.api();
+  const eoir_engine e = engine_.handle();
+  for (std::size_t i = 0; i < sc.central_bodies.size(); ++i)
+    engine_.check(api.object_add(e, EOIR_KIND_CENTRAL_BODY, sc.central_bodies[i].c_str()),
+                  "central_bodies[" + std::to_string(i) + "]");
+  for (const auto& b : sc.body_properties) apply_properties(b.name, b.properties, b.path + ".properties");
+  if (sc.stars) engine_.check(api.object_add(e, EOIR_KIND_STAR_FIELD, "Stars"), "stars");
+  for (const auto& o : sc.objects) {
+    engine_.check(api.object_add(e, kind_code(o.kind), o.name.c_str()), o.path + ".name");
+    apply_properties(o.name, o.properties, o.path + ".properties");
+  }
+  for (const auto& s : sc.sensors) {
+    engine_.check(api.sensor_add(e, s.name.c_str(), s.parent.c_str()), s.path);
+    apply_properties(s.name, s.parameters, s.path + ".parameters");
+  }
+}
+
+void Session::apply_properties(const std::string& object, const nlohmann::json& props, const std::string& path) {
+  const eoir_api_v1& api = engine_.api();
+  const eoir_engine e = engine_.handle();
+  // The declared types, to tell integers from numbers.
+  std::map<std::string, int32_t> types;
+  for (std::size_t i = 0; i < 4096; ++i) {
+    eoir_property_info info{};
+    info.struct_size = sizeof info;
+    if (api.property_info_at(e, object.c_str(), i, &info) != EOIR_OK) break;
+    if (info.name) types[info.name] = info.type;
+  }
+  for (auto it = props.begin(); it != props.end(); ++it) {
+    const std::string& key = it.key();
+    const std::string where = path + "." + key;
+    const nlohmann::json& v = it.value();
+    const auto t = types.find(key);
+    const int32_t declared = t == types.end() ? 0 : t->second;
+    eoir_status s;
+    if (v.is_boolean()) {
+      s = api.set_bool(e, object.c_str(), key.c_str(), v.get<bool>() ? 1 : 0);
+    } else if (v.is_number()) {
+      const double x = v.get<double>();
+      if (declared == EOIR_TYPE_INTEGER) {
+        if (!(std::isfinite(x) && x == std::floor(x) && std::fabs(x) < 9.0e15))
+          throw EngineError(where + ": must be an integer, not " + v.dump(), EOIR_ERR_TYPE_MISMATCH);
+        s = api.set_integer(e, object.c_str(), key.c_str(), static_cast<int64_t>(x));
+      } else {
+        s = api.set_number(e, object.c_str(), key.c_str(), x);
+      }
+    } else if (v.is_string()) {
+      s = api.set_string(e, object.c_str(), key.c_str(), v.get<std::string>().c_str());
+    } else if (v.is_array()) {
+      // A flat array of numbers; nested arrays (pairs) are flattened in order.
+      std::vector<double> values;
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const auto add_number = [&](const nlohmann::json& x, const std::string& p) {
+          if (!x.is_number()) throw EngineError(p + ": must be a number, not " + x.dump(), EOIR_ERR_TYPE_MISMATCH);
+          values.push_back(x.get<double>());
+        };
+        const std::string p = where + "[" + std::to_string(i) + "]";
+        if (v[i].is_array())
+          for (std::size_t k = 0; k < v[i].size(); ++k) add_number(v[i][k], p + "[" + std::to_string(k) + "]");
+        else
+          add_number(v[i], p);
+      }
+      s = api.set_array(e, object.c_str(), key.c_str(), values.data(), values.size());
+    } else {
+      throw EngineError(where + ": unsupported value type " + std::string(v.type_name()) +
+                            " (use a number, string, bool or array of numbers)",
+                        EOIR_ERR_TYPE_MISMATCH);
+    }
+    engine_.check(s, where);
+  }
+}
+
+void Session::push(const std::string& name, int32_t frame, const PosVel& st, const Quat& q, const std::string& where) {
+  eoir_state s{};
+  s.struct_size = sizeof s;
+  s.frame = frame;
+  for (int k = 0; k < 3; ++k) {
+    s.position[k] = st.position[k];
+    s.velocity[k] = st.velocity[k];
+  }
+  for (int k = 0; k < 4; ++k) s.attitude[k] = q[k];
+  engine_.check(engine_.api().object_set_state(engine_.handle(), name.c_str(), nullptr, &s), where);
+}
+
+PosVel Session::j2000_state(const std::string& name, const std::string& where) {
+  const auto it = host_j2000_.find(name);
+  if (it != host_j2000_.end()) return it->second;
+  eoir_state s{};
+  s.struct_size = sizeof s;
+  s.frame = EOIR_FRAME_J2000;
+  engine_.check(engine_.api().object_get_state(engine_.handle(), name.c_str(), &s), where);
+  PosVel out;
+  for (int k = 0; k < 3; ++k) {
+    out.position[k] = s.position[k];
+    out.velocity[k] = s.velocity[k];
+  }
+  host_j2000_[name] = out;
+  return out;
+}
+
+Quat Session::attitude_j2000(const Attitude& a, const PosVel& self, const std::string& where) {
+  try {
+    switch (a.type) {
+      case Attitude::Type::none:
+        return {1, 0, 0, 0};
+      case Attitude::Type::fixed_inertial:
+        return a.quaternion;
+      case Attitude::Type::nadir:
+        return nadir_attitude(self);
+      case Attitude::Type::target: {
+        const PosVel target = j2000_state(a.target, where + ".target");
+        return point_z_axis(sub(target.position, self.position), self.velocity);
+      }
+    }
+  } catch (const std::domain_error& e) {
+    throw ScenarioError(where + ": " + e.what() + " at " + format_iso(t_s_));
+  }
+  return {1, 0, 0, 0};
+}
+
+void Session::set_time(double t) {
+  t_s_ = t;
+  const eoir_api_v1& api = engine_.api();
+  const std::string iso = format_iso(t);
+  eoir_time time{};
+  engine_.check(api.time_from_iso(iso.c_str(), &time), "time " + iso);
+  engine_.check(api.engine_set_time(engine_.handle(), &time), "time " + iso);
+  host_j2000_.clear();
+
+  // 1. Positions. Objects moving in J2000 get their final attitude now unless
+  //    it depends on another object; the others are revisited in step 2.
+  std::vector<const ObjectSpec*> later;
+  for (const auto& o : scenario_.objects) {
+    const PosVel st = motion_state(o, t);
+    const bool j2000 = natural_j2000(o);
+    if (j2000) host_j2000_[o.name] = st;
+    const bool final_now = o.attitude.type == Attitude::Type::none ||
+                           (j2000 && o.attitude.type != Attitude::Type::target);
+    const Quat q = final_now && j2000 ? attitude_j2000(o.attitude, st, o.path + ".attitude") : Quat{1, 0, 0, 0};
+    push(o.name, natural_frame(o), st, q, o.path + ".motion");
+    if (!final_now) later.push_back(&o);
+  }
+  // 2. Attitudes that need other objects' positions or a frame change: the
+  //    state is re-pushed in J2000 (position from the engine if need be).
+  for (const ObjectSpec* o : later) {
+    const PosVel self = j2000_state(o->name, o->path + ".motion");
+    push(o->name, EOIR_FRAME_J2000, self, attitude_j2000(o->attitude, self, o->path + ".attitude"),
+         o->path + ".attitude");
+  }
+  // 3. Sensor pointing (position is the parent's; the engine ignores it).
+  for (const auto& s : scenario_.sensors) {
+    if (s.pointing.type == Attitude::Type::none) continue;
+    const PosVel parent = j2000_state(s.parent, s.path + ".parent");
+    push(s.name, EOIR_FRAME_J2000, parent, attitude_j2000(s.pointing, parent, s.path + ".pointing"),
+         s.path + ".pointing");
+  }
+}
+
+}  // namespace eoir::cli

@@ -1,0 +1,254 @@
+#include "fits_writer.hpp"
+
+#include <fitsio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+
+namespace eoir::imageio {
+
+namespace {
+
+std::string upper(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+bool reserved_key(const std::string& key) {
+  static const char* const kReserved[] = {"SIMPLE",   "BITPIX",  "EXTEND",  "BSCALE",  "BZERO",  "END",
+                                          "CHECKSUM", "DATASUM", "COMMENT", "HISTORY", "PCOUNT", "GCOUNT"};
+  for (const char* r : kReserved)
+    if (key == r) return true;
+  return key.rfind("NAXIS", 0) == 0;
+}
+
+// cfitsio status -> exception with its message stack.
+[[noreturn]] void throw_fits(int status, const std::string& what) {
+  char text[FLEN_STATUS] = {0};
+  fits_get_errstatus(status, text);
+  std::string msg = what + ": cfitsio error " + std::to_string(status) + " (" + text + ")";
+  char line[FLEN_ERRMSG] = {0};
+  while (fits_read_errmsg(line)) msg += std::string("; ") + line;
+  throw ImageIoError(msg);
+}
+
+// Fewest significant digits (15..17) whose %G text reads back exactly, so
+// 0.0125 is written as 0.0125 and every double round-trips.
+int shortest_digits(double v) {
+  for (int d = 15; d < 17; ++d) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.*G", d, v);
+    if (std::strtod(buf, nullptr) == v) return d;
+  }
+  return 17;
+}
+
+// Owns the in-memory FITS file; closes it on every path.
+struct MemFits {
+  fitsfile* f = nullptr;
+  void* buffer = nullptr;
+  size_t size = 0;
+  ~MemFits() {
+    if (f != nullptr) {
+      int st = 0;
+      fits_close_file(f, &st);
+    }
+    std::free(buffer);
+  }
+};
+
+template <typename In>
+void write_image(const std::string& path, const In* pixels, std::int64_t width, std::int64_t height,
+                 const FitsHeader& header, const FitsWriteOptions& options) {
+  if (pixels == nullptr) throw ImageIoError("FITS " + path + ": pixel buffer is null");
+  if (width < 1 || height < 1)
+    throw ImageIoError("FITS " + path + ": image size " + std::to_string(width) + " x " + std::to_string(height) +
+                       " must be at least 1 x 1");
+  const bool f64 = options.pixel_type == FitsPixelType::Float64;
+
+  MemFits m;
+  m.size = 2880 * 4;
+  m.buffer = std::malloc(m.size);
+  if (m.buffer == nullptr) throw ImageIoError("FITS " + path + ": out of memory");
+  int st = 0;
+  fits_create_memfile(&m.f, &m.buffer, &m.size, 2880 * 16, std::realloc, &st);
+  if (st) throw_fits(st, "FITS " + path + ": create in memory");
+
+  LONGLONG naxes[2] = {width, height};
+  fits_create_imgll(m.f, f64 ? DOUBLE_IMG : FLOAT_IMG, 2, naxes, &st);
+  if (st) throw_fits(st, "FITS " + path + ": create image");
+
+  for (const auto& c : header.cards()) {
+    char* key = const_cast<char*>(c.key.c_str());
+    char* com = c.comment.empty() ? nullptr : const_cast<char*>(c.comment.c_str());
+    switch (c.kind) {
+      case FitsCard::Kind::String:
+        if (c.text.size() > 68) fits_write_key_longwarn(m.f, &st);
+        fits_write_key_longstr(m.f, key, c.text.c_str(), com, &st);
+        break;
+      case FitsCard::Kind::Double:
+        fits_write_key_dbl(m.f, key, c.number, -shortest_digits(c.number), com, &st);
+        break;
+      case FitsCard::Kind::Integer:
+        fits_write_key_lng(m.f, key, c.integer, com, &st);
+        break;
+      case FitsCard::Kind::Logical:
+        fits_write_key_log(m.f, key, c.logical ? 1 : 0, com, &st);
+        break;
+      case FitsCard::Kind::Comment:
+        fits_write_comment(m.f, c.text.c_str(), &st);
+        break;
+      case FitsCard::Kind::History:
+        fits_write_history(m.f, c.text.c_str(), &st);
+        break;
+    }
+    if (st) throw_fits(st, "FITS " + path + ": header card " + c.key);
+  }
+
+  // Rows bottom-up: FITS row j (1-based) = caller row height - j.
+  const auto w = static_cast<std::size_t>(width);
+  std::vector<float> row32(f64 ? 0 : w);
+  std::vector<double> row64(f64 ? w : 0);
+  for (std::int64_t j = 1; j <= height; ++j) {
+    const In* src = pixels + static_cast<std::size_t>(height - j) * w;
+    LONGLONG first[2] = {1, j};
+    if (f64) {
+      for (std::size_t i = 0; i < w; ++i) row64[i] = static_cast<double>(src[i]);
+      fits_write_pixll(m.f, TDOUBLE, first, static_cast<LONGLONG>(w), row64.data(), &st);
+    } else {
+      for (std::size_t i = 0; i < w; ++i) row32[i] = static_cast<float>(src[i]);
+      fits_write_pixll(m.f, TFLOAT, first, static_cast<LONGLONG>(w), row32.data(), &st);
+    }
+    if (st) throw_fits(st, "FITS " + path + ": write pixels");
+  }
+  if (options.checksum) {
+    // Placeholder cards with fixed comments first: cfitsio then updates the
+    // values and keeps the comments, instead of stamping the current time
+    // into them, so identical inputs give byte-identical files.
+    fits_write_key_str(m.f, "CHECKSUM", "0000000000000000", "HDU checksum (FITS 4.0 standard)", &st);
+    fits_write_key_str(m.f, "DATASUM", "0", "data unit checksum", &st);
+    unsigned long datasum = 0, hdusum = 0;
+    fits_get_chksum(m.f, &datasum, &hdusum, &st);
+    const std::string datasum_text = std::to_string(datasum);
+    fits_update_key_str(m.f, "DATASUM", datasum_text.c_str(), "data unit checksum", &st);
+    fits_write_chksum(m.f, &st);
+  }
+  fits_flush_file(m.f, &st);
+  LONGLONG head = 0, data = 0, end = 0;
+  fits_get_hduaddrll(m.f, &head, &data, &end, &st);
+  if (st) throw_fits(st, "FITS " + path + ": finish");
+  fits_close_file(m.f, &st);
+  m.f = nullptr;
+  if (st) throw_fits(st, "FITS " + path + ": close");
+  // The memory driver reports its allocation; the file is the HDU's extent
+  // (a multiple of 2880 bytes).
+  const auto file_size = static_cast<std::size_t>(end);
+  if (file_size == 0 || file_size % 2880 != 0 || file_size > m.size)
+    throw ImageIoError("FITS " + path + ": unexpected in-memory file size " + std::to_string(file_size));
+  write_file_atomically(path, m.buffer, file_size);
+}
+
+}  // namespace
+
+FitsHeader& FitsHeader::append(FitsCard card) {
+  if (card.kind != FitsCard::Kind::Comment && card.kind != FitsCard::Kind::History) {
+    card.key = upper(card.key);
+    if (card.key.empty()) throw ImageIoError("FITS header: empty keyword");
+    if (reserved_key(card.key)) throw ImageIoError("FITS header: keyword " + card.key + " is set by the writer");
+    for (char ch : card.key) {
+      if (ch < 32 || ch > 126 || ch == '=')
+        throw ImageIoError("FITS header: keyword '" + card.key + "' has an invalid character");
+    }
+  }
+  cards_.push_back(std::move(card));
+  return *this;
+}
+
+FitsHeader& FitsHeader::set_string(const std::string& key, const std::string& value, const std::string& comment) {
+  FitsCard c;
+  c.kind = FitsCard::Kind::String;
+  c.key = key;
+  c.text = value;
+  c.comment = comment;
+  return append(std::move(c));
+}
+
+FitsHeader& FitsHeader::set_double(const std::string& key, double value, const std::string& comment) {
+  if (!std::isfinite(value)) throw ImageIoError("FITS header: keyword " + upper(key) + " value is not finite");
+  FitsCard c;
+  c.kind = FitsCard::Kind::Double;
+  c.key = key;
+  c.number = value;
+  c.comment = comment;
+  return append(std::move(c));
+}
+
+FitsHeader& FitsHeader::set_integer(const std::string& key, long long value, const std::string& comment) {
+  FitsCard c;
+  c.kind = FitsCard::Kind::Integer;
+  c.key = key;
+  c.integer = value;
+  c.comment = comment;
+  return append(std::move(c));
+}
+
+FitsHeader& FitsHeader::set_logical(const std::string& key, bool value, const std::string& comment) {
+  FitsCard c;
+  c.kind = FitsCard::Kind::Logical;
+  c.key = key;
+  c.logical = value;
+  c.comment = comment;
+  return append(std::move(c));
+}
+
+FitsHeader& FitsHeader::add_comment(const std::string& text) {
+  FitsCard c;
+  c.kind = FitsCard::Kind::Comment;
+  c.key = "COMMENT";
+  c.text = text;
+  return append(std::move(c));
+}
+
+FitsHeader& FitsHeader::add_history(const std::string& text) {
+  FitsCard c;
+  c.kind = FitsCard::Kind::History;
+  c.key = "HISTORY";
+  c.text = text;
+  return append(std::move(c));
+}
+
+void add_tan_pointing(FitsHeader& h, const FitsPointing& p) {
+  const double rot = p.rotation_deg * (3.14159265358979323846 / 180.0);
+  h.set_integer("WCSAXES", 2, "number of WCS axes");
+  h.set_string("CTYPE1", "RA---TAN", "gnomonic projection, right ascension");
+  h.set_string("CTYPE2", "DEC--TAN", "gnomonic projection, declination");
+  h.set_string("CUNIT1", "deg");
+  h.set_string("CUNIT2", "deg");
+  h.set_double("CRVAL1", p.ra_deg, "[deg] RA at the reference pixel");
+  h.set_double("CRVAL2", p.dec_deg, "[deg] Dec at the reference pixel");
+  h.set_double("CRPIX1", p.crpix1, "reference pixel x (FITS, 1 = left)");
+  h.set_double("CRPIX2", p.crpix2, "reference pixel y (FITS, 1 = bottom)");
+  h.set_double("CDELT1", p.cdelt1_deg, "[deg/pixel]");
+  h.set_double("CDELT2", p.cdelt2_deg, "[deg/pixel]");
+  h.set_double("PC1_1", std::cos(rot));
+  h.set_double("PC1_2", -std::sin(rot));
+  h.set_double("PC2_1", std::sin(rot));
+  h.set_double("PC2_2", std::cos(rot));
+  h.set_string("RADESYS", p.radesys);
+}
+
+void write_fits_image(const std::string& path, const float* pixels, std::int64_t width, std::int64_t height,
+                      const FitsHeader& header, const FitsWriteOptions& options) {
+  write_image(path, pixels, width, height, header, options);
+}
+
+void write_fits_image(const std::string& path, const double* pixels, std::int64_t width, std::int64_t height,
+                      const FitsHeader& header, const FitsWriteOptions& options) {
+  write_image(path, pixels, width, height, header, options);
+}
+
+}  // namespace eoir::imageio

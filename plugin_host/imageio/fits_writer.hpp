@@ -1,0 +1,94 @@
+// FITS image writer (host side, no engine dependency), built on cfitsio.
+//
+// Writes one 2-D primary image, BITPIX -32 (IEEE float32, the default) or
+// -64 (float64), with caller-supplied header cards, and CHECKSUM/DATASUM.
+// The file is assembled in memory and written atomically (temporary file
+// beside the target, fsync, rename), so readers never see a partial file and
+// a failed write leaves an existing target untouched. The path is used as a
+// plain file name (cfitsio's extended file-name syntax does not apply).
+//
+// Pixel order. The caller passes a row-major buffer, pixels[row * width +
+// col], with row 0 = the TOP row of the image as displayed and col 0 = the
+// left column. FITS stores rows bottom-up (pixel (1,1) is the lower-left
+// corner as ds9/astropy display it), so the writer flips the rows: FITS row
+// j (1-based) holds caller row height - j. The image then appears upright in
+// ds9, fv and astropy/matplotlib (origin='lower'). WCS CRPIX values are in
+// the FITS convention: pixel (1,1) = lower-left, pixel centres at integers;
+// the image centre is ((width + 1) / 2, (height + 1) / 2).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "atomic_write.hpp"
+
+namespace eoir::imageio {
+
+enum class FitsPixelType { Float32, Float64 };  // BITPIX -32 / -64
+
+// Header cards in the order they are to be written (after the mandatory
+// SIMPLE/BITPIX/NAXISn/EXTEND cards, which the writer owns). Keys are
+// upper-cased; keys longer than 8 characters use cfitsio's HIERARCH
+// convention; string values longer than 68 characters use the CONTINUE
+// long-string convention. Typical keys: DATE-OBS (ISO-8601 UTC string),
+// BUNIT (e.g. 'W cm-2 sr-1' or 'electrons'), EXPTIME (s), TELESCOP,
+// INSTRUME, OBJECT, and the pointing keys of add_tan_pointing().
+struct FitsCard {
+  enum class Kind { String, Double, Integer, Logical, Comment, History };
+  Kind kind = Kind::Comment;
+  std::string key;
+  std::string text;  // String value, or the COMMENT/HISTORY text
+  double number = 0.0;
+  long long integer = 0;
+  bool logical = false;
+  std::string comment;  // the card's "/ comment"
+};
+
+class FitsHeader {
+ public:
+  // Each setter appends a card (a repeated key appends again; cfitsio
+  // readers return the first). Throw ImageIoError for reserved keys
+  // (SIMPLE, BITPIX, NAXIS*, EXTEND, BSCALE, BZERO, END, CHECKSUM, DATASUM,
+  // COMMENT, HISTORY), empty keys, or non-finite doubles.
+  FitsHeader& set_string(const std::string& key, const std::string& value, const std::string& comment = "");
+  FitsHeader& set_double(const std::string& key, double value, const std::string& comment = "");
+  FitsHeader& set_integer(const std::string& key, long long value, const std::string& comment = "");
+  FitsHeader& set_logical(const std::string& key, bool value, const std::string& comment = "");
+  FitsHeader& add_comment(const std::string& text);
+  FitsHeader& add_history(const std::string& text);
+  const std::vector<FitsCard>& cards() const { return cards_; }
+
+ private:
+  FitsHeader& append(FitsCard card);
+  std::vector<FitsCard> cards_;
+};
+
+// Gnomonic (TAN) celestial pointing, FITS WCS paper II. Writes WCSAXES,
+// CTYPE1/2 = 'RA---TAN'/'DEC--TAN', CUNIT1/2 = 'deg', CRVAL1/2, CRPIX1/2,
+// CDELT1/2, PC1_1..PC2_2 (rotation) and RADESYS.
+struct FitsPointing {
+  double ra_deg = 0.0;   // CRVAL1: right ascension of the reference pixel
+  double dec_deg = 0.0;  // CRVAL2: declination of the reference pixel
+  double crpix1 = 0.0;   // reference pixel (FITS convention, see above)
+  double crpix2 = 0.0;
+  double cdelt1_deg = 0.0;    // deg per pixel along x; negative for east-left
+  double cdelt2_deg = 0.0;    // deg per pixel along y (up)
+  double rotation_deg = 0.0;  // angle of the PC matrix (CROTA2 convention)
+  std::string radesys = "ICRS";
+};
+void add_tan_pointing(FitsHeader& header, const FitsPointing& pointing);
+
+struct FitsWriteOptions {
+  FitsPixelType pixel_type = FitsPixelType::Float32;
+  bool checksum = true;  // CHECKSUM / DATASUM cards (deterministic)
+};
+
+// Writes pixels (width * height values, row 0 = top, see above) to `path`
+// atomically. Float32 output rounds doubles to nearest; NaN is stored as
+// IEEE NaN (the FITS blank for floating images). Throws ImageIoError.
+void write_fits_image(const std::string& path, const float* pixels, std::int64_t width, std::int64_t height,
+                      const FitsHeader& header, const FitsWriteOptions& options = {});
+void write_fits_image(const std::string& path, const double* pixels, std::int64_t width, std::int64_t height,
+                      const FitsHeader& header, const FitsWriteOptions& options = {});
+
+}  // namespace eoir::imageio

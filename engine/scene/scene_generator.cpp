@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "geometry/projected_area.hpp"
 #include "universe/central_bodies.hpp"
 #include "universe/object_motion.hpp"
 
@@ -112,9 +113,11 @@ void generate_scene(const universe::Universe& universe, const EngineTime& t, con
     }
     po.tessellation = geometry::tessellate(po.parts, patch_size_m(o));
     if (range > radius && 2.0 * std::asin(std::min(1.0, radius / range)) < sample_angle_rad) {
-      // A distant area source (spec 4.1.6.1), detailed mode: the sum over its
-      // visible patches of L dOmega (the self-emission part of the
-      // unnumbered tessellation sum, ERRATA eq. 11).
+      // A distant area source (spec 4.1.6.1): E = sum over the visible
+      // patches of L dOmega (ERRATA eq. 11). With one radiance over the whole
+      // surface (self-emission of a uniform object) that sum is L A* / R^2
+      // with the projected area A* of eq. 58, taken exactly for analytic
+      // shapes rather than from the patches.
       double c = 0, r = 0;
       if (!grid.sample_of(j2000_to_body * po.position_m, c, r)) continue;
       const double g = static_cast<double>(grid.guard_samples()), tol = 1e-9;
@@ -122,13 +125,9 @@ void generate_scene(const universe::Universe& universe, const EngineTime& t, con
                           r >= g - 0.5 - tol && r <= g + 4.0 * grid.pixels_y - 0.5 + tol;
       if (!inside) continue;  // ideal field of view (spec 5.2, 7.2.1)
       const double radiance = effective_radiance(fo.surface, frame.spectral);
-      double irradiance = 0;
-      for (const auto& patch : po.tessellation.patches) {
-        const Vec3 centre = po.position_m + po.body_to_frame * patch.centre_body_m;
-        const double d2 = centre.squaredNorm();
-        const double cos_view = -(po.body_to_frame * patch.normal_body).dot(centre) / std::sqrt(d2);
-        if (cos_view > 0) irradiance += radiance * cos_view * patch.area_m2 / d2;  // L cos dA / R^2
-      }
+      const Vec3 toward_observer_body = -(po.body_to_frame.transpose() * po.position_m).normalized();
+      const double area_m2 = geometry::projected_area_m2(po.parts, po.tessellation, toward_observer_body);
+      const double irradiance = radiance * area_m2 / (range * range);
       frame.point_sources.push_back(PointSource{po.object_id, c, r, irradiance, range});
       continue;
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/constants.hpp"
 #include "core/fftw_plans.hpp"
@@ -87,9 +88,14 @@ void render_sensor_image(const SensorParameters& p, const StaticMetrics& m, scen
   // Point sources: r_E = R_peak,E E^ps EOD / ENSQ (eqs. 50-51).
   if (!frame.point_sources.empty()) {
     const OpticsModel optics = OpticsModel::from_parameters(p);
-    const std::int64_t half = std::min<std::int64_t>(std::max<std::int64_t>(g.guard_pixels, 2), 64);
+    // The window covers the whole array from any source position, as far as
+    // the PSF grid allows (energy_on_detector needs window < psf_grid_size).
+    const std::int64_t half = std::max<std::int64_t>(1, std::min<std::int64_t>(std::max(nx, ny), (p.psf_grid_size - 2) / 2));
     const std::int64_t window = 2 * half + 1;
     const double guard = static_cast<double>(g.guard_samples());
+    // Sources at the same sub-pixel offset share one energy-on-detector
+    // window (the costly part: an FFT of the folded OTF).
+    std::map<std::pair<long long, long long>, FocalPlaneSamples> eod_by_offset;
     for (const scene::PointSource& ps : frame.point_sources) {
       // Position in pixels (0 = centre of pixel 0) from the sample coordinates.
       const double px = (ps.column - guard + 0.5) / scene::SampleGrid::per_pixel - 0.5;
@@ -98,9 +104,15 @@ void render_sensor_image(const SensorParameters& p, const StaticMetrics& m, scen
       const std::int64_t cy = static_cast<std::int64_t>(std::lround(py));
       // Energy on detector about pixel (cx, cy); image rows grow toward -y,
       // so a source below the pixel centre (positive row offset) is at -y'.
-      const FocalPlaneSamples eod = energy_on_detector(optics, g.pitch_x_cm, g.pitch_y_cm, window,
-                                                       (px - cx) * g.pitch_x_cm, -(py - cy) * g.pitch_y_cm,
-                                                       p.psf_grid_size);
+      const auto key = std::make_pair(std::llround((px - cx) * 1e9), std::llround((py - cy) * 1e9));
+      auto it = eod_by_offset.find(key);
+      if (it == eod_by_offset.end())
+        it = eod_by_offset
+                 .emplace(key, energy_on_detector(optics, g.pitch_x_cm, g.pitch_y_cm, window,
+                                                  (px - cx) * g.pitch_x_cm, -(py - cy) * g.pitch_y_cm,
+                                                  p.psf_grid_size))
+                 .first;
+      const FocalPlaneSamples& eod = it->second;
       const double signal = m.peak_irradiance_responsivity * ps.irradiance_W_cm2 / m.ensquared_energy;
       for (std::int64_t dy = -half; dy <= half; ++dy)
         for (std::int64_t dx = -half; dx <= half; ++dx) {

@@ -101,6 +101,22 @@ FocalPlaneSamples integrated_psf(const OpticsModel& optics, double cell_x_cm, do
   const auto fx = axis_frequencies(nc, n, dx, cutoff, cell_x_cm, offset_x_cm);
   const auto fy = axis_frequencies(n, n, dy, cutoff, cell_y_cm, offset_y_cm);
 
+  // The OTF is radial: tabulate it once on [0, cutoff] and interpolate
+  // linearly (the fold below evaluates it up to millions of times; the table
+  // error is below 1e-6 of the OTF's peak, where eq. 34 has its
+  // (1 - nu)^(3/2) edge).
+  constexpr std::int64_t table_size = 16384;
+  std::vector<double> otf_table(table_size + 2, 0.0);
+  for (std::int64_t k = 0; k <= table_size; ++k)
+    otf_table[static_cast<std::size_t>(k)] = optics.system(cutoff * static_cast<double>(k) / table_size);
+  const double table_scale = static_cast<double>(table_size) / cutoff;
+  auto otf_at = [&](double rho) {
+    const double u = rho * table_scale;
+    const auto k = static_cast<std::size_t>(u);
+    const double f = u - static_cast<double>(k);
+    return otf_table[k] + f * (otf_table[k + 1] - otf_table[k]);
+  };
+
   const fftw::ComplexBuffer in = fftw::complex_buffer(static_cast<std::size_t>(n * nc));
   const fftw::RealBuffer out = fftw::real_buffer(static_cast<std::size_t>(n * n));
   // Sum over the frequency grid times d xi_x d xi_y = 1 / (n^2 dx dy): the
@@ -120,7 +136,7 @@ FocalPlaneSamples integrated_psf(const OpticsModel& optics, double cell_x_cm, do
         for (const AxisFrequency& ay : row) {
           const double r2 = ax.xi_squared + ay.xi_squared;
           if (r2 >= cutoff2) continue;
-          const std::complex<double> t = optics.system(std::sqrt(r2)) * ax.factor;
+          const std::complex<double> t = otf_at(std::sqrt(r2)) * ax.factor;
           value += t * ay.factor;
           mirrored += t * std::conj(ay.factor);
         }

@@ -25,6 +25,7 @@
 namespace eoir::cli {
 namespace {
 
+using ojson = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 namespace io = eoir::imageio;
 
@@ -61,8 +62,8 @@ Stats stats_of(const std::vector<double>& v) {
   return s;
 }
 
-nlohmann::json stats_json(const Stats& s) {
-  const auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+ojson stats_json(const Stats& s) {
+  const auto num = [](double x) { return std::isfinite(x) ? ojson(x) : ojson(nullptr); };
   return {{"min", num(s.min)}, {"max", num(s.max)}, {"mean", num(s.mean)}, {"non_finite", s.non_finite}};
 }
 
@@ -277,7 +278,7 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
   const std::size_t total = opt.times.size() * sensors.size();
   const auto began = std::chrono::steady_clock::now();
   const bool tty = isatty(fileno(stderr)) != 0;
-  nlohmann::json frames = nlohmann::json::array();
+  ojson frames = ojson::array();
   std::size_t done = 0;
   const fs::path dir(opt.out_dir);
 
@@ -319,7 +320,7 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
                                  e.what());
       }
 
-      nlohmann::json fr;
+      ojson fr;
       fr["index"] = i;
       fr["time"] = ctx.iso_of(in_el);
       fr["sensor"] = s->name;
@@ -349,9 +350,9 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
   }
   if (!opt.quiet && tty) std::fprintf(stderr, "\n");
 
-  nlohmann::json sensors_json = nlohmann::json::array();
+  ojson sensors_json = ojson::array();
   for (const SensorSpec* s : sensors) sensors_json.push_back({{"name", s->name}, {"parent", s->parent}});
-  nlohmann::json summary;
+  ojson summary;
   summary["format"] = "eoir-run-summary";
   summary["version"] = 1;
   summary["scenario"] = sc.name;

@@ -5,8 +5,8 @@ The Moon's geocentric J2000 position at the epoch is what the engine's
 ephemeris (ERFA eraMoon98) gives; it is written here so that the scenario is
 reproducible without running the engine. The satellite is placed at 42164.2
 km from the Earth's centre, roughly opposite the Moon, so that the Moon's
-centre appears 8.60 deg from nadir (the Earth's limb is at 8.70 deg) at the
-lower left of the field ("8:00 position"): x offset -8.45 deg, y offset -1.6
+centre appears 8.78 deg from nadir (the Earth's limb is at 8.70 deg) at the
+lower left of the field ("8:00 position"): x offset -8.55 deg, y offset -2.0
 deg in the sensor's (tan alpha, tan beta) plane.
 """
 import json
@@ -18,7 +18,7 @@ import numpy as np
 EPOCH = "2010-03-30T02:25:00Z"  # full moon near the spring equinox
 MOON_J2000_M = np.array([-3.58715911e8, -4.03595862e7, -5.18803005e7])
 GEO_RADIUS_M = 42164.2e3
-TARGET_X_DEG, TARGET_Y_DEG = -8.45, -1.6
+TARGET_X_DEG, TARGET_Y_DEG = -8.55, -2.0
 
 
 def unit(v):

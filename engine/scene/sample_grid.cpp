@@ -6,7 +6,7 @@
 namespace eoir::scene {
 
 double SampleGrid::tan_x(std::int64_t c) const {
-  const double x_cm = (static_cast<double>(c) + 0.5 - 0.5 * static_cast<double>(width())) * pitch_x_cm / per_pixel;
+  const double x_cm = (0.5 * static_cast<double>(width()) - static_cast<double>(c) - 0.5) * pitch_x_cm / per_pixel;
   return x_cm / focal_length_cm;
 }
 
@@ -30,7 +30,7 @@ double SampleGrid::sample_solid_angle_sr(std::int64_t c, std::int64_t r) const {
 bool SampleGrid::sample_of(const Eigen::Vector3d& d, double& c, double& r) const {
   if (!(d.z() > 0)) return false;
   const double x_cm = d.x() / d.z() * focal_length_cm, y_cm = d.y() / d.z() * focal_length_cm;
-  c = x_cm / (pitch_x_cm / per_pixel) + 0.5 * static_cast<double>(width()) - 0.5;
+  c = 0.5 * static_cast<double>(width()) - 0.5 - x_cm / (pitch_x_cm / per_pixel);
   r = 0.5 * static_cast<double>(height()) - 0.5 - y_cm / (pitch_y_cm / per_pixel);
   return true;
 }

@@ -5,11 +5,14 @@
 // has real scene on both sides of the field edge (no edge fall-off, unlike
 // spec 7.2.2).
 //
-// Image orientation: images are stored as seen on the sky, row 0 at the top.
-// Column c grows toward sensor body +x, row r toward body -y; the focal-plane
-// inversion of eqs. 15-16 (alpha = -arctan(x'/f)) is undone, so that
-// direction = normalise(tan(alpha), tan(beta), 1) with tan(alpha) growing
-// with c and tan(beta) falling with r.
+// Image orientation: images are stored as seen by an observer at the sensor
+// looking along the line of sight (body +z) with body +y up, row 0 at the
+// top. In the right-handed body frame body +x then points to the LEFT of the
+// picture: column c grows toward body -x, row r toward body -y. The
+// focal-plane inversion of eqs. 15-16 (alpha = -arctan(x'/f)) is undone:
+// a sample's direction is normalise(tan_x, tan_y, 1) with tan_x falling with
+// c and tan_y falling with r. (With north up, east is on the left, as on any
+// picture of the sky.)
 #pragma once
 #include <Eigen/Core>
 #include <cstdint>

@@ -21,21 +21,24 @@ double frequency(int i, int n, double spacing) {
 // Convolves the full sample grid (with its guard band) with the system PSF:
 // multiply its transform by OTF_system (eq. 39) on the image-space frequency
 // grid of the samples. The guard band holds real scene beyond the field
-// edge, so the circular wrap of the transform only mixes guard samples far
-// from the field.
+// edge; around it the FFT buffer is padded by as much again with the border
+// samples repeated, so the circular wrap of the transform only mixes padding
+// that lies two PSF reaches away from the field.
 std::vector<double> convolve_with_otf(const SensorParameters& p, const scene::Frame& frame) {
   const scene::SampleGrid& g = frame.grid;
   const int w = static_cast<int>(g.width()), h = static_cast<int>(g.height());
-  const int fw = fftw::good_size(w), fh = fftw::good_size(h);
+  const int pad = static_cast<int>(g.guard_samples());
+  const int fw = fftw::good_size(w + 2 * pad), fh = fftw::good_size(h + 2 * pad);
   const std::size_t n_real = static_cast<std::size_t>(fw) * static_cast<std::size_t>(fh);
   const int cw = fw / 2 + 1;
   auto real = fftw::real_buffer(n_real);
   auto spectrum = fftw::complex_buffer(static_cast<std::size_t>(fh) * static_cast<std::size_t>(cw));
-  // Pad by edge replication (beyond the guard band, only for FFT sizes).
-  for (int r = 0; r < fh; ++r)
+  for (int r = 0; r < fh; ++r) {
+    const int sr = std::clamp(r - pad, 0, h - 1);
     for (int c = 0; c < fw; ++c)
       real[static_cast<std::size_t>(r) * fw + c] =
-          frame.scene_radiance[static_cast<std::size_t>(std::min(r, h - 1)) * w + std::min(c, w - 1)];
+          frame.scene_radiance[static_cast<std::size_t>(sr) * w + std::clamp(c - pad, 0, w - 1)];
+  }
   fftw_execute_dft_r2c(fftw::r2c_2d(fh, fw), real.get(), spectrum.get());
   const OpticsModel optics = OpticsModel::from_parameters(p);
   const double dx = g.pitch_x_cm / scene::SampleGrid::per_pixel, dy = g.pitch_y_cm / scene::SampleGrid::per_pixel;
@@ -53,7 +56,8 @@ std::vector<double> convolve_with_otf(const SensorParameters& p, const scene::Fr
   fftw_execute_dft_c2r(fftw::c2r_2d(fh, fw), spectrum.get(), real.get());
   std::vector<double> out(static_cast<std::size_t>(w) * h);
   for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c) out[static_cast<std::size_t>(r) * w + c] = real[static_cast<std::size_t>(r) * fw + c];
+    for (int c = 0; c < w; ++c)
+      out[static_cast<std::size_t>(r) * w + c] = real[static_cast<std::size_t>(r + pad) * fw + c + pad];
   return out;
 }
 }  // namespace
@@ -102,14 +106,15 @@ void render_sensor_image(const SensorParameters& p, const StaticMetrics& m, scen
       const double py = (ps.row - guard + 0.5) / scene::SampleGrid::per_pixel - 0.5;
       const std::int64_t cx = static_cast<std::int64_t>(std::lround(px));
       const std::int64_t cy = static_cast<std::int64_t>(std::lround(py));
-      // Energy on detector about pixel (cx, cy); image rows grow toward -y,
-      // so a source below the pixel centre (positive row offset) is at -y'.
+      // Energy on detector about pixel (cx, cy). Image columns grow toward
+      // -x and rows toward -y (scene/sample_grid.hpp): a source right of or
+      // below the pixel centre sits at -x' or -y'.
       const auto key = std::make_pair(std::llround((px - cx) * 1e9), std::llround((py - cy) * 1e9));
       auto it = eod_by_offset.find(key);
       if (it == eod_by_offset.end())
         it = eod_by_offset
                  .emplace(key, energy_on_detector(optics, g.pitch_x_cm, g.pitch_y_cm, window,
-                                                  (px - cx) * g.pitch_x_cm, -(py - cy) * g.pitch_y_cm,
+                                                  -(px - cx) * g.pitch_x_cm, -(py - cy) * g.pitch_y_cm,
                                                   p.psf_grid_size))
                  .first;
       const FocalPlaneSamples& eod = it->second;
@@ -118,7 +123,7 @@ void render_sensor_image(const SensorParameters& p, const StaticMetrics& m, scen
         for (std::int64_t dx = -half; dx <= half; ++dx) {
           const std::int64_t x = cx + dx, y = cy + dy;
           if (x < 0 || y < 0 || x >= nx || y >= ny) continue;
-          mean[static_cast<std::size_t>(y * nx + x)] += signal * eod.at(dx, -dy);
+          mean[static_cast<std::size_t>(y * nx + x)] += signal * eod.at(-dx, -dy);
         }
     }
   }

@@ -158,12 +158,12 @@ class RunContext {
     h.set_double("BANDLO", number(s.name, "band_low_um"), "[um] band lower edge");
     h.set_double("BANDHI", number(s.name, "band_high_um"), "[um] band upper edge");
     // TAN (gnomonic) pointing, written as a CD matrix. Column grows toward
-    // body +x, row toward body -y; the writer flips rows so FITS pixel (1,1)
-    // is the lower left and FITS rows grow toward +y (image up). In the
-    // intermediate coordinates (east, north) at the boresight, one column
-    // step is body +x = y cross z = d1 (cos PA, -sin PA) and one FITS row
-    // step is +y = d2 (sin PA, cos PA), PA being the up vector's position
-    // angle east of north. Samples are uniform on the focal plane (spec
+    // body -x, row toward body -y (eoir.h); the writer flips rows so FITS
+    // pixel (1,1) is the lower left and FITS rows grow toward +y (image up).
+    // In the intermediate coordinates (east, north) at the boresight, body
+    // +x = y cross z = (cos PA, -sin PA), so one column step is
+    // d1 (-cos PA, sin PA), and one FITS row step is +y = d2 (sin PA, cos PA),
+    // PA being the up vector's position angle east of north. Samples are uniform on the focal plane (spec
     // 5.2), i.e. uniform in tan(angle): the TAN pitch is 2 tan(FOV/2) / N.
     const double hfov = number(s.name, "horizontal_fov_deg"), vfov = number(s.name, "vertical_fov_deg");
     const double d1 = 2.0 * std::tan(hfov * kDeg / 2.0) / static_cast<double>(in.width) / kDeg;
@@ -179,9 +179,9 @@ class RunContext {
     h.set_double("CRVAL2", in.boresight_dec_deg, "[deg] Dec at the reference pixel (boresight)");
     h.set_double("CRPIX1", (static_cast<double>(in.width) + 1.0) / 2.0, "reference pixel: image centre");
     h.set_double("CRPIX2", (static_cast<double>(in.height) + 1.0) / 2.0, "reference pixel: image centre");
-    h.set_double("CD1_1", d1 * std::cos(pa));
+    h.set_double("CD1_1", -d1 * std::cos(pa));
     h.set_double("CD1_2", d2 * std::sin(pa));
-    h.set_double("CD2_1", -d1 * std::sin(pa));
+    h.set_double("CD2_1", d1 * std::sin(pa));
     h.set_double("CD2_2", d2 * std::cos(pa));
     h.set_string("RADESYS", "ICRS", "J2000 axes of the engine (GCRS ~ ICRS)");
     h.set_string("ORIGIN", "eoir " EOIR_CLI_VERSION, "eoir run");

@@ -265,9 +265,11 @@ EOIR_API eoir_status eoir_sensor_load(eoir_engine engine, const char* sensor, co
 
 /* ------------------------------------------------------------------- images */
 /* One frame of a scene-generator/sensor-model pair (spec 4.1, 5.11), rendered
- * at the engine time. Images are stored as seen on the sky, row 0 at the top,
- * row-major; column grows toward sensor body +x, row toward body -y (the
- * focal-plane inversion of eqs. 15-16 is undone). */
+ * at the engine time. Images are stored row-major, row 0 at the top, as seen
+ * by an observer at the sensor looking along body +z with body +y up: column
+ * grows toward body -x (body +x is on the left of the picture), row toward
+ * body -y. The focal-plane inversion of eqs. 15-16 is undone; with north up,
+ * east is on the left, as on any picture of the sky. */
 typedef enum eoir_image_kind {
   EOIR_IMAGE_SCENE_RADIANCE = 1,  /* effective radiance per scene sample (eq. 48), W/(cm^2 sr); 4x4 per pixel */
   EOIR_IMAGE_SCENE_DISPLAY = 2,   /* display bytes of the scene view (spec 4.1.2), one per sample */

@@ -6,8 +6,8 @@ ephemeris (ERFA eraMoon98) gives; it is written here so that the scenario is
 reproducible without running the engine. The satellite is placed at 42164.2
 km from the Earth's centre, roughly opposite the Moon, so that the Moon's
 centre appears 8.78 deg from nadir (the Earth's limb is at 8.70 deg) at the
-lower left of the field ("8:00 position"): x offset -8.55 deg, y offset -2.0
-deg in the sensor's (tan alpha, tan beta) plane.
+lower left of the field ("8:00 position"): 8.55 deg to the left of and 2.0 deg below
+the centre of the picture.
 """
 import json
 import math
@@ -46,7 +46,9 @@ _, sat, nadir, moon_dir = separation(lo, u, v)
 
 # Sensor axes: z = nadir; x, y chosen so the Moon shows at the wanted offsets.
 m_perp = unit(moon_dir - (moon_dir @ nadir) * nadir)  # Moon direction in the image plane
-psi = math.atan2(math.tan(math.radians(TARGET_Y_DEG)), math.tan(math.radians(TARGET_X_DEG)))
+# Pictures show body +x on the left (capi/include/eoir/eoir.h), so a picture
+# offset to the left is toward body +x.
+psi = math.atan2(math.tan(math.radians(TARGET_Y_DEG)), -math.tan(math.radians(TARGET_X_DEG)))
 # m_perp = cos(psi) x + sin(psi) y  with y = z cross x  =>  solve for x.
 w = np.cross(nadir, m_perp)
 x_axis = unit(math.cos(psi) * m_perp - math.sin(psi) * w)

@@ -1,6 +1,7 @@
 #include "engine.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -29,6 +30,7 @@ const scene::Frame& Engine::render(const std::string& name) {
   auto frame = std::make_shared<scene::Frame>();
   scene::generate_scene(universe_, time_, s, m, options_.threads, *frame);
   sensor::render_sensor_image(s.sensor, m, *frame, noise_rng_);
+  const auto display_start = std::chrono::steady_clock::now();
   // Display images (spec 4.1.2): the scene view shows the irradiance of each
   // sample of the field of view (L dOmega) with point sources added to the
   // nearest sample; the sensor view shows electrons.
@@ -50,7 +52,10 @@ const scene::Frame& Engine::render(const std::string& name) {
   const double full_scale = std::isfinite(m.saturation_electrons) ? m.saturation_electrons : 1e6;
   frame->sensor_display =
       sensor::compress_for_display(frame->sensor_electrons, s.sensor.display_agc, s.sensor.display_gain_step, full_scale);
+  frame->timings.display_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - display_start).count();
   frames_[name] = frame;
+  truth_.erase(name);
   return *frame;
 }
 
@@ -64,13 +69,43 @@ const scene::Frame& Engine::frame(const std::string& name) const {
 
 metrics::ElementValue Engine::provider(const std::string& group, const std::string& element,
                                        const std::string& sensor, const std::string& target) {
-  for (const auto& g : metrics::static_provider_groups()) {
-    if (group != g.name) continue;
-    const sensor::StaticMetrics& m = static_metrics(sensor);
-    if (!target.empty()) universe_.get(target, "target");  // a named target must exist even if unused
-    return metrics::static_element(m, group, element);
+  const metrics::GroupSpec& g = metrics::provider_group(group);
+  if (g.needs_target) {
+    if (target.empty())
+      throw Error(Status::null_argument, "target: group '" + group + "' needs a target object");
+    return metrics::target_element(target_metrics(sensor, target), element);
   }
-  throw Error(Status::unknown_name, "group: unknown data provider group '" + group + "'");
+  const sensor::StaticMetrics& m = static_metrics(sensor);
+  if (!target.empty()) universe_.get(target, "target");  // a named target must exist even if unused
+  return metrics::static_element(m, group, element);
+}
+
+const metrics::TargetMetrics& Engine::target_metrics(const std::string& sensor, const std::string& target) {
+  const auto key = std::make_pair(sensor, target);
+  auto it = target_cache_.find(key);
+  if (it != target_cache_.end()) return it->second;
+  const sensor::StaticMetrics& m = static_metrics(sensor);
+  metrics::TargetMetrics t = metrics::target_metrics(universe_, time_, universe_.sensor(sensor), m, target);
+  return target_cache_.emplace(key, t).first->second;
+}
+
+const std::vector<std::pair<std::string, metrics::TargetMetrics>>& Engine::truth(const std::string& sensor) {
+  auto it = truth_.find(sensor);
+  if (it != truth_.end()) return it->second;
+  const scene::Frame& f = frame(sensor);
+  // The frame's own time and the universe as it is now (a frame is rendered
+  // and read back without changes in between; a change drops the truth).
+  const EngineTime now = time_;
+  time_ = f.time;
+  std::vector<std::pair<std::string, metrics::TargetMetrics>> rows;
+  const universe::Object& s = universe_.sensor(sensor);
+  for (const scene::FrameObject& o : f.objects) {
+    if (o.central_body) continue;  // central bodies are backgrounds, not targets
+    metrics::TargetMetrics t = metrics::target_metrics(universe_, f.time, s, static_metrics(sensor), o.name);
+    if (t.in_field) rows.emplace_back(o.name, t);
+  }
+  time_ = now;
+  return truth_.emplace(sensor, std::move(rows)).first->second;
 }
 
 }  // namespace eoir

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/time.hpp"
-#include "metrics/static_providers.hpp"
+#include "metrics/provider_groups.hpp"
 #include "scene/frame.hpp"
 #include "sensor/static_metrics.hpp"
 #include "universe/universe.hpp"
@@ -29,7 +29,10 @@ class Engine {
   const universe::Universe& universe() const { return universe_; }
 
   const EngineTime& time() const { return time_; }
-  void set_time(const EngineTime& t) { time_ = t; }
+  void set_time(const EngineTime& t) {
+    time_ = t;
+    target_cache_.clear();
+  }
 
   const EngineOptions& options() const { return options_; }
   std::mt19937_64& noise_rng() { return noise_rng_; }
@@ -50,10 +53,24 @@ class Engine {
   // The last frame rendered for `sensor`; throws Error(no_state) if none.
   const scene::Frame& frame(const std::string& sensor) const;
 
+  // Sensor-to-target metrics (spec 5.13) of `target` seen by `sensor` at the
+  // engine time, cached until the universe or the time changes.
+  const metrics::TargetMetrics& target_metrics(const std::string& sensor, const std::string& target);
+  // The objects in the field of the last frame of `sensor`, with their
+  // target metrics (per-frame truth). Computed on first request.
+  const std::vector<std::pair<std::string, metrics::TargetMetrics>>& truth(const std::string& sensor);
+
+  // A state, property or object changed: drop results that depend on it.
+  void note_change() {
+    target_cache_.clear();
+    truth_.clear();
+  }
   // Drop every cached result (after a restore or removal).
   void invalidate_caches() {
     metric_cache_.clear();
     frames_.clear();
+    target_cache_.clear();
+    truth_.clear();
   }
 
  private:
@@ -67,6 +84,8 @@ class Engine {
   std::mt19937_64 noise_rng_;
   std::map<std::string, CachedMetrics> metric_cache_;
   std::map<std::string, std::shared_ptr<scene::Frame>> frames_;
+  std::map<std::pair<std::string, std::string>, metrics::TargetMetrics> target_cache_;
+  std::map<std::string, std::vector<std::pair<std::string, metrics::TargetMetrics>>> truth_;
 };
 
 }  // namespace eoir

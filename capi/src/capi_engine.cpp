@@ -141,6 +141,7 @@ EOIR_API eoir_status eoir_object_set_state(eoir_engine engine, const char* name,
     need_size(state->struct_size, sizeof(eoir_state), "state");
     const EngineTime epoch = time ? time_of(time, "time") : e.time();
     universe::push_state(o, epoch, state->frame, state->position, state->velocity, state->attitude);
+    e.note_change();
   });
 }
 

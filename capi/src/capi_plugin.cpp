@@ -55,6 +55,9 @@ const eoir_api_v1 api_v1 = {
     eoir_image_get,
     eoir_image_get_bytes,
     eoir_pick_get,
+    eoir_snr_constraint,
+    eoir_truth_count,
+    eoir_truth_get,
 };
 }  // namespace
 

@@ -14,6 +14,7 @@ void set(eoir_engine engine, const char* object, const char* property, const Val
   Engine& e = capi::engine_of(engine);
   universe::Object& o = e.universe().get(str(object, "object"));
   universe::set_property(o, str(property, "property"), value);
+  e.note_change();
 }
 
 Value get(eoir_engine engine, const char* object, const char* property, ValueType expected) {

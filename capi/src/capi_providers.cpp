@@ -7,13 +7,8 @@ using eoir::capi::need;
 using eoir::capi::str;
 
 namespace {
-const std::vector<metrics::GroupSpec>& groups() { return metrics::static_provider_groups(); }
-
-const metrics::GroupSpec& group_named(const std::string& name) {
-  for (const auto& g : groups())
-    if (name == g.name) return g;
-  throw Error(Status::unknown_name, "group: unknown data provider group '" + name + "'");
-}
+const std::vector<metrics::GroupSpec>& groups() { return metrics::provider_groups(); }
+const metrics::GroupSpec& group_named(const std::string& name) { return metrics::provider_group(name); }
 
 int32_t type_of(metrics::ElementType t) {
   switch (t) {

@@ -38,6 +38,7 @@ EOIR_API eoir_status eoir_sensor_load(eoir_engine engine, const char* sensor, co
     universe::Object& o = e.universe().get(name);
     o.sensor = p;
     ++o.revision;
+    e.note_change();
   });
 }
 }

@@ -31,6 +31,21 @@ struct FrameObject {
   SurfacePoint surface;
 };
 
+// Wall-clock seconds spent in each stage of the last render (DESIGN.md 1).
+struct FrameTimings {
+  double setup_s = 0;         // snapshot, culling, classification, tessellation
+  double ray_casting_s = 0;   // sample directions and Embree casts
+  double shading_s = 0;       // per-patch radiance and band integration (eq. 48)
+  double convolution_s = 0;   // OTF convolution by FFT and pixel integration (eq. 49)
+  double point_sources_s = 0; // energy on detector (eqs. 50-51)
+  double noise_s = 0;         // noise and saturation (eqs. 53-55)
+  double display_s = 0;       // display compression (4.1.2)
+  std::size_t rays = 0;
+  double total_s() const {
+    return setup_s + ray_casting_s + shading_s + convolution_s + point_sources_s + noise_s + display_s;
+  }
+};
+
 struct Frame {
   EngineTime time;
   SampleGrid grid;
@@ -46,6 +61,7 @@ struct Frame {
   std::vector<double> sensor_electrons;      // electrons, pixels (eq. 55)
   std::vector<std::uint8_t> scene_display;   // samples of the field of view
   std::vector<std::uint8_t> sensor_display;  // pixels
+  FrameTimings timings;
 };
 
 }  // namespace eoir::scene

@@ -1,44 +1,16 @@
 #include "scene/scene_generator.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "core/error.hpp"
-#include "geometry/projected_area.hpp"
-#include "universe/central_bodies.hpp"
+#include "scene/placement.hpp"
 #include "universe/object_motion.hpp"
 
 namespace eoir::scene {
 namespace {
 using geometry::Vec3;
-
-// Default patch edge (spec 4.2.3: Earth tessellations about 785 km on a side,
-// other central bodies the same number of patches; other objects an eighth of
-// their largest dimension).
-double patch_size_m(const universe::Object& o) {
-  if (o.body.patch_size_m > 0) return o.body.patch_size_m;
-  if (o.kind == universe::ObjectKind::central_body) return 785.0e3 * o.body.dimensions_m[0] / 6378137.0;
-  double size = 0;
-  for (double d : o.body.dimensions_m) size = std::max(size, d);
-  return std::max(size, 1e-6) / 8.0;
-}
-
-// Radius of a sphere about the body origin enclosing every part.
-double bounding_radius_m(const std::vector<geometry::ShapePart>& parts) {
-  double r = 0;
-  for (const auto& p : parts) {
-    const auto& d = p.dimensions_m;
-    double extent = 0;
-    if (p.shape == "sphere") extent = d[0];
-    else if (p.shape == "oblate") extent = std::max(d[0], d[1]);
-    else if (p.shape == "box") extent = 0.5 * std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    else if (p.shape == "plate") extent = 0.5 * std::sqrt(d[0] * d[0] + d[1] * d[1]);
-    else if (p.shape == "cylinder" || p.shape == "cone") extent = std::hypot(d[0], 0.5 * d[1]);
-    else if (p.shape == "coupler") extent = std::hypot(std::max(d[0], d[1]), 0.5 * d[2]);
-    r = std::max(r, p.offset_m.norm() + extent);
-  }
-  return r;
-}
 
 // True if a sphere (centre in sensor body axes, radius) lies wholly outside
 // the pyramid of the sample grid (field of view plus guard band).
@@ -53,23 +25,13 @@ bool outside_view(const Vec3& centre_body, double radius, const SampleGrid& grid
   return false;
 }
 
-bool images_nothing(const universe::Object& o) {
-  return o.kind == universe::ObjectKind::sensor || o.kind == universe::ObjectKind::star_field ||
-         o.body.shape == "none";
-}
 }  // namespace
-
-std::vector<geometry::ShapePart> shape_parts(const universe::Object& o) {
-  geometry::ShapePart part;
-  part.shape = o.body.shape;
-  part.dimensions_m = o.body.dimensions_m;
-  part.temperature_K = o.body.temperature_K;
-  part.reflectance = o.body.reflectance;
-  return {part};
-}
 
 void generate_scene(const universe::Universe& universe, const EngineTime& t, const universe::Object& sensor,
                     const sensor::StaticMetrics& metrics, unsigned threads, Frame& frame) {
+  using clock = std::chrono::steady_clock;
+  const auto seconds = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+  const auto t0 = clock::now();
   const sensor::SensorParameters& p = sensor.sensor;
   frame.time = t;
   frame.grid = make_sample_grid(p, metrics);
@@ -89,51 +51,31 @@ void generate_scene(const universe::Universe& universe, const EngineTime& t, con
   frame.point_sources.clear();
   std::vector<geometry::PlacedObject> placed;
   for (const universe::Object& o : universe.objects()) {
-    if (images_nothing(o) || o.name == sensor.parent) continue;  // a sensor never images its parent (4.1.5.1)
-    if (o.kind != universe::ObjectKind::central_body && !o.state.valid) continue;  // not yet placed by the host
-    const universe::Kinematics k = universe::kinematics_at(universe, o, t);
-    geometry::PlacedObject po;
-    po.object_id = static_cast<std::int32_t>(frame.objects.size());
-    po.parts = shape_parts(o);
-    po.position_m = k.position_m - observer.position_m;
-    po.central_body = o.kind == universe::ObjectKind::central_body;
-    const bool earth = po.central_body && o.name == "Earth";
-    // Central bodies: Earth's body frame is Earth-fixed; the others keep
-    // J2000 axes (no rotation models yet).
-    po.body_to_frame = earth ? frames::j2000_to_earth_fixed(t).transpose() : k.attitude.toRotationMatrix();
-    if (po.central_body && !earth) po.body_to_frame.setIdentity();
-    FrameObject fo{o.name, po.central_body, earth, SurfacePoint{o.body.temperature_K, o.body.reflectance}};
-    frame.objects.push_back(fo);
-
-    const double range = po.position_m.norm();
-    const double radius = bounding_radius_m(po.parts);
-    if (outside_view(j2000_to_body * po.position_m, radius, grid)) {
-      frame.objects.pop_back();  // culled: costs nothing more (DESIGN.md 4)
-      continue;
-    }
-    po.tessellation = geometry::tessellate(po.parts, patch_size_m(o));
+    if (o.name == sensor.parent) continue;  // a sensor never images its parent (4.1.5.1)
+    std::optional<Placement> pl =
+        place_object(universe, o, t, observer.position_m, static_cast<std::int32_t>(frame.objects.size()));
+    if (!pl) continue;
+    if (outside_view(j2000_to_body * pl->placed.position_m, pl->bounding_radius_m, grid)) continue;  // culled
+    tessellate_placement(o, *pl);
+    frame.objects.push_back(pl->surface);
+    const double range = pl->range_m, radius = pl->bounding_radius_m;
     if (range > radius && 2.0 * std::asin(std::min(1.0, radius / range)) < sample_angle_rad) {
-      // A distant area source (spec 4.1.6.1): E = sum over the visible
-      // patches of L dOmega (ERRATA eq. 11). With one radiance over the whole
-      // surface (self-emission of a uniform object) that sum is L A* / R^2
-      // with the projected area A* of eq. 58, taken exactly for analytic
-      // shapes rather than from the patches.
+      // A distant area source smaller than a sample (spec 4.1.6.1), imaged
+      // as a point where it lies inside the ideal field of view (5.2, 7.2.1).
       double c = 0, r = 0;
-      if (!grid.sample_of(j2000_to_body * po.position_m, c, r)) continue;
-      const double g = static_cast<double>(grid.guard_samples()), tol = 1e-9;
+      if (!grid.sample_of(j2000_to_body * pl->placed.position_m, c, r)) continue;
+      const double g = static_cast<double>(grid.guard_samples()), tol = 1e-4;
       const bool inside = c >= g - 0.5 - tol && c <= g + 4.0 * grid.pixels_x - 0.5 + tol &&
                           r >= g - 0.5 - tol && r <= g + 4.0 * grid.pixels_y - 0.5 + tol;
-      if (!inside) continue;  // ideal field of view (spec 5.2, 7.2.1)
-      const double radiance = effective_radiance(fo.surface, frame.spectral);
-      const Vec3 toward_observer_body = -(po.body_to_frame.transpose() * po.position_m).normalized();
-      const double area_m2 = geometry::projected_area_m2(po.parts, po.tessellation, toward_observer_body);
-      const double irradiance = radiance * area_m2 / (range * range);
-      frame.point_sources.push_back(PointSource{po.object_id, c, r, irradiance, range});
+      if (inside)
+        frame.point_sources.push_back(
+            PointSource{pl->placed.object_id, c, r, point_irradiance_W_cm2(*pl, frame.spectral), range});
       continue;
     }
-    placed.push_back(std::move(po));
+    placed.push_back(std::move(pl->placed));
   }
 
+  const auto t1 = clock::now();
   // 3. Ray-cast the sample grid (spec 4.1.3) in the observer frame.
   const std::int64_t w = grid.width(), h = grid.height();
   std::vector<Vec3> directions(static_cast<std::size_t>(w * h));
@@ -144,6 +86,7 @@ void generate_scene(const universe::Universe& universe, const EngineTime& t, con
   caster.build(placed);
   caster.cast(directions, frame.hits, threads);
 
+  const auto t2 = clock::now();
   // 4-5. Shade only what was hit, band-integrated once per surface (eq. 48).
   std::vector<double> object_radiance(frame.objects.size(), -1.0);
   frame.scene_radiance.assign(directions.size(), 0.0);
@@ -154,6 +97,11 @@ void generate_scene(const universe::Universe& universe, const EngineTime& t, con
     if (L < 0) L = effective_radiance(frame.objects[static_cast<std::size_t>(hit.object_id)].surface, frame.spectral);
     frame.scene_radiance[i] = L;
   }
+  const auto t3 = clock::now();
+  frame.timings.setup_s = seconds(t0, t1);
+  frame.timings.ray_casting_s = seconds(t1, t2);
+  frame.timings.shading_s = seconds(t2, t3);
+  frame.timings.rays = directions.size();
 }
 
 }  // namespace eoir::scene

@@ -14,7 +14,4 @@ namespace eoir::scene {
 void generate_scene(const universe::Universe& universe, const EngineTime& t, const universe::Object& sensor,
                     const sensor::StaticMetrics& metrics, unsigned threads, Frame& frame);
 
-// The shape parts of an object in its body frame (composites flattened).
-std::vector<geometry::ShapePart> shape_parts(const universe::Object& o);
-
 }  // namespace eoir::scene

@@ -1,6 +1,7 @@
 #include "sensor/image_chain.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 
@@ -84,10 +85,14 @@ std::vector<double> pixel_radiance(const SensorParameters& p, const scene::Frame
 
 void render_sensor_image(const SensorParameters& p, const StaticMetrics& m, scene::Frame& frame,
                          std::mt19937_64& rng) {
+  using clock = std::chrono::steady_clock;
+  const auto seconds = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+  const auto t0 = clock::now();
   const scene::SampleGrid& g = frame.grid;
   const std::int64_t nx = g.pixels_x, ny = g.pixels_y;
   // Extended sources: r_L = R_peak,L * (L conv PSF) averaged over the pixel (eq. 49).
   std::vector<double> mean = pixel_radiance(p, frame);
+  const auto t1 = clock::now();
   for (double& v : mean) v *= m.peak_radiance_responsivity;
   // Point sources: r_E = R_peak,E E^ps EOD / ENSQ (eqs. 50-51).
   if (!frame.point_sources.empty()) {
@@ -127,6 +132,7 @@ void render_sensor_image(const SensorParameters& p, const StaticMetrics& m, scen
         }
     }
   }
+  const auto t2 = clock::now();
   frame.sensor_mean = mean;
   // Noise (eqs. 53-54) and saturation (eq. 55); zero dark offset (5.11.3).
   frame.sensor_electrons.resize(mean.size());
@@ -137,6 +143,9 @@ void render_sensor_image(const SensorParameters& p, const StaticMetrics& m, scen
     if (p.noise_enabled) r += std::sqrt(dark2 + std::max(mean[i], 0.0)) * normal(rng);
     frame.sensor_electrons[i] = std::min(r, m.saturation_electrons);
   }
+  frame.timings.convolution_s = seconds(t0, t1);
+  frame.timings.point_sources_s = seconds(t1, t2);
+  frame.timings.noise_s = seconds(t2, clock::now());
 }
 
 }  // namespace eoir::sensor

@@ -39,7 +39,7 @@ extern "C" {
 
 /* ------------------------------------------------------------------ version */
 #define EOIR_VERSION_MAJOR 1
-#define EOIR_VERSION_MINOR 1
+#define EOIR_VERSION_MINOR 2
 #define EOIR_VERSION_PATCH 0
 
 /* Returns EOIR_VERSION_MAJOR*10000 + MINOR*100 + PATCH of the loaded library. */
@@ -332,6 +332,36 @@ EOIR_API eoir_status eoir_pick_get(eoir_engine engine, const char* sensor, int32
                                    eoir_pick* pick_out, double* wavelengths_um, double* spectral_radiance,
                                    size_t capacity, size_t* count_out);
 
+/* ------------------------------------------------------ targets and truth */
+/* Sensor-to-target metrics (spec 5.13, Table 2) are data providers of group
+ * "EOIR Sensor-to-Target Metrics" read with eoir_provider_get and a target.
+ * The SNR is 0 while the target is outside the field of view or hidden
+ * behind another object. */
+
+/* The SNR access constraint (spec 7.8): the SNR of `target` seen by `sensor`
+ * at `time` (NULL: the engine time; otherwise the engine time is set to it
+ * first, and objects move from their last pushed states). Hosts call it
+ * from their access computation as a constraint plugin. */
+EOIR_API eoir_status eoir_snr_constraint(eoir_engine engine, const char* sensor, const char* target,
+                                         const eoir_time* time, double* snr_out);
+
+/* Per-frame truth: each object in the field of the last frame of `sensor`. */
+typedef struct eoir_truth {
+  uint32_t struct_size;
+  char object[64];
+  double pixel_x;            /* sub-pixel position, 0 = centre of pixel 0 (columns as images) */
+  double pixel_y;            /* 0 = centre of the top row */
+  double range_m;
+  int32_t point_source;      /* 1: Omega_T < Omega_EIFOV (spec 5.13.1) */
+  int32_t visible;           /* not hidden behind another object */
+  double effective_irradiance;  /* W/cm^2, point sources (eq. 61) */
+  double effective_radiance;    /* W/(cm^2 sr), extended targets (eq. 74) */
+  double snr;                   /* eq. 65 or 76 */
+} eoir_truth;
+
+EOIR_API eoir_status eoir_truth_count(eoir_engine engine, const char* sensor, size_t* count_out);
+EOIR_API eoir_status eoir_truth_get(eoir_engine engine, const char* sensor, size_t index, eoir_truth* truth_out);
+
 /* ------------------------------------------------------------------- plugin */
 /* The host's services, passed to the plugin entry point. Any pointer may be
  * NULL. */
@@ -393,6 +423,10 @@ typedef struct eoir_api_v1 {
   eoir_status (*image_get_bytes)(eoir_engine, const char*, int32_t, uint8_t*, size_t);
   eoir_status (*pick_get)(eoir_engine, const char*, int32_t, uint32_t, uint32_t, eoir_pick*, double*, double*,
                           size_t, size_t*);
+  /* appended in 1.2 (targets) */
+  eoir_status (*snr_constraint)(eoir_engine, const char*, const char*, const eoir_time*, double*);
+  eoir_status (*truth_count)(eoir_engine, const char*, size_t*);
+  eoir_status (*truth_get)(eoir_engine, const char*, size_t, eoir_truth*);
 } eoir_api_v1;
 
 /* The plugin's one entry point (resolved by name with dlsym). Returns, in

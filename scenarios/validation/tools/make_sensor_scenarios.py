@@ -144,3 +144,66 @@ write("valid_sens_point_src_target.json", {
                                     diffraction_wavelength_um=10.0, integration_time_ms=10.0,
                                     sensitivity_quantity="irradiance", sensitivity_pairs=[10.0, 1e-18],
                                     noise_enabled=False)}]})
+
+# 7.7.1: a sensor 100 km up (Aircraft3) looks straight down at a 1 m sphere
+# at 350 K (Aircraft2, 1.6 km up) against a 300 K background (Aircraft1)
+# that fills the field. The background is the top of a sphere of radius
+# 1000 km whose top is at 0 km, flat to 0.1 m across the field. The sensor
+# is the Table 3 geometry in the 8-12 um band: pitch 100.2207 um, f = 147 cm,
+# F/3.5, lambda_diff 10 um (ensquared energy 0.86396), NEI 1e-18 W/cm^2 at
+# 10 ms, saturation off (the background alone exceeds an SEI of 1e-15).
+def geodetic(name, alt_m, props):
+    return {"name": name, "kind": "aircraft",
+            "motion": {"type": "fixed_geodetic", "lat_deg": 0.0, "lon_deg": 0.0, "alt_m": alt_m},
+            "properties": props}
+
+write("valid_sens_pt_src_tgt_uniform_bkg.json", {
+    "$schema": "../../schemas/scenario.schema.json", "format": "eoir-scenario", "version": 1,
+    "name": "Valid_Sens_PtSrcTgtUniformBkg",
+    "description": "Spec 7.7.1: a sensor on Aircraft3 (100 km up) views a 1 m gray-body sphere (Aircraft2, 1.6 km "
+                   "up, 350 K) against a uniform 300 K background (Aircraft1) that fills the field; 8-12 um, 50 "
+                   "intervals, NEI 1e-18 W/cm^2, peak irradiance responsivity 3.779e20 e-/(W/cm^2).",
+    "start": "2010-08-25T18:00:00Z", "stop": "2010-08-25T18:05:00Z", "step_s": 60,
+    "objects": [
+        geodetic("Aircraft1", -1000e3, {"shape": "sphere", "dimensions_m": [1000e3], "material": "gray_body",
+                                        "reflectance": 0.0, "temperature_K": 300.0}),
+        geodetic("Aircraft2", 1.6e3, {"shape": "sphere", "dimensions_m": [1.0], "material": "gray_body",
+                                      "reflectance": 0.0, "temperature_K": 350.0}),
+        geodetic("Aircraft3", 100e3, {"shape": "none"}),
+    ],
+    "sensors": [{"name": "Sensor1", "parent": "Aircraft3", "pointing": {"type": "target", "target": "Aircraft2"},
+                 "parameters": dict(lwir, horizontal_pixels=128, vertical_pixels=128, horizontal_fov_deg=0.5,
+                                    vertical_fov_deg=0.5, focal_length_cm=147.0, f_number=3.5,
+                                    diffraction_wavelength_um=10.0, integration_time_ms=10.0,
+                                    sensitivity_quantity="irradiance", sensitivity_pairs=[10.0, 1e-18],
+                                    saturation_enabled=False)}]})
+
+# 7.8: a nadir-pointing 24 x 24 deg sensor on a geostationary Satellite1
+# watches a LEO Satellite2 (a 2 m sphere at 300 K) for 24 hours; against the
+# 288 K Earth the contrast is nearly nil, against space the SNR is ~5-9.
+write("valid_sens_snr_access.json", {
+    "$schema": "../../schemas/scenario.schema.json", "format": "eoir-scenario", "version": 1,
+    "name": "Valid_Sens_SNR_Access",
+    "description": "Spec 7.8 (ERRATA: the sensor is on Satellite1, the target is Satellite2): a nadir-pointing "
+                   "24 x 24 deg sensor, 8-12 um, on a geostationary satellite; the target is a LEO satellite at "
+                   "300 K seen against the 288 K Earth (SNR ~0) or space (SNR ~5-9).",
+    "start": "2010-12-08T22:00:00Z", "stop": "2010-12-09T22:00:00Z", "step_s": 60,
+    "central_bodies": [{"name": "Earth", "properties": {"temperature_K": 288.0}}],
+    "objects": [
+        {"name": "Satellite1", "kind": "satellite",
+         "motion": {"type": "kepler", "central_body": "Earth", "semi_major_axis_km": 42164.17, "eccentricity": 0.0,
+                    "inclination_deg": 0.0, "raan_deg": 0.0, "arg_perigee_deg": 0.0, "true_anomaly_deg": 0.0,
+                    "epoch": "2010-12-08T22:00:00Z"},
+         "attitude": {"type": "nadir"}, "properties": {"shape": "none"}},
+        {"name": "Satellite2", "kind": "satellite",
+         "motion": {"type": "kepler", "central_body": "Earth", "semi_major_axis_km": 7000.0, "eccentricity": 0.001,
+                    "inclination_deg": 60.0, "raan_deg": 20.0, "arg_perigee_deg": 0.0, "true_anomaly_deg": 0.0,
+                    "epoch": "2010-12-08T22:00:00Z"},
+         "properties": {"shape": "sphere", "dimensions_m": [2.0], "material": "gray_body", "reflectance": 0.0,
+                        "temperature_K": 300.0}}],
+    "sensors": [{"name": "Sensor1", "parent": "Satellite1", "pointing": {"type": "nadir"},
+                 "parameters": dict(lwir, spectral_intervals=10, horizontal_pixels=256, vertical_pixels=256,
+                                    horizontal_fov_deg=24.0, vertical_fov_deg=24.0, focal_length_cm=10.0,
+                                    f_number=2.0, diffraction_wavelength_um=10.0, integration_time_ms=10.0,
+                                    sensitivity_quantity="irradiance", sensitivity_pairs=[10.0, 4e-18],
+                                    saturation_enabled=False)}]})

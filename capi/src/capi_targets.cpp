@@ -1,0 +1,60 @@
+// The SNR access constraint and the per-frame truth (spec 5.13, 7.8).
+#include <cstdio>
+#include <cstring>
+
+#include "capi_internal.hpp"
+
+using namespace eoir;
+using eoir::capi::guarded;
+using eoir::capi::need;
+using eoir::capi::str;
+
+extern "C" {
+
+EOIR_API eoir_status eoir_snr_constraint(eoir_engine engine, const char* sensor, const char* target,
+                                         const eoir_time* time, double* snr_out) {
+  return guarded([&] {
+    Engine& e = capi::engine_of(engine);
+    need(snr_out, "snr_out");
+    const std::string s = str(sensor, "sensor"), t = str(target, "target");
+    if (time) {
+      need(time, "time");
+      if (time->scale < EOIR_TIME_UTC || time->scale > EOIR_TIME_TDB)
+        throw Error(Status::out_of_range, "time.scale: unknown time scale " + std::to_string(time->scale));
+      e.set_time(EngineTime::from(JulianDate{static_cast<TimeScale>(time->scale), time->jd1, time->jd2}));
+    }
+    *snr_out = e.target_metrics(s, t).snr;
+  });
+}
+
+EOIR_API eoir_status eoir_truth_count(eoir_engine engine, const char* sensor, size_t* count_out) {
+  return guarded([&] {
+    need(count_out, "count_out");
+    *count_out = capi::engine_of(engine).truth(str(sensor, "sensor")).size();
+  });
+}
+
+EOIR_API eoir_status eoir_truth_get(eoir_engine engine, const char* sensor, size_t index, eoir_truth* out) {
+  return guarded([&] {
+    const auto& rows = capi::engine_of(engine).truth(str(sensor, "sensor"));
+    need(out, "truth_out");
+    capi::need_size(out->struct_size, sizeof(eoir_truth), "truth_out");
+    if (index >= rows.size())
+      throw Error(Status::out_of_range, "index: " + std::to_string(index) + " >= truth count " +
+                                            std::to_string(rows.size()));
+    const auto& [name, t] = rows[index];
+    const uint32_t size = out->struct_size;
+    std::memset(out, 0, sizeof(eoir_truth));
+    out->struct_size = size;
+    std::snprintf(out->object, sizeof out->object, "%s", name.c_str());
+    out->pixel_x = t.pixel_x;
+    out->pixel_y = t.pixel_y;
+    out->range_m = t.range_km * 1e3;
+    out->point_source = t.point_source ? 1 : 0;
+    out->visible = t.visible ? 1 : 0;
+    out->effective_irradiance = t.effective_target_irradiance_W_cm2;
+    out->effective_radiance = t.effective_target_radiance_W_cm2_sr;
+    out->snr = t.snr;
+  });
+}
+}

@@ -1,0 +1,74 @@
+#include "scene/placement.hpp"
+
+#include <algorithm>
+
+#include "core/frames.hpp"
+#include "geometry/projected_area.hpp"
+#include "geometry/shape_intersect.hpp"
+#include "universe/object_motion.hpp"
+
+namespace eoir::scene {
+namespace {
+// Default patch edge (spec 4.2.3: Earth tessellations about 785 km on a side,
+// other central bodies the same number of patches; other objects an eighth of
+// their largest dimension).
+double patch_size_m(const universe::Object& o) {
+  if (o.body.patch_size_m > 0) return o.body.patch_size_m;
+  if (o.kind == universe::ObjectKind::central_body) return 785.0e3 * o.body.dimensions_m[0] / 6378137.0;
+  double size = 0;
+  for (double d : o.body.dimensions_m) size = std::max(size, d);
+  return std::max(size, 1e-6) / 8.0;
+}
+}  // namespace
+
+std::vector<geometry::ShapePart> shape_parts(const universe::Object& o) {
+  geometry::ShapePart part;
+  part.shape = o.body.shape;
+  part.dimensions_m = o.body.dimensions_m;
+  part.temperature_K = o.body.temperature_K;
+  part.reflectance = o.body.reflectance;
+  return {part};
+}
+
+std::optional<Placement> place_object(const universe::Universe& universe, const universe::Object& o,
+                                      const EngineTime& t, const geometry::Vec3& observer_position_m,
+                                      std::int32_t object_id) {
+  using universe::ObjectKind;
+  if (o.kind == ObjectKind::sensor || o.kind == ObjectKind::star_field || o.body.shape == "none") return std::nullopt;
+  if (o.kind != ObjectKind::central_body && !o.state.valid) return std::nullopt;  // not yet placed by the host
+  const universe::Kinematics k = universe::kinematics_at(universe, o, t);
+  Placement pl;
+  geometry::PlacedObject& po = pl.placed;
+  po.object_id = object_id;
+  po.parts = shape_parts(o);
+  po.position_m = k.position_m - observer_position_m;
+  po.central_body = o.kind == ObjectKind::central_body;
+  const bool earth = po.central_body && o.name == "Earth";
+  // Central bodies: Earth's body frame is Earth-fixed; the others keep J2000
+  // axes (no rotation models yet).
+  if (earth) po.body_to_frame = frames::j2000_to_earth_fixed(t).transpose();
+  else if (po.central_body) po.body_to_frame.setIdentity();
+  else po.body_to_frame = k.attitude.toRotationMatrix();
+  pl.surface = FrameObject{o.name, po.central_body, earth, SurfacePoint{o.body.temperature_K, o.body.reflectance}};
+  pl.range_m = po.position_m.norm();
+  for (const auto& part : po.parts)
+    pl.bounding_radius_m = std::max(pl.bounding_radius_m, part.offset_m.norm() + geometry::shape_bounding_radius_m(
+                                                                                      geometry::shape_geom(part)));
+  return pl;
+}
+
+void tessellate_placement(const universe::Object& o, Placement& placement) {
+  placement.placed.tessellation = geometry::tessellate(placement.placed.parts, patch_size_m(o));
+}
+
+double projected_solid_angle_sr(const Placement& pl) {
+  const geometry::PlacedObject& po = pl.placed;
+  const geometry::Vec3 toward_observer_body = -(po.body_to_frame.transpose() * po.position_m).normalized();
+  return geometry::projected_area_m2(po.parts, po.tessellation, toward_observer_body) / (pl.range_m * pl.range_m);
+}
+
+double point_irradiance_W_cm2(const Placement& pl, const SpectralView& view) {
+  return effective_radiance(pl.surface.surface, view) * projected_solid_angle_sr(pl);
+}
+
+}  // namespace eoir::scene

@@ -1,0 +1,185 @@
+// Frame time of the whole pipeline (DESIGN.md 1, steps 1-7), split by stage
+// from Frame::timings, on a GEO-looks-at-Earth scene (bench_scene.hpp): the
+// Earth fills most of a 20 deg field, the Moon is in the universe, three LEO
+// satellites are in the field as point sources. 8-12 um, noise on.
+//
+// Issue targets (not asserted): 256^2 at 10 intervals <= 150 ms, 512^2 <=
+// 600 ms, peak memory < 1 GiB.
+//
+// Also the speed-vs-accuracy knobs of DESIGN.md 4 that need a frame:
+//  - BM_FrameSpectral: spectral_intervals with band_integration "grid" against
+//    "exact" (the reference), error = relative RMS of the noise-free pixel
+//    means against the exact frame;
+//  - BM_FramePatchSize: tessellation patch edge of an extended satellite seen
+//    close up, error = relative RMS of the pixel means against the finest.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "bench_scene.hpp"
+
+namespace {
+
+using eoir::bench::SensorSetup;
+
+struct StageSums {
+  double setup = 0, rays = 0, shading = 0, convolution = 0, points = 0, noise = 0, display = 0, total = 0;
+  double ray_count = 0;
+  int n = 0;
+  void add(const eoir::scene::FrameTimings& t) {
+    setup += t.setup_s;
+    rays += t.ray_casting_s;
+    shading += t.shading_s;
+    convolution += t.convolution_s;
+    points += t.point_sources_s;
+    noise += t.noise_s;
+    display += t.display_s;
+    total += t.total_s();
+    ray_count += static_cast<double>(t.rays);
+    ++n;
+  }
+  // Stage times in ms (averaged over frames), Mrays/s of the casting stage.
+  void report(benchmark::State& state) const {
+    if (n == 0) return;
+    const double k = 1e3 / n;
+    state.counters["setup_ms"] = setup * k;
+    state.counters["ray_casting_ms"] = rays * k;
+    state.counters["shading_ms"] = shading * k;
+    state.counters["convolution_ms"] = convolution * k;
+    state.counters["point_sources_ms"] = points * k;
+    state.counters["noise_ms"] = noise * k;
+    state.counters["display_ms"] = display * k;
+    state.counters["stages_total_ms"] = total * k;
+    state.counters["rays"] = ray_count / n;
+    state.counters["Mrays_per_s"] = rays > 0 ? ray_count / rays / 1e6 : 0.0;
+  }
+};
+
+// Relative RMS difference of two images (RMS of the difference over the RMS
+// of the reference).
+double relative_rms(const std::vector<double>& a, const std::vector<double>& ref) {
+  if (a.size() != ref.size() || ref.empty()) return NAN;
+  double d2 = 0, r2 = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    d2 += (a[i] - ref[i]) * (a[i] - ref[i]);
+    r2 += ref[i] * ref[i];
+  }
+  return r2 > 0 ? std::sqrt(d2 / r2) : NAN;
+}
+
+double relative_sum(const std::vector<double>& a, const std::vector<double>& ref) {
+  double s = 0, r = 0;
+  for (double v : a) s += v;
+  for (double v : ref) r += v;
+  return r != 0 ? (s - r) / r : NAN;
+}
+
+// args: pixels per side, spectral intervals.
+void BM_Frame(benchmark::State& state) {
+  SensorSetup s;
+  s.pixels = state.range(0);
+  s.intervals = state.range(1);
+  auto engine = eoir::bench::make_geo_scene(s);
+  engine->render("Sensor");  // warm-up: static metrics, FFT plans, BVH caches
+  StageSums sums;
+  for (auto _ : state) {
+    const eoir::scene::Frame& f = engine->render("Sensor");
+    benchmark::DoNotOptimize(f.sensor_electrons.data());
+    sums.add(f.timings);
+  }
+  sums.report(state);
+  state.counters["pixels"] = static_cast<double>(s.pixels * s.pixels);
+  state.counters["point_sources"] = static_cast<double>(engine->frame("Sensor").point_sources.size());
+  state.counters["peak_rss_MiB"] = eoir::bench::peak_rss_mib();
+}
+
+// The exact-band reference frames' noise-free pixel means, per pixel count.
+const std::vector<double>& exact_reference(std::int64_t pixels) {
+  static std::map<std::int64_t, std::vector<double>> cache;
+  auto it = cache.find(pixels);
+  if (it != cache.end()) return it->second;
+  SensorSetup s;
+  s.pixels = pixels;
+  s.band_integration = "exact";
+  auto engine = eoir::bench::make_geo_scene(s);
+  return cache[pixels] = engine->render("Sensor").sensor_mean;
+}
+
+// args: pixels per side, spectral intervals (0 = band_integration "exact").
+void BM_FrameSpectral(benchmark::State& state) {
+  SensorSetup s;
+  s.pixels = state.range(0);
+  s.intervals = state.range(1) > 0 ? state.range(1) : 10;
+  s.band_integration = state.range(1) > 0 ? "grid" : "exact";
+  const std::vector<double>& ref = exact_reference(s.pixels);
+  auto engine = eoir::bench::make_geo_scene(s);
+  engine->render("Sensor");
+  StageSums sums;
+  for (auto _ : state) {
+    const eoir::scene::Frame& f = engine->render("Sensor");
+    benchmark::DoNotOptimize(f.sensor_electrons.data());
+    sums.add(f.timings);
+  }
+  sums.report(state);
+  const auto& mean = engine->frame("Sensor").sensor_mean;
+  state.counters["rel_rms_error_vs_exact"] = relative_rms(mean, ref);
+  state.counters["rel_sum_error_vs_exact"] = relative_sum(mean, ref);
+}
+
+// An extended 10 m sphere (radius 5 m) 200 m in front of a 5 deg, 256^2
+// sensor on a LEO satellite in the Sun: tessellation patch edge vs frame time.
+std::unique_ptr<eoir::Engine> make_close_scene(double patch_m) {
+  auto e = std::make_unique<eoir::Engine>();
+  e->set_time(eoir::bench::bench_epoch());
+  e->universe().add(eoir::universe::ObjectKind::central_body, "Earth");
+  // Host on the y axis at 7000 km (Sun on +x lights the target's side), looking +z.
+  const double host[3] = {0, 7000e3, 0}, v[3] = {0, 0, 7500};
+  eoir::bench::add_satellite(*e, "Host", "none", {}, 0, host, v);
+  const double target[3] = {0, 7000e3, 200};
+  auto& t = eoir::bench::add_satellite(*e, "Target", "sphere", {5.0}, 290.0, target, v);
+  eoir::universe::set_property(t, "patch_size_m", eoir::Value(patch_m));
+  SensorSetup s;
+  s.pixels = 256;
+  s.fov_deg = 5.0;
+  eoir::bench::add_sensor(*e, "Sensor", "Host", s, Eigen::Vector3d::UnitZ());
+  return e;
+}
+
+double patch_arg_m(std::int64_t centimetres) { return static_cast<double>(centimetres) / 100.0; }
+
+// arg: patch edge in cm (0 = automatic).
+void BM_FramePatchSize(benchmark::State& state) {
+  static const std::vector<double> ref = make_close_scene(0.05)->render("Sensor").sensor_mean;
+  auto engine = make_close_scene(patch_arg_m(state.range(0)));
+  engine->render("Sensor");
+  StageSums sums;
+  for (auto _ : state) {
+    const eoir::scene::Frame& f = engine->render("Sensor");
+    benchmark::DoNotOptimize(f.sensor_electrons.data());
+    sums.add(f.timings);
+  }
+  sums.report(state);
+  state.counters["patch_m"] = patch_arg_m(state.range(0));
+  state.counters["rel_rms_error_vs_5cm"] = relative_rms(engine->frame("Sensor").sensor_mean, ref);
+}
+
+}  // namespace
+
+BENCHMARK(BM_Frame)
+    ->ArgsProduct({{128, 256, 512, 1024}, {10, 100}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK(BM_FrameSpectral)
+    ->ArgsProduct({{256}, {1, 2, 3, 5, 10, 20, 50, 100, 0}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK(BM_FramePatchSize)
+    ->Arg(0)->Arg(400)->Arg(200)->Arg(100)->Arg(50)->Arg(25)->Arg(10)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK_MAIN();

@@ -1,0 +1,102 @@
+// Scenes shared by the benchmarks: a sensor on a GEO-radius satellite looking
+// at the Earth (the Moon in the universe, LEO satellites in the field), built
+// directly on eoir::Engine.
+#pragma once
+#include <sys/resource.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "engine.hpp"
+#include "universe/object_motion.hpp"
+#include "universe/object_properties.hpp"
+
+namespace eoir::bench {
+
+// 2010-03-30T02:25:00Z (the spec 6.1.1 V_Test1 epoch): the Sun is near +x
+// J2000, so a sensor on +x sees the day side.
+inline EngineTime bench_epoch() { return EngineTime::from(utc_from_iso("2010-03-30T02:25:00Z")); }
+
+// Peak resident set size of this process so far, MiB (getrusage: KiB on Linux).
+inline double peak_rss_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+
+inline void push_j2000(universe::Object& o, const EngineTime& t, const double pos[3], const double vel[3],
+                       const double q_wxyz[4]) {
+  universe::push_state(o, t, 0, pos, vel, q_wxyz);
+}
+
+// A satellite (shape/dimensions/temperature) at J2000 position `pos_m`.
+inline universe::Object& add_satellite(Engine& e, const std::string& name, const std::string& shape,
+                                       const std::vector<double>& dims, double temperature_K, const double pos_m[3],
+                                       const double vel_m_s[3]) {
+  universe::Object& o = e.universe().add(universe::ObjectKind::satellite, name);
+  universe::set_property(o, "shape", Value(shape));
+  if (shape != "none") {
+    universe::set_property(o, "dimensions_m", Value(dims));
+    universe::set_property(o, "temperature_K", Value(temperature_K));
+    universe::set_property(o, "reflectance", Value(0.2));
+  }
+  const double q[4] = {1, 0, 0, 0};
+  push_j2000(o, e.time(), pos_m, vel_m_s, q);
+  return o;
+}
+
+struct SensorSetup {
+  std::int64_t pixels = 256;
+  double fov_deg = 20.0;
+  std::int64_t intervals = 10;
+  std::string band_integration = "grid";
+  bool noise = true;
+};
+
+// A sensor named `name` on `parent`, looking along `look` (J2000 unit vector;
+// body +z goes there).
+inline universe::Object& add_sensor(Engine& e, const std::string& name, const std::string& parent,
+                                    const SensorSetup& s, const Eigen::Vector3d& look) {
+  universe::Object& o = e.universe().add(universe::ObjectKind::sensor, name, parent);
+  universe::set_property(o, "horizontal_pixels", Value(s.pixels));
+  universe::set_property(o, "vertical_pixels", Value(s.pixels));
+  universe::set_property(o, "horizontal_fov_deg", Value(s.fov_deg));
+  universe::set_property(o, "vertical_fov_deg", Value(s.fov_deg));
+  universe::set_property(o, "band_low_um", Value(8.0));
+  universe::set_property(o, "band_high_um", Value(12.0));
+  universe::set_property(o, "spectral_intervals", Value(s.intervals));
+  universe::set_property(o, "focal_length_cm", Value(10.0));
+  universe::set_property(o, "f_number", Value(2.0));
+  universe::set_property(o, "diffraction_wavelength_um", Value(10.0));
+  universe::set_property(o, "band_integration", Value(s.band_integration));
+  universe::set_property(o, "noise_enabled", Value(s.noise));
+  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), look.normalized());
+  const double qa[4] = {q.w(), q.x(), q.y(), q.z()};
+  const double zero[3] = {0, 0, 0};
+  universe::push_state(o, e.time(), 0, zero, zero, qa);
+  return o;
+}
+
+// The frame scene: Earth, Moon, a GEO-radius host on +x J2000 carrying
+// "Sensor" (looking at the Earth's centre), and three LEO satellites (two
+// 2 m spheres and a 2 x 1 x 1 m box) between it and the Earth, inside the field.
+inline std::unique_ptr<Engine> make_geo_scene(const SensorSetup& s, std::uint64_t seed = 1) {
+  EngineOptions opt;
+  opt.seed = seed;
+  auto e = std::make_unique<Engine>(opt);
+  e->set_time(bench_epoch());
+  e->universe().add(universe::ObjectKind::central_body, "Earth");
+  e->universe().add(universe::ObjectKind::central_body, "Moon");
+  const double host[3] = {42164.2e3, 0, 0}, host_v[3] = {0, 3074.7, 0};
+  add_satellite(*e, "Host", "none", {}, 0, host, host_v);
+  const double p1[3] = {6978e3, 1200e3, 400e3}, p2[3] = {7000e3, -900e3, -1500e3}, p3[3] = {6900e3, 300e3, -2000e3};
+  const double v1[3] = {0, 0, 7500}, v2[3] = {0, 7500, 0}, v3[3] = {0, 5300, 5300};
+  add_satellite(*e, "Leo1", "sphere", {1.0}, 300.0, p1, v1);
+  add_satellite(*e, "Leo2", "sphere", {1.0}, 280.0, p2, v2);
+  add_satellite(*e, "Leo3", "box", {2.0, 1.0, 1.0}, 320.0, p3, v3);
+  add_sensor(*e, "Sensor", "Host", s, -Eigen::Vector3d::UnitX());
+  return e;
+}
+
+}  // namespace eoir::bench

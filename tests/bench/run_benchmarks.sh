@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Runs every benchmark of the engine and writes tests/bench/results/: one
+# Google Benchmark JSON file per run, SUMMARY.md and PNG charts (summarise.py).
+# Builds nothing: build first (cmake --build <build dir>).
+#
+#   tests/bench/run_benchmarks.sh [build dir]     (default: build)
+#
+# bench_frame runs once per frame case, each in its own process, so that the
+# peak RSS it reports (getrusage) belongs to that case alone. Total run time
+# on a 2-core machine: about 5 minutes.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+build="${1:-build}"
+case "$build" in /*) ;; *) build="$root/$build" ;; esac
+results="$here/results"
+python="${PYTHON:-/usr/bin/python3}"
+
+for exe in tests/bench/bench_static_metrics tests/bench/bench_frame tests/bench/bench_state \
+           tests/bench/bench_band tests/geometry/bench_ray_caster; do
+  [ -x "$build/$exe" ] || { echo "missing $build/$exe: build first" >&2; exit 1; }
+done
+mkdir -p "$results"
+rm -f "$results"/*.json
+
+# Machine and load, for SUMMARY.md.
+{
+  echo "date=$(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  echo "nproc=$(nproc)"
+  echo "cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
+  echo "mem=$(free -g | awk '/^Mem:/ {print $2 " GiB"}')"
+  echo "uptime_before=$(uptime)"
+  echo "commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)$(git -C "$root" diff --quiet 2>/dev/null || echo ' (+ uncommitted changes)')"
+  echo "build_type=$(grep -m1 '^CMAKE_BUILD_TYPE' "$build/CMakeCache.txt" | cut -d= -f2)"
+  echo "compiler=$(grep -m1 '^CMAKE_CXX_COMPILER:' "$build/CMakeCache.txt" | cut -d= -f2) $(grep -m1 '^CMAKE_CXX_COMPILER_VERSION' "$build/CMakeFiles/"*/CMakeCXXCompiler.cmake 2>/dev/null | head -1 | sed 's/.*"\(.*\)".*/\1/')"
+} > "$results/machine.txt"
+
+run() {  # run <name> <exe> [args...]
+  local name="$1" exe="$2"; shift 2
+  echo "== $name" >&2
+  "$build/$exe" --benchmark_out="$results/$name.json" --benchmark_out_format=json "$@" >&2
+}
+
+run bench_static_metrics tests/bench/bench_static_metrics --benchmark_min_time=0.2
+run bench_band tests/bench/bench_band --benchmark_min_time=0.05
+run bench_state tests/bench/bench_state --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+run bench_ray_caster tests/geometry/bench_ray_caster --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+for px in 128 256 512 1024; do
+  for n in 10 100; do
+    if [ "$px" = 1024 ]; then reps=1; min=0.01; else reps=3; min=0.5; fi
+    run "bench_frame_${px}_${n}" tests/bench/bench_frame --benchmark_filter="^BM_Frame/$px/$n/" \
+      --benchmark_min_time=$min --benchmark_repetitions=$reps --benchmark_report_aggregates_only=$([ $reps -gt 1 ] && echo true || echo false)
+  done
+done
+run bench_frame_fidelity tests/bench/bench_frame --benchmark_filter='^BM_Frame(Spectral|PatchSize)/' \
+  --benchmark_min_time=0.3
+
+echo "uptime_after=$(uptime)" >> "$results/machine.txt"
+"$python" "$here/summarise.py" "$results"
+echo "wrote $results/SUMMARY.md" >&2

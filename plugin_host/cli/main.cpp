@@ -5,6 +5,7 @@
 // Exit status: 0 success, 1 bad command line, 2 bad scenario or an engine
 // error (the message names the JSON path or the engine's complaint).
 #include <chrono>
+#include <cstddef>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +19,9 @@
 
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
+#include "access.hpp"
 #include "engine.hpp"
 #include "iso_time.hpp"
 #include "report.hpp"
@@ -59,6 +63,12 @@ const char* const kUsage =
     "                         _electrons.fits, _mean_electrons.fits, _scene.png, _sensor.png\n"
     "                         and a summary.json into DIR (created if missing); the times\n"
     "                         default to the scenario's start, stop and step_s\n"
+    "  access SCENARIO --sensor NAME --target NAME --min-snr X\n"
+    "         [--start ISO] [--stop ISO] [--step SECONDS] [--format json|csv] [--out FILE] [--quiet]\n"
+    "                         intervals where the SNR of the target seen by the sensor is >= X\n"
+    "                         (spec 7.8 SNR access constraint): the SNR is sampled every --step\n"
+    "                         seconds (default: the scenario's start, stop and step_s) and each\n"
+    "                         crossing is refined by bisection to 1 ms; times with milliseconds\n"
     "  validate SCENARIO      check a scenario file and load it into an engine\n"
     "  groups                 list the data-provider groups and their elements\n"
     "  --help, -h             this help\n"
@@ -289,6 +299,170 @@ int cmd_run(const std::vector<std::string>& args, const char* library) {
   return 0;
 }
 
+// ISO time with milliseconds always written ("...:05.000Z").
+std::string format_iso_ms(double t_s) {
+  std::string s = format_iso(t_s);
+  if (s.find('.') == std::string::npos && !s.empty() && s.back() == 'Z') s.insert(s.size() - 1, ".000");
+  return s;
+}
+
+// True if the function table has the entry at byte offset `offset`.
+bool api_has(const eoir_api_v1& api, std::size_t offset_end) { return api.struct_size >= offset_end; }
+
+int cmd_access(const std::vector<std::string>& args, const char* library) {
+  std::optional<std::string> scenario_file, sensor, target, min_snr_text, start, stop, step, out_file;
+  std::string format = "json";
+  bool quiet = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    const auto value = [&](const char* opt) {
+      if (i + 1 >= args.size()) throw UsageError(std::string(opt) + " needs a value");
+      return args[++i];
+    };
+    if (a == "--sensor") sensor = value("--sensor");
+    else if (a == "--target") target = value("--target");
+    else if (a == "--min-snr") min_snr_text = value("--min-snr");
+    else if (a == "--start") start = value("--start");
+    else if (a == "--stop") stop = value("--stop");
+    else if (a == "--step") step = value("--step");
+    else if (a == "--format") format = value("--format");
+    else if (a == "--out") out_file = value("--out");
+    else if (a == "--quiet" || a == "-q") quiet = true;
+    else if (a.size() > 1 && a[0] == '-' && !(a[1] >= '0' && a[1] <= '9')) throw UsageError("access: unknown option " + a);
+    else if (!scenario_file) scenario_file = a;
+    else throw UsageError("access: unexpected argument '" + a + "'");
+  }
+  if (!scenario_file) throw UsageError("access: missing SCENARIO");
+  if (!sensor) throw UsageError("access: missing --sensor NAME");
+  if (!target) throw UsageError("access: missing --target NAME");
+  if (!min_snr_text) throw UsageError("access: missing --min-snr X");
+  if (format != "json" && format != "csv") throw UsageError("--format: '" + format + "' is not json or csv");
+  double min_snr = 0;
+  {
+    char* end = nullptr;
+    const std::string& m = *min_snr_text;
+    min_snr = std::strtod(m.c_str(), &end);
+    if (m.empty() || end == nullptr || *end != '\0' || !std::isfinite(min_snr))
+      throw UsageError("--min-snr: '" + m + "' is not a finite number");
+  }
+  std::optional<double> step_s;
+  if (step) {
+    step_s = parse_seconds(*step, "--step");
+    if (!(*step_s > 0)) throw UsageError("--step: must be positive, not " + *step);
+  }
+  std::optional<double> start_s, stop_s;
+  if (start) start_s = parse_time_option(*start, "--start");
+  if (stop) stop_s = parse_time_option(*stop, "--stop");
+  if (start_s && stop_s && *stop_s < *start_s)
+    throw UsageError("--stop " + *stop + " is before --start " + *start);
+
+  const Scenario sc = load_scenario(*scenario_file);
+  // Times in whole milliseconds on the host time line (iso_time.hpp).
+  const auto to_ms = [](double t) { return static_cast<int64_t>(std::llround(t * 1000.0)); };
+  const int64_t t0 = to_ms(start_s.value_or(sc.start_s));
+  const int64_t t1 = to_ms(stop_s.value_or(start_s && *start_s > sc.stop_s ? start_s.value_or(sc.start_s) : sc.stop_s));
+  if (t1 < t0)
+    throw UsageError("--stop " + format_iso(static_cast<double>(t1) / 1000.0) + " is before the start " +
+                     format_iso(static_cast<double>(t0) / 1000.0));
+  const double dt = step_s.value_or(sc.step_s);
+  const int64_t dt_ms = to_ms(dt);
+  if (dt_ms < 1) throw UsageError("--step: " + (step ? *step : std::to_string(dt)) + " s is below the 1 ms resolution of times");
+  std::vector<int64_t> samples;
+  for (int64_t t = t0; t <= t1; t += dt_ms) {
+    samples.push_back(t);
+    if (samples.size() > 10000000) throw UsageError("access: more than 10^7 steps; use a larger --step");
+  }
+  if (samples.back() < t1) samples.push_back(t1);
+
+  Engine engine(library);
+  Session session(engine, sc);
+  const eoir_api_v1& api = engine.api();
+  if (!api_has(api, offsetof(eoir_api_v1, snr_constraint) + sizeof api.snr_constraint) || api.snr_constraint == nullptr)
+    throw std::runtime_error(std::string("the engine library ") + engine.library_path() +
+                             " has no SNR constraint (C ABI 1.2 needed)");
+  const std::vector<std::string> sensors = engine_objects(engine, EOIR_KIND_SENSOR);
+  if (!contains(sensors, *sensor))
+    throw UsageError("--sensor: unknown sensor '" + *sensor + "' in " + *scenario_file + "; sensors: " + join(sensors));
+  const std::vector<std::string> objects = engine_objects(engine, 0);
+  if (!contains(objects, *target))
+    throw UsageError("--target: unknown object '" + *target + "' in " + *scenario_file + "; objects: " + join(objects));
+
+  const auto snr_at = [&](int64_t ms) {
+    const double t = static_cast<double>(ms) / 1000.0;
+    session.set_time(t);
+    const std::string iso = format_iso(t);
+    eoir_time time{};
+    engine.check(api.time_from_iso(iso.c_str(), &time), "time " + iso);
+    double snr = 0;
+    const eoir_status s = api.snr_constraint(engine.handle(), sensor->c_str(), target->c_str(), &time, &snr);
+    if (s == EOIR_ERR_NOT_ALLOWED) {
+      const SensorSpec* spec = sc.find_sensor(*sensor);
+      const bool parent = spec != nullptr && spec->parent == *target;
+      throw UsageError("--target: the engine refuses target '" + *target + "' for sensor '" + *sensor + "'" +
+                       (parent ? " (it is the sensor's parent)" : "") + ": " + api.last_error() + " (" +
+                       api.status_name(s) + ")");
+    }
+    engine.check(s, "SNR of " + *target + " seen by " + *sensor + " at " + iso);
+    return snr;
+  };
+
+  const auto began = std::chrono::steady_clock::now();
+  const bool tty = isatty(fileno(stderr)) != 0;
+  bool progress_open = false;
+  const auto progress = [&](const char* phase, std::size_t done, std::size_t total) {
+    if (quiet || total == 0) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    if (samples.size() <= 100 && elapsed <= 2.0) return;
+    const std::size_t every = std::max<std::size_t>(1, total / (tty ? 100 : 10));
+    if (done % every != 0 && done != total) return;
+    std::fprintf(stderr, "%seoir access: %s %zu/%zu (%zu %%)%s", tty ? "\r\033[K" : "",
+                 std::strcmp(phase, "sample") == 0 ? "sampled steps" : "refined boundaries", done, total,
+                 done * 100 / total, tty ? "" : "\n");
+    if (tty && done == total) std::fprintf(stderr, "\n");
+    progress_open = tty && done != total;
+  };
+  const AccessResult result =
+      find_access(samples, [&](int64_t ms) { const double v = snr_at(ms); return v >= min_snr; }, progress);
+  if (progress_open) std::fprintf(stderr, "\n");
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+
+  const double tolerance_s = 0.001;
+  std::ostringstream text;
+  if (format == "json") {
+    nlohmann::ordered_json doc;
+    doc["sensor"] = *sensor;
+    doc["target"] = *target;
+    doc["min_snr"] = min_snr;
+    doc["start"] = format_iso_ms(static_cast<double>(t0) / 1000.0);
+    doc["stop"] = format_iso_ms(static_cast<double>(t1) / 1000.0);
+    doc["step_s"] = static_cast<double>(dt_ms) / 1000.0;
+    doc["tolerance_s"] = tolerance_s;
+    doc["intervals"] = nlohmann::ordered_json::array();
+    for (const AccessInterval& iv : result.intervals) {
+      nlohmann::ordered_json j;
+      j["start"] = format_iso_ms(static_cast<double>(iv.start_ms) / 1000.0);
+      j["stop"] = format_iso_ms(static_cast<double>(iv.stop_ms) / 1000.0);
+      j["duration_s"] = static_cast<double>(iv.stop_ms - iv.start_ms) / 1000.0;
+      doc["intervals"].push_back(std::move(j));
+    }
+    doc["evaluations"] = result.evaluations;
+    text << doc.dump(2) << "\n";
+  } else {
+    text << "start,stop,duration_s\n";
+    for (const AccessInterval& iv : result.intervals) {
+      char d[64];
+      std::snprintf(d, sizeof d, "%.3f", static_cast<double>(iv.stop_ms - iv.start_ms) / 1000.0);
+      text << format_iso_ms(static_cast<double>(iv.start_ms) / 1000.0) << ","
+           << format_iso_ms(static_cast<double>(iv.stop_ms) / 1000.0) << "," << d << "\n";
+    }
+  }
+  emit(out_file, text.str());
+  if (!quiet)
+    std::fprintf(stderr, "eoir access: %zu interval%s with SNR >= %g, %zu SNR evaluations, %.2f s\n",
+                 result.intervals.size(), result.intervals.size() == 1 ? "" : "s", min_snr, result.evaluations, wall);
+  return 0;
+}
+
 int cmd_validate(const std::vector<std::string>& args, const char* library) {
   if (args.size() != 1) throw UsageError("validate: expected exactly one SCENARIO");
   const Scenario sc = load_scenario(args[0]);
@@ -383,6 +557,7 @@ int main(int argc, char** argv) {
     if (cmd == "--version") return cmd_version(library);
     if (cmd == "report") return cmd_report(rest, library);
     if (cmd == "run") return cmd_run(rest, library);
+    if (cmd == "access") return cmd_access(rest, library);
     if (cmd == "validate") return cmd_validate(rest, library);
     if (cmd == "groups") return cmd_groups(library);
     throw UsageError("unknown command '" + cmd + "'");

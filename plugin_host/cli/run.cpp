@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -122,6 +123,37 @@ class RunContext {
     std::vector<std::uint8_t> v(static_cast<std::size_t>(in.width) * in.height);
     engine_.check(engine_.api().image_get_bytes(engine_.handle(), sensor.c_str(), kind, v.data(), v.size()), where);
     return v;
+  }
+
+  // Per-frame truth (eoir_truth_count/get): every object in the field of
+  // the last frame, as a JSON array (schemas/truth.schema.json).
+  ojson truth(const std::string& sensor, const std::string& where) const {
+    const eoir_api_v1& api = engine_.api();
+    if (api.struct_size < offsetof(eoir_api_v1, truth_get) + sizeof api.truth_get || api.truth_count == nullptr ||
+        api.truth_get == nullptr)
+      throw EngineError(where + ": the engine library has no per-frame truth (C ABI 1.2 needed)", EOIR_ERR_ABI_MISMATCH);
+    std::size_t n = 0;
+    engine_.check(api.truth_count(engine_.handle(), sensor.c_str(), &n), where);
+    const auto num = [](double x) { return std::isfinite(x) ? ojson(x) : ojson(nullptr); };
+    ojson out = ojson::array();
+    for (std::size_t k = 0; k < n; ++k) {
+      eoir_truth t{};
+      t.struct_size = sizeof t;
+      engine_.check(api.truth_get(engine_.handle(), sensor.c_str(), k, &t), where + " [" + std::to_string(k) + "]");
+      t.object[sizeof t.object - 1] = '\0';
+      ojson o;
+      o["object"] = std::string(t.object);
+      o["pixel_x"] = num(t.pixel_x);
+      o["pixel_y"] = num(t.pixel_y);
+      o["range_m"] = num(t.range_m);
+      o["point_source"] = t.point_source != 0;
+      o["visible"] = t.visible != 0;
+      o["effective_irradiance"] = num(t.effective_irradiance);
+      o["effective_radiance"] = num(t.effective_radiance);
+      o["snr"] = num(t.snr);
+      out.push_back(std::move(o));
+    }
+    return out;
   }
 
   std::string iso_of(const eoir_image_info& in) const {
@@ -293,7 +325,7 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
       const std::string base = file_stem(s->name) + "_" + index_text + "_";
       const std::string f_rad = base + "radiance.fits", f_el = base + "electrons.fits",
                         f_mean = base + "mean_electrons.fits", f_scene = base + "scene.png",
-                        f_sensor = base + "sensor.png";
+                        f_sensor = base + "sensor.png", f_truth = base + "truth.json";
 
       const eoir_image_info in_rad = ctx.info(s->name, EOIR_IMAGE_SCENE_RADIANCE, where + ": scene radiance");
       const eoir_image_info in_el = ctx.info(s->name, EOIR_IMAGE_SENSOR_ELECTRONS, where + ": sensor electrons");
@@ -315,6 +347,9 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
                        ctx.header(*s, i, in_mean, "sensor_mean", "electrons", 1));
         io::write_png_gray8((dir / f_scene).string(), sd.data(), in_sd.width, in_sd.height);
         io::write_png_gray8((dir / f_sensor).string(), pd.data(), in_pd.width, in_pd.height);
+        const ojson truth = ctx.truth(s->name, where + ": truth");
+        const std::string truth_text = truth.dump(2) + "\n";
+        io::write_file_atomically((dir / f_truth).string(), truth_text.data(), truth_text.size());
       } catch (const io::ImageIoError& e) {
         throw std::runtime_error(std::string("cannot write frame ") + index_text + " of " + s->name + ": " +
                                  e.what());
@@ -325,7 +360,7 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
       fr["time"] = ctx.iso_of(in_el);
       fr["sensor"] = s->name;
       fr["files"] = {{"radiance", f_rad},   {"electrons", f_el},  {"mean_electrons", f_mean},
-                     {"scene_png", f_scene}, {"sensor_png", f_sensor}};
+                     {"scene_png", f_scene}, {"sensor_png", f_sensor}, {"truth", f_truth}};
       fr["scene_size"] = {{"width", in_rad.width}, {"height", in_rad.height}};
       fr["sensor_size"] = {{"width", in_el.width}, {"height", in_el.height}};
       fr["boresight_ra_deg"] = in_el.boresight_ra_deg;

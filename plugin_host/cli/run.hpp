@@ -25,6 +25,8 @@ struct RunOptions {
 //   <s>_<i:04d>_mean_electrons.fits  noise-free sensor response, electrons
 //   <s>_<i:04d>_scene.png            scene display bytes
 //   <s>_<i:04d>_sensor.png           sensor display bytes
+//   <s>_<i:04d>_truth.json           per-frame truth: the objects in the field
+//                                    (eoir_truth_get; schemas/truth.schema.json)
 // then summary.json. File names keep [A-Za-z0-9._-] of the sensor name and
 // replace other characters with '_'.
 // Throws EngineError, ScenarioError or std::runtime_error naming the problem.

@@ -88,4 +88,21 @@ double ScenarioHost::metric(const std::string& group, const std::string& element
   return v;
 }
 
+double ScenarioHost::target_metric(const std::string& element, const std::string& target, const std::string& sensor) {
+  double v = 0;
+  engine_->check(api().provider_get(handle(), "EOIR Sensor-to-Target Metrics", element.c_str(), sensor.c_str(),
+                                    target.c_str(), &v),
+                 "target metric " + element);
+  return v;
+}
+
+eoir_status ScenarioHost::try_target_metric(const std::string& element, const std::string& target,
+                                            const std::string& sensor, std::string& message) {
+  double v = 0;
+  const eoir_status st = api().provider_get(handle(), "EOIR Sensor-to-Target Metrics", element.c_str(),
+                                            sensor.c_str(), target.empty() ? nullptr : target.c_str(), &v);
+  message = api().last_error();
+  return st;
+}
+
 }  // namespace eoir::test

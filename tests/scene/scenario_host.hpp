@@ -44,6 +44,11 @@ class ScenarioHost {
   Image image(int kind, const std::string& sensor = "Sensor1");
   Pick pick(int x, int y, int space = 0, const std::string& sensor = "Sensor1");
   double metric(const std::string& group, const std::string& element, const std::string& sensor = "Sensor1");
+  // An element of "EOIR Sensor-to-Target Metrics" for `target` (spec 5.13).
+  double target_metric(const std::string& element, const std::string& target, const std::string& sensor = "Sensor1");
+  // The engine status and message of a target-metric request (for bad input).
+  eoir_status try_target_metric(const std::string& element, const std::string& target, const std::string& sensor,
+                                std::string& message);
   const eoir_api_v1& api() const { return engine_->api(); }
   eoir_engine handle() const { return engine_->handle(); }
 

@@ -149,6 +149,19 @@ class eoir_pick(Structure):
                 ("temperature_K", c_double)]
 
 
+class eoir_truth(Structure):
+    _fields_ = [("struct_size", c_uint32),
+                ("object", ctypes.c_char * 64),
+                ("pixel_x", c_double),
+                ("pixel_y", c_double),
+                ("range_m", c_double),
+                ("point_source", c_int32),
+                ("visible", c_int32),
+                ("effective_irradiance", c_double),
+                ("effective_radiance", c_double),
+                ("snr", c_double)]
+
+
 eoir_log_fn = CFUNCTYPE(None, c_void_p, c_int32, c_char_p)
 eoir_progress_fn = CFUNCTYPE(c_int32, c_void_p, c_double, c_char_p)
 
@@ -210,6 +223,9 @@ _SIGNATURES = {
     "eoir_image_get_bytes": (eoir_status, [eoir_engine, _c_str, c_int32, POINTER(ctypes.c_uint8), c_size_t]),
     "eoir_pick_get": (eoir_status, [eoir_engine, _c_str, c_int32, c_uint32, c_uint32, POINTER(eoir_pick),
                                     _c_dblp, _c_dblp, c_size_t, _c_sizep]),
+    "eoir_snr_constraint": (eoir_status, [eoir_engine, _c_str, _c_str, POINTER(eoir_time), _c_dblp]),
+    "eoir_truth_count": (eoir_status, [eoir_engine, _c_str, _c_sizep]),
+    "eoir_truth_get": (eoir_status, [eoir_engine, _c_str, c_size_t, POINTER(eoir_truth)]),
     "eoir_plugin_entry": (eoir_status, [c_uint32, POINTER(eoir_host_api), POINTER(c_void_p)]),
 }
 
@@ -264,7 +280,11 @@ class eoir_api_v1(Structure):
                 ("image_info_get", _fn("eoir_image_info_get")),
                 ("image_get", _fn("eoir_image_get")),
                 ("image_get_bytes", _fn("eoir_image_get_bytes")),
-                ("pick_get", _fn("eoir_pick_get"))]
+                ("pick_get", _fn("eoir_pick_get")),
+                # appended in 1.2 (targets)
+                ("snr_constraint", _fn("eoir_snr_constraint")),
+                ("truth_count", _fn("eoir_truth_count")),
+                ("truth_get", _fn("eoir_truth_get"))]
 
 
 # ------------------------------------------------------------------- loading

@@ -9,7 +9,7 @@ import math
 import numbers
 import os
 from ctypes import byref, c_char_p, c_double, c_int32, c_int64, c_size_t
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Callable, Dict, Iterable, List, Optional, Tuple
 
 import numpy as np
 
@@ -528,6 +528,67 @@ class Engine:
         ((x, y), y unit))."""
         return {name: (self.provider(group, name, sensor, target), unit)
                 for name, _, unit, _ in _elements(group)}
+
+    # ------------------------------------------------- targets and truth
+    def snr(self, sensor: str, target: str, time=None) -> float:
+        """The SNR access constraint (spec 7.8, eoir_snr_constraint): the SNR
+        of target seen by sensor. time None means the engine time; otherwise
+        the engine time is set to it first and objects move from their last
+        pushed states (constant velocity). 0 while the target is outside the
+        field or hidden. Raises UnknownNameError for an unknown sensor or
+        target and NotAllowedError for a target equal to the sensor's parent."""
+        t = None if time is None else byref(_to_c_time(time))
+        v = c_double()
+        check(lib.eoir_snr_constraint(self.handle, encode(sensor), encode(target), t, byref(v)))
+        return float(v.value)
+
+    def truth(self, sensor: str) -> List[Dict[str, Any]]:
+        """Per-frame truth of the last frame rendered for sensor
+        (eoir_truth_count / eoir_truth_get): one dict per object in the field
+        with keys object, pixel_x, pixel_y (sub-pixel, 0 = centre of pixel 0,
+        rows from the top), range_m, point_source (bool), visible (bool),
+        effective_irradiance (W/cm^2), effective_radiance (W/(cm^2 sr)), snr.
+        Raises NoStateError if no frame was rendered."""
+        s = encode(sensor)
+        n = c_size_t()
+        check(lib.eoir_truth_count(self.handle, s, byref(n)))
+        out = []
+        for i in range(int(n.value)):
+            t = _lib.eoir_truth()
+            t.struct_size = ctypes.sizeof(t)
+            check(lib.eoir_truth_get(self.handle, s, i, byref(t)))
+            out.append({
+                "object": decode(t.object),
+                "pixel_x": float(t.pixel_x),
+                "pixel_y": float(t.pixel_y),
+                "range_m": float(t.range_m),
+                "point_source": bool(t.point_source),
+                "visible": bool(t.visible),
+                "effective_irradiance": float(t.effective_irradiance),
+                "effective_radiance": float(t.effective_radiance),
+                "snr": float(t.snr),
+            })
+        return out
+
+    def report_series(self, group: str, sensor: str, target: Optional[str], times: Iterable,
+                      push: Optional[Callable[["Engine", Any], None]] = None) -> List[Dict[str, Any]]:
+        """A data-provider group over time, as the eoir CLI's `report`: for
+        each time (ISO string, datetime or (jd1, jd2[, scale])) the engine
+        time is set, then push(engine, time) is called (the host pushes the
+        states of its objects at that time, e.g. with set_state), then every
+        element is read. Returns one dict per time: {"time": ISO-8601 UTC,
+        ELEMENT: value, ...} (values as :meth:`provider`)."""
+        names = [n for n, _, _, _ in _elements(group)]
+        rows = []
+        for time in times:
+            self.set_time(time)
+            if push is not None:
+                push(self, time)
+            row: Dict[str, Any] = {"time": self.time_iso()}
+            for name in names:
+                row[name] = self.provider(group, name, sensor, target)
+            rows.append(row)
+        return rows
 
     # -------------------------------------------------------- save, load
     def save(self, path) -> None:

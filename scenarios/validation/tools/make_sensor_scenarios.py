@@ -143,7 +143,7 @@ write("valid_sens_point_src_target.json", {
                                     vertical_fov_deg=fov, focal_length_cm=100.0, f_number=4.0,
                                     diffraction_wavelength_um=10.0, integration_time_ms=10.0,
                                     sensitivity_quantity="irradiance", sensitivity_pairs=[10.0, 1e-18],
-                                    noise_enabled=False)}]})
+                                    saturation_enabled=False, noise_enabled=False)}]})
 
 # 7.7.1: a sensor 100 km up (Aircraft3) looks straight down at a 1 m sphere
 # at 350 K (Aircraft2, 1.6 km up) against a 300 K background (Aircraft1)

@@ -6,7 +6,8 @@
 
 #include "capi_internal.hpp"
 #include "core/constants.hpp"
-#include "core/frames.hpp"
+#include <GeographicLib/Geocentric.hpp>
+
 
 using namespace eoir;
 using eoir::capi::guarded;
@@ -136,14 +137,19 @@ EOIR_API eoir_status eoir_pick_get(eoir_engine engine, const char* sensor, int32
       std::snprintf(pick->object, sizeof pick->object, "%s", o.name.c_str());
       pick->patch = hit.patch;
       pick->range_m = hit.range_m;
-      pick->temperature_K = o.surface.temperature_K;
-      if (o.earth) {
-        const Eigen::Vector3d g = frames::earth_fixed_to_geodetic(hit.point_body_m);
+      pick->temperature_K = o.part(hit.part).temperature_K;
+      if (o.central_body) {
+        // Geodetic latitude/longitude on the body's ellipsoid (GeographicLib):
+        // WGS84 on the Earth-fixed Earth; other bodies' axes are J2000-aligned.
+        const double a = o.equatorial_radius_m, flattening = (a - o.polar_radius_m) / a;
+        double lat = 0, lon = 0, h = 0;
+        GeographicLib::Geocentric(a, flattening)
+            .Reverse(hit.point_body_m.x(), hit.point_body_m.y(), hit.point_body_m.z(), lat, lon, h);
         pick->has_geodetic = 1;
-        pick->latitude_deg = g.x();
-        pick->longitude_deg = g.y();
+        pick->latitude_deg = lat;
+        pick->longitude_deg = lon;
       }
-      spectrum = scene::spectral_radiance(o.surface, f.spectral);
+      spectrum = scene::spectral_radiance(o.part(hit.part), f.spectral);
     }
     if (count_out) *count_out = spectrum.size();
     if (wavelengths_um && spectral_radiance) {

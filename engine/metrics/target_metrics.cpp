@@ -45,7 +45,7 @@ std::vector<geometry::Hit> cast(const World& w, bool with_target, const std::vec
 
 double radiance_of(const World& w, const geometry::Hit& hit, const scene::SpectralView& view) {
   if (hit.object_id < 0) return 0.0;  // the sky: no background terms yet
-  return scene::effective_radiance(w.placements[static_cast<size_t>(hit.object_id)].surface.surface, view);
+  return scene::effective_radiance(w.placements[static_cast<size_t>(hit.object_id)].surface.part(hit.part), view);
 }
 }  // namespace
 

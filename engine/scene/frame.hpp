@@ -23,12 +23,15 @@ struct PointSource {
   double range_m = 0;
 };
 
-// The surface a hit object is made of, for shading and picks.
+// The surfaces a hit object is made of (one per shape part), for shading and
+// picks.
 struct FrameObject {
   std::string name;
   bool central_body = false;
-  bool earth = false;  // body frame is Earth-fixed: hits have geodetic coordinates
-  SurfacePoint surface;
+  bool earth = false;  // body frame is Earth-fixed (others: J2000-aligned axes)
+  std::vector<SurfacePoint> parts;
+  double equatorial_radius_m = 0, polar_radius_m = 0;  // central bodies: for latitude/longitude
+  const SurfacePoint& part(std::int32_t i) const { return parts[static_cast<std::size_t>(i < 0 ? 0 : i)]; }
 };
 
 // Wall-clock seconds spent in each stage of the last render (DESIGN.md 1).

@@ -5,6 +5,7 @@
 #include "core/frames.hpp"
 #include "geometry/projected_area.hpp"
 #include "geometry/shape_intersect.hpp"
+#include "universe/composite.hpp"
 #include "universe/object_motion.hpp"
 
 namespace eoir::scene {
@@ -22,12 +23,26 @@ double patch_size_m(const universe::Object& o) {
 }  // namespace
 
 std::vector<geometry::ShapePart> shape_parts(const universe::Object& o) {
-  geometry::ShapePart part;
-  part.shape = o.body.shape;
-  part.dimensions_m = o.body.dimensions_m;
-  part.temperature_K = o.body.temperature_K;
-  part.reflectance = o.body.reflectance;
-  return {part};
+  if (o.body.shape != "composite") {
+    geometry::ShapePart part;
+    part.shape = o.body.shape;
+    part.dimensions_m = o.body.dimensions_m;
+    part.temperature_K = o.body.temperature_K;
+    part.reflectance = o.body.reflectance;
+    return {part};
+  }
+  std::vector<geometry::ShapePart> parts;
+  for (const universe::CompositePart& c : universe::parse_composite(o.body.composite, o.name + ".composite")) {
+    geometry::ShapePart part;
+    part.shape = c.shape;
+    part.dimensions_m = c.dimensions_m;
+    part.offset_m = c.offset_m;
+    part.orientation = c.orientation;
+    part.temperature_K = c.temperature_K.value_or(o.body.temperature_K);
+    part.reflectance = c.reflectance.value_or(o.body.reflectance);
+    parts.push_back(part);
+  }
+  return parts;
 }
 
 std::optional<Placement> place_object(const universe::Universe& universe, const universe::Object& o,
@@ -38,9 +53,10 @@ std::optional<Placement> place_object(const universe::Universe& universe, const 
   if (o.kind != ObjectKind::central_body && !o.state.valid) return std::nullopt;  // not yet placed by the host
   const universe::Kinematics k = universe::kinematics_at(universe, o, t);
   Placement pl;
+  pl.placed.parts = shape_parts(o);
+  if (pl.placed.parts.empty()) return std::nullopt;  // a composite without parts
   geometry::PlacedObject& po = pl.placed;
   po.object_id = object_id;
-  po.parts = shape_parts(o);
   po.position_m = k.position_m - observer_position_m;
   po.central_body = o.kind == ObjectKind::central_body;
   const bool earth = po.central_body && o.name == "Earth";
@@ -49,7 +65,12 @@ std::optional<Placement> place_object(const universe::Universe& universe, const 
   if (earth) po.body_to_frame = frames::j2000_to_earth_fixed(t).transpose();
   else if (po.central_body) po.body_to_frame.setIdentity();
   else po.body_to_frame = k.attitude.toRotationMatrix();
-  pl.surface = FrameObject{o.name, po.central_body, earth, SurfacePoint{o.body.temperature_K, o.body.reflectance}};
+  pl.surface = FrameObject{o.name, po.central_body, earth, {}, 0.0, 0.0};
+  if (po.central_body) {
+    pl.surface.equatorial_radius_m = o.body.dimensions_m[0];
+    pl.surface.polar_radius_m = o.body.dimensions_m[1];
+  }
+  for (const auto& part : po.parts) pl.surface.parts.push_back(SurfacePoint{part.temperature_K, part.reflectance});
   pl.range_m = po.position_m.norm();
   for (const auto& part : po.parts)
     pl.bounding_radius_m = std::max(pl.bounding_radius_m, part.offset_m.norm() + geometry::shape_bounding_radius_m(
@@ -68,7 +89,17 @@ double projected_solid_angle_sr(const Placement& pl) {
 }
 
 double point_irradiance_W_cm2(const Placement& pl, const SpectralView& view) {
-  return effective_radiance(pl.surface.surface, view) * projected_solid_angle_sr(pl);
+  const geometry::PlacedObject& po = pl.placed;
+  if (po.parts.size() == 1) return effective_radiance(pl.surface.parts[0], view) * projected_solid_angle_sr(pl);
+  // Parts of different surfaces: the sum over visible patches of L dOmega.
+  std::vector<double> part_radiance;
+  for (const SurfacePoint& s : pl.surface.parts) part_radiance.push_back(effective_radiance(s, view));
+  const geometry::Vec3 toward_observer_body = -(po.body_to_frame.transpose() * po.position_m).normalized();
+  double irradiance = 0;
+  for (const geometry::Patch& patch : po.tessellation.patches)
+    irradiance += part_radiance[static_cast<std::size_t>(patch.part)] *
+                  std::max(0.0, patch.normal_body.dot(toward_observer_body)) * patch.area_m2;
+  return irradiance / (pl.range_m * pl.range_m);
 }
 
 }  // namespace eoir::scene

@@ -18,7 +18,7 @@ struct Placement {
   double bounding_radius_m = 0;   // sphere about the body origin enclosing every part
 };
 
-// The shape parts of an object in its body frame.
+// The shape parts of an object in its body frame (composites flattened).
 std::vector<geometry::ShapePart> shape_parts(const universe::Object& o);
 
 // nullopt for objects that image nothing (sensors, the star field, shape
@@ -30,9 +30,11 @@ std::optional<Placement> place_object(const universe::Universe& universe, const 
 void tessellate_placement(const universe::Object& o, Placement& placement);
 
 // Band-integrated irradiance at the observer of an object seen as a point
-// (spec 4.1.6.1; the tessellation sum of ERRATA eq. 11): with one radiance
-// over the whole surface (uniform self-emission) it is L A* / R^2 with the
-// projected area A* of eq. 58, exact for analytic shapes. W/cm^2.
+// (spec 4.1.6.1; the tessellation sum of ERRATA eq. 11, sum of L dOmega over
+// the visible patches): for a single shape, L A* / R^2 with the projected
+// area A* of eq. 58, exact for analytic shapes; for a composite the patch
+// sum with each part's radiance (parts shadowing parts are not removed).
+// W/cm^2.
 double point_irradiance_W_cm2(const Placement& placement, const SpectralView& view);
 // A* / R^2, the target solid angle of eq. 58 (sr).
 double projected_solid_angle_sr(const Placement& placement);

@@ -88,13 +88,17 @@ void generate_scene(const universe::Universe& universe, const EngineTime& t, con
 
   const auto t2 = clock::now();
   // 4-5. Shade only what was hit, band-integrated once per surface (eq. 48).
-  std::vector<double> object_radiance(frame.objects.size(), -1.0);
+  // Every patch of a part has the same self-emission, so coarse (4.2.1) and
+  // smooth (4.2.2) modes give the same samples until per-patch terms arrive.
+  std::vector<std::vector<double>> part_radiance(frame.objects.size());
+  for (std::size_t k = 0; k < frame.objects.size(); ++k) part_radiance[k].assign(frame.objects[k].parts.size(), -1.0);
   frame.scene_radiance.assign(directions.size(), 0.0);
   for (std::size_t i = 0; i < directions.size(); ++i) {
     const geometry::Hit& hit = frame.hits[i];
     if (hit.object_id < 0) continue;  // the sky: no background terms yet
-    double& L = object_radiance[static_cast<std::size_t>(hit.object_id)];
-    if (L < 0) L = effective_radiance(frame.objects[static_cast<std::size_t>(hit.object_id)].surface, frame.spectral);
+    const FrameObject& o = frame.objects[static_cast<std::size_t>(hit.object_id)];
+    double& L = part_radiance[static_cast<std::size_t>(hit.object_id)][static_cast<std::size_t>(std::max(hit.part, 0))];
+    if (L < 0) L = effective_radiance(o.part(hit.part), frame.spectral);
     frame.scene_radiance[i] = L;
   }
   const auto t3 = clock::now();

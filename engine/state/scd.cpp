@@ -80,7 +80,7 @@ Value json_to_value(const json& j, ValueType type, const std::string& where) {
 }
 
 bool fixed_property(const Object& o, const std::string& name) {
-  return o.kind == ObjectKind::central_body && (name == "shape" || name == "dimensions_m");
+  return o.kind == ObjectKind::central_body && (name == "shape" || name == "dimensions_m" || name == "composite");
 }
 
 json properties_to_json(const Object& o) {

@@ -48,6 +48,7 @@ struct BodyProperties {
   double reflectance = 0.0;  // gray-body SRF; emissivity = 1 - SRF (spec 4.1.4.1)
   std::int64_t stages = 1;   // missiles only (spec 4.3.6)
   double patch_size_m = 0.0; // tessellation (spec 4.1.5.2): patch edge; 0 = automatic
+  std::string composite = "[]";  // parts of shape "composite" (universe/composite.hpp)
 };
 
 struct StarFieldProperties {

@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "core/limits.hpp"
 #include "sensor/sensor_properties.hpp"
+#include "universe/composite.hpp"
 #include "universe/materials.hpp"
 #include "universe/shapes.hpp"
 
@@ -75,6 +76,16 @@ std::vector<Spec> body_properties(bool missile) {
                      if (x < 0 || x > 1)
                        throw Error(Status::out_of_range, "reflectance: must be in [0, 1], got " + std::to_string(x));
                      o.body.reflectance = x;
+                   }});
+  t.push_back(Spec{"composite", ValueType::string, "",
+                   "Parts of shape composite as a JSON array: {shape, dimensions_m, offset_m, orientation_wxyz, "
+                   "temperature_K, reflectance} or nested {parts, offset_m, orientation_wxyz} (spec 4.1.5.1)",
+                   [](const Object& o) { return Value(o.body.composite); },
+                   [](Object& o, const Value& v) {
+                     refuse_central_body(o, "composite");
+                     const std::string& text = string_of(v, "composite");
+                     parse_composite(text, "composite");  // validates, naming the JSON path
+                     o.body.composite = text;
                    }});
   t.push_back(Spec{"patch_size_m", ValueType::number, "m",
                    "Edge of the patches dA the surface is divided into (spec 4.1.5.2); 0 = automatic (785 km for "

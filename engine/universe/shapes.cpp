@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "core/constants.hpp"
 #include "core/error.hpp"
 
 namespace eoir::universe {
@@ -17,6 +16,7 @@ const std::vector<ShapeInfo>& shapes() {
       {"cone", {"base_radius", "length"}},
       {"coupler", {"base_radius", "top_radius", "length"}},
       {"none", {}},
+      {"composite", {}},  // parts in the object's `composite` property (universe/composite.hpp)
   };
   return table;
 }
@@ -38,17 +38,4 @@ void check_dimensions(const ShapeInfo& shape, const std::vector<double>& dims, c
     require_positive(dims[i], field + "[" + std::to_string(i) + "] (" + shape.dimensions[i] + ")");
 }
 
-double volumetric_radius_m(const ShapeInfo& shape, const std::vector<double>& d) {
-  using constants::pi;
-  const std::string n = shape.name;
-  double volume = 0;
-  if (n == "sphere") return d[0];
-  if (n == "oblate") return std::cbrt(d[0] * d[0] * d[1]);
-  if (n == "box") volume = d[0] * d[1] * d[2];
-  if (n == "plate") return std::sqrt(d[0] * d[1] / (2.0 * pi));  // no volume: sphere of equal surface (both faces)
-  if (n == "cylinder") volume = pi * d[0] * d[0] * d[1];
-  if (n == "cone") volume = pi * d[0] * d[0] * d[1] / 3.0;
-  if (n == "coupler") volume = pi * d[2] * (d[0] * d[0] + d[0] * d[1] + d[1] * d[1]) / 3.0;
-  return std::cbrt(3.0 * volume / (4.0 * pi));
-}
 }  // namespace eoir::universe

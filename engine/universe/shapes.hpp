@@ -10,13 +10,11 @@ struct ShapeInfo {
   std::vector<const char*> dimensions;  // meaning of each entry of dimensions_m
 };
 
-// sphere, oblate, box, plate, cylinder, cone, coupler, none.
+// sphere, oblate, box, plate, cylinder, cone, coupler, none, composite.
 const std::vector<ShapeInfo>& shapes();
 // Throws eoir::Error(unknown_name) naming `field` with the list of shapes.
 const ShapeInfo& find_shape(const std::string& name, const std::string& field);
 // Throws eoir::Error(out_of_range) unless dims fits the shape (count, > 0, finite).
 void check_dimensions(const ShapeInfo& shape, const std::vector<double>& dims, const std::string& field);
-// Volumetric-mean radius (m) of the sphere of equal volume (spec eq. 7).
-double volumetric_radius_m(const ShapeInfo& shape, const std::vector<double>& dims);
 
 }  // namespace eoir::universe

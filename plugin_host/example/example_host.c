@@ -6,9 +6,21 @@
  * prints every static metric as "Group | Element | value | unit" (%.6g).
  * Curves print as "curve(N points)" in the value column.
  *
+ * It then computes an SNR access (spec 7.8) through the function table's
+ * snr_constraint: a second engine holds a nadir-pointing 24 x 24 deg,
+ * 8-12 um sensor on a GEO satellite and a 2 m, 300 K sphere on a circular
+ * LEO orbit (7000 km, i = 60 deg, RAAN = 20 deg) over the 288 K Earth; the
+ * host moves both on circles it computes itself and pushes their states.
+ * Stepping every 60 s over a day and bisecting each change of SNR >= 6 down
+ * to 1 ms, it prints the intervals as
+ *   "access: START .. STOP (DURATION s)"  and a closing
+ *   "access: N intervals with SNR >= 6, E SNR evaluations".
+ *
  * Usage: eoir_example_host [LIBRARY]   (else EOIR_LIBRARY, else the build's)
  */
+#include <math.h>
 #include <stdio.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -40,6 +52,195 @@ static int failed(eoir_status status, const char* what) {
   do {                    \
     if (failed((call), (what))) goto fail; \
   } while (0)
+
+/* ------------------------------------------------------------ SNR access */
+#define ACCESS_MIN_SNR 6.0
+#define ACCESS_STEP_S 60.0
+#define ACCESS_SPAN_S 86400.0
+#define ACCESS_TOL_S 0.001
+#define PI 3.14159265358979323846
+#define MU_EARTH 3.986004418e14 /* m^3/s^2 */
+
+static double access_epoch_jd; /* UTC Julian date of t = 0 (2010-12-08T22:00:00Z) */
+static size_t access_evaluations;
+
+/* Body-to-J2000 quaternion {w, x, y, z} of the rotation whose columns are
+ * the body axes x, y, z expressed in J2000. */
+static void quat_from_axes(const double x[3], const double y[3], const double z[3], double q[4]) {
+  const double m00 = x[0], m11 = y[1], m22 = z[2], tr = m00 + m11 + m22;
+  if (tr > 0) {
+    const double s = 2.0 * sqrt(tr + 1.0);
+    q[0] = 0.25 * s;
+    q[1] = (y[2] - z[1]) / s;
+    q[2] = (z[0] - x[2]) / s;
+    q[3] = (x[1] - y[0]) / s;
+  } else if (m00 > m11 && m00 > m22) {
+    const double s = 2.0 * sqrt(1.0 + m00 - m11 - m22);
+    q[0] = (y[2] - z[1]) / s;
+    q[1] = 0.25 * s;
+    q[2] = (y[0] + x[1]) / s;
+    q[3] = (z[0] + x[2]) / s;
+  } else if (m11 > m22) {
+    const double s = 2.0 * sqrt(1.0 + m11 - m00 - m22);
+    q[0] = (z[0] - x[2]) / s;
+    q[1] = (y[0] + x[1]) / s;
+    q[2] = 0.25 * s;
+    q[3] = (z[1] + y[2]) / s;
+  } else {
+    const double s = 2.0 * sqrt(1.0 + m22 - m00 - m11);
+    q[0] = (x[1] - y[0]) / s;
+    q[1] = (z[0] + x[2]) / s;
+    q[2] = (z[1] + y[2]) / s;
+    q[3] = 0.25 * s;
+  }
+}
+
+/* A circular orbit of radius a (m), inclination i and RAAN raan (rad),
+ * argument of latitude u0 at t = 0: J2000 position and velocity at t. */
+static void circular(double a, double i, double raan, double u0, double t, double pos[3], double vel[3]) {
+  const double n = sqrt(MU_EARTH / (a * a * a)), u = u0 + n * t, v = n * a;
+  const double p[3] = {cos(raan), sin(raan), 0.0};
+  const double q[3] = {-sin(raan) * cos(i), cos(raan) * cos(i), sin(i)};
+  int k;
+  for (k = 0; k < 3; ++k) {
+    pos[k] = a * (cos(u) * p[k] + sin(u) * q[k]);
+    vel[k] = v * (-sin(u) * p[k] + cos(u) * q[k]);
+  }
+}
+
+static eoir_time access_time(double t) {
+  eoir_time time;
+  time.scale = EOIR_TIME_UTC;
+  time.jd1 = access_epoch_jd;
+  time.jd2 = t / 86400.0;
+  return time;
+}
+
+/* Pushes both states at t (seconds from the epoch) and returns the SNR
+ * through the constraint callback, or -1 on an engine error. */
+static double access_snr(eoir_engine engine, double t) {
+  eoir_time time = access_time(t);
+  eoir_state geo, leo;
+  double x[3], y[3], z[3], r, snr = 0.0;
+  int k;
+  memset(&geo, 0, sizeof geo);
+  geo.struct_size = sizeof geo;
+  geo.frame = EOIR_FRAME_J2000;
+  circular(42164.17e3, 0.0, 0.0, 0.0, t, geo.position, geo.velocity);
+  /* Nadir: body +z toward the Earth's centre, +y along the orbit normal. */
+  r = sqrt(geo.position[0] * geo.position[0] + geo.position[1] * geo.position[1] + geo.position[2] * geo.position[2]);
+  for (k = 0; k < 3; ++k) z[k] = -geo.position[k] / r;
+  y[0] = 0.0;
+  y[1] = 0.0;
+  y[2] = 1.0;
+  x[0] = y[1] * z[2] - y[2] * z[1];
+  x[1] = y[2] * z[0] - y[0] * z[2];
+  x[2] = y[0] * z[1] - y[1] * z[0];
+  quat_from_axes(x, y, z, geo.attitude);
+  memset(&leo, 0, sizeof leo);
+  leo.struct_size = sizeof leo;
+  leo.frame = EOIR_FRAME_J2000;
+  circular(7000e3, 60.0 * PI / 180.0, 20.0 * PI / 180.0, 0.0, t, leo.position, leo.velocity);
+  leo.attitude[0] = 1.0;
+  if (failed(api->object_set_state(engine, "GEO", &time, &geo), "object_set_state GEO") ||
+      failed(api->object_set_state(engine, "LEO", &time, &leo), "object_set_state LEO") ||
+      failed(api->snr_constraint(engine, "Imager", "LEO", &time, &snr), "snr_constraint"))
+    return -1.0;
+  ++access_evaluations;
+  return snr;
+}
+
+static void print_time(double t, char* buf, size_t capacity) {
+  eoir_time time = access_time(t);
+  if (api->time_to_iso(&time, buf, capacity) != EOIR_OK) snprintf(buf, capacity, "t+%.3f s", t);
+}
+
+/* Builds the GEO/LEO engine, steps a day and bisects every change of
+ * SNR >= 6; returns 0 on success. */
+static int run_access(void) {
+  eoir_engine engine = NULL;
+  eoir_time epoch;
+  const double sensitivity[2] = {10.0, 4e-18};
+  const double radius[1] = {2.0};
+  double t, prev_t = 0.0, start = 0.0, snr;
+  int prev_in = 0, in, rc = 1;
+  size_t steps, n, intervals = 0;
+  char a[64], b[64];
+
+  if (api->struct_size < offsetof(eoir_api_v1, truth_get) + sizeof api->truth_get || api->snr_constraint == NULL) {
+    fprintf(stderr, "eoir_example_host: the engine has no snr_constraint (ABI 1.2 needed)\n");
+    return 1;
+  }
+  CHECK(api->time_from_iso("2010-12-08T22:00:00Z", &epoch), "time_from_iso");
+  access_epoch_jd = epoch.jd1 + epoch.jd2;
+  CHECK(api->engine_create(NULL, &engine), "engine_create (access)");
+  CHECK(api->object_add(engine, EOIR_KIND_CENTRAL_BODY, "Earth"), "object_add Earth");
+  CHECK(api->set_number(engine, "Earth", "temperature_K", 288.0), "Earth temperature_K");
+  CHECK(api->object_add(engine, EOIR_KIND_SATELLITE, "GEO"), "object_add GEO");
+  CHECK(api->set_string(engine, "GEO", "shape", "none"), "GEO shape");
+  CHECK(api->object_add(engine, EOIR_KIND_SATELLITE, "LEO"), "object_add LEO");
+  CHECK(api->set_string(engine, "LEO", "shape", "sphere"), "LEO shape");
+  CHECK(api->set_array(engine, "LEO", "dimensions_m", radius, 1), "LEO dimensions_m");
+  CHECK(api->set_string(engine, "LEO", "material", "gray_body"), "LEO material");
+  CHECK(api->set_number(engine, "LEO", "reflectance", 0.0), "LEO reflectance");
+  CHECK(api->set_number(engine, "LEO", "temperature_K", 300.0), "LEO temperature_K");
+  CHECK(api->sensor_add(engine, "Imager", "GEO"), "sensor_add Imager");
+  CHECK(api->set_number(engine, "Imager", "band_low_um", 8.0), "band_low_um");
+  CHECK(api->set_number(engine, "Imager", "band_high_um", 12.0), "band_high_um");
+  CHECK(api->set_integer(engine, "Imager", "spectral_intervals", 10), "spectral_intervals");
+  CHECK(api->set_integer(engine, "Imager", "horizontal_pixels", 256), "horizontal_pixels");
+  CHECK(api->set_integer(engine, "Imager", "vertical_pixels", 256), "vertical_pixels");
+  CHECK(api->set_number(engine, "Imager", "horizontal_fov_deg", 24.0), "horizontal_fov_deg");
+  CHECK(api->set_number(engine, "Imager", "vertical_fov_deg", 24.0), "vertical_fov_deg");
+  CHECK(api->set_number(engine, "Imager", "focal_length_cm", 10.0), "focal_length_cm");
+  CHECK(api->set_number(engine, "Imager", "f_number", 2.0), "f_number");
+  CHECK(api->set_number(engine, "Imager", "diffraction_wavelength_um", 10.0), "diffraction_wavelength_um");
+  CHECK(api->set_number(engine, "Imager", "integration_time_ms", 10.0), "integration_time_ms");
+  CHECK(api->set_string(engine, "Imager", "sensitivity_quantity", "irradiance"), "sensitivity_quantity");
+  CHECK(api->set_array(engine, "Imager", "sensitivity_pairs", sensitivity, 2), "sensitivity_pairs");
+  CHECK(api->set_bool(engine, "Imager", "saturation_enabled", 0), "saturation_enabled");
+
+  steps = (size_t)(ACCESS_SPAN_S / ACCESS_STEP_S);
+  for (n = 0; n <= steps; ++n) {
+    t = (double)n * ACCESS_STEP_S;
+    if ((snr = access_snr(engine, t)) < 0) goto fail;
+    in = snr >= ACCESS_MIN_SNR;
+    if (n > 0 && in != prev_in) {
+      /* Bisection on the predicate between the two steps. */
+      double lo = prev_t, hi = t;
+      while (hi - lo > ACCESS_TOL_S) {
+        const double mid = 0.5 * (lo + hi);
+        if ((snr = access_snr(engine, mid)) < 0) goto fail;
+        if ((snr >= ACCESS_MIN_SNR) == prev_in) lo = mid;
+        else hi = mid;
+      }
+      if (in) {
+        start = hi;
+      } else {
+        print_time(start, a, sizeof a);
+        print_time(lo, b, sizeof b);
+        printf("access: %s .. %s (%.3f s)\n", a, b, lo - start);
+        ++intervals;
+      }
+    } else if (n == 0 && in) {
+      start = 0.0;
+    }
+    prev_in = in;
+    prev_t = t;
+  }
+  if (prev_in) {
+    print_time(start, a, sizeof a);
+    print_time(prev_t, b, sizeof b);
+    printf("access: %s .. %s (%.3f s)\n", a, b, prev_t - start);
+    ++intervals;
+  }
+  printf("access: %lu intervals with SNR >= %g, %lu SNR evaluations\n", (unsigned long)intervals, ACCESS_MIN_SNR,
+         (unsigned long)access_evaluations);
+  rc = 0;
+fail:
+  api->engine_destroy(engine);
+  return rc;
+}
 
 int main(int argc, char** argv) {
   eoir_loader_plugin plugin;
@@ -125,7 +326,7 @@ int main(int argc, char** argv) {
       }
     }
   }
-  rc = 0;
+  rc = run_access();
 
 fail:
   api->engine_destroy(engine);

@@ -228,7 +228,8 @@ def main():
         expected = {"summary.json"}
         for i in range(2):
             for s in ("Cam", "Wide"):
-                for suffix in ("radiance.fits", "electrons.fits", "mean_electrons.fits", "scene.png", "sensor.png"):
+                for suffix in ("radiance.fits", "electrons.fits", "mean_electrons.fits", "scene.png", "sensor.png",
+                               "truth.json"):
                     expected.add(f"{s}_{i:04d}_{suffix}")
         present = set(os.listdir(out))
         check(present == expected, f"files written: extra {sorted(present - expected)}, "
@@ -306,7 +307,7 @@ def main():
         check(re.search(r"frame 1 of 1 .*elapsed .*ETA", r.stderr) is not None, "progress line on stderr")
         check(sorted(os.listdir(out2)) == sorted(["summary.json"] + [
             f"Cam_0000_{s}" for s in ("radiance.fits", "electrons.fits", "mean_electrons.fits", "scene.png",
-                                      "sensor.png")]), f"--sensor Cam writes Cam only: {sorted(os.listdir(out2))}")
+                                      "sensor.png", "truth.json")]), f"--sensor Cam writes Cam only: {sorted(os.listdir(out2))}")
 
         r = subprocess.run([eoir_exe, "run", scen, "--out", out2, "--sensor", "Nope"], capture_output=True,
                            text=True)

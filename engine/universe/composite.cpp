@@ -1,0 +1,105 @@
+#include "universe/composite.hpp"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+#include "universe/shapes.hpp"
+
+namespace eoir::universe {
+namespace {
+using nlohmann::json;
+
+[[noreturn]] void bad(const std::string& where, const std::string& what) {
+  throw Error(Status::out_of_range, where + ": " + what);
+}
+
+std::vector<double> numbers(const json& j, const std::string& where, std::size_t count) {
+  if (!j.is_array()) bad(where, "expected an array of " + std::to_string(count) + " numbers");
+  std::vector<double> v;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    if (!j[i].is_number()) bad(where + "[" + std::to_string(i) + "]", "expected a number");
+    v.push_back(j[i].get<double>());
+    require_finite(v.back(), where + "[" + std::to_string(i) + "]");
+  }
+  if (count && v.size() != count) bad(where, "expected " + std::to_string(count) + " numbers, got " + std::to_string(v.size()));
+  return v;
+}
+
+void flatten(const json& parts, const std::string& where, const Eigen::Vector3d& offset,
+             const Eigen::Quaterniond& orientation, std::optional<double> temperature, std::optional<double> reflectance,
+             int depth, std::vector<CompositePart>& out) {
+  if (depth > max_composite_depth)
+    throw Error(Status::limit_exceeded, where + ": composites nest at most " + std::to_string(max_composite_depth) + " deep");
+  if (!parts.is_array()) bad(where, "expected an array of parts");
+  if (parts.empty() && depth > 1) bad(where, "a nested composite needs at least one part");
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const std::string at = where + "[" + std::to_string(i) + "]";
+    const json& p = parts[i];
+    if (!p.is_object()) bad(at, "expected an object");
+    for (auto it = p.begin(); it != p.end(); ++it) {
+      static const char* known[] = {"shape", "dimensions_m", "offset_m", "orientation_wxyz", "temperature_K",
+                                    "reflectance", "parts"};
+      bool ok = false;
+      for (const char* k : known) ok = ok || it.key() == k;
+      if (!ok) throw Error(Status::unknown_name, at + "." + it.key() + ": unknown field of a composite part");
+    }
+    Eigen::Vector3d local_offset = Eigen::Vector3d::Zero();
+    if (p.contains("offset_m")) {
+      const auto o = numbers(p["offset_m"], at + ".offset_m", 3);
+      local_offset = Eigen::Vector3d(o[0], o[1], o[2]);
+    }
+    Eigen::Quaterniond local = Eigen::Quaterniond::Identity();
+    if (p.contains("orientation_wxyz")) {
+      const auto q = numbers(p["orientation_wxyz"], at + ".orientation_wxyz", 4);
+      const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+      if (std::fabs(n - 1.0) > 1e-6) bad(at + ".orientation_wxyz", "quaternion must have unit norm, |q| = " + std::to_string(n));
+      local = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
+    }
+    std::optional<double> t = temperature, r = reflectance;
+    if (p.contains("temperature_K")) {
+      if (!p["temperature_K"].is_number()) bad(at + ".temperature_K", "expected a number");
+      t = p["temperature_K"].get<double>();
+      require_non_negative(*t, at + ".temperature_K");
+    }
+    if (p.contains("reflectance")) {
+      if (!p["reflectance"].is_number()) bad(at + ".reflectance", "expected a number");
+      r = p["reflectance"].get<double>();
+      require_finite(*r, at + ".reflectance");
+      if (*r < 0 || *r > 1) bad(at + ".reflectance", "must be in [0, 1]");
+    }
+    // Compose: the part's frame inside its parent, inside the object.
+    const Eigen::Vector3d body_offset = offset + orientation * local_offset;
+    const Eigen::Quaterniond body_orientation = orientation * local;
+    if (p.contains("parts")) {
+      if (p.contains("shape") || p.contains("dimensions_m")) bad(at, "a nested composite has parts, not a shape");
+      flatten(p["parts"], at + ".parts", body_offset, body_orientation, t, r, depth + 1, out);
+      continue;
+    }
+    if (!p.contains("shape") || !p["shape"].is_string()) bad(at + ".shape", "missing (or give nested parts)");
+    const std::string shape = p["shape"].get<std::string>();
+    if (shape == "composite") bad(at + ".shape", "nest composites with \"parts\"");
+    const ShapeInfo& info = find_shape(shape, at + ".shape");
+    const std::vector<double> dims = p.contains("dimensions_m") ? numbers(p["dimensions_m"], at + ".dimensions_m", 0)
+                                                                  : std::vector<double>{};
+    check_dimensions(info, dims, at + ".dimensions_m");
+    if (out.size() >= max_composite_parts)
+      throw Error(Status::limit_exceeded, at + ": at most " + std::to_string(max_composite_parts) + " parts per object");
+    out.push_back(CompositePart{shape, dims, body_offset, body_orientation, t, r});
+  }
+}
+}  // namespace
+
+std::vector<CompositePart> parse_composite(const std::string& text, const std::string& field) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    bad(field, std::string("not valid JSON: ") + e.what());
+  }
+  std::vector<CompositePart> out;
+  flatten(doc, field, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity(), std::nullopt, std::nullopt, 1, out);
+  return out;
+}
+
+}  // namespace eoir::universe

@@ -1,0 +1,35 @@
+// Composite shapes (spec 4.1.5.1): simple shapes, or other composites, at
+// given offsets and orientations. A composite object carries its parts as a
+// JSON array in its `composite` property:
+//   [{"shape": "box", "dimensions_m": [1, 1, 2], "offset_m": [0, 0, 0],
+//     "orientation_wxyz": [1, 0, 0, 0], "temperature_K": 290, "reflectance": 0.1},
+//    {"parts": [ ...nested parts... ], "offset_m": [0, 3, 0]}]
+// offset_m and orientation_wxyz (part -> parent) default to zero and
+// identity; temperature_K and reflectance default to the parent's. An empty
+// top-level array (the default) makes a composite that images nothing.
+#pragma once
+#include <Eigen/Geometry>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace eoir::universe {
+
+struct CompositePart {
+  std::string shape;
+  std::vector<double> dimensions_m;
+  Eigen::Vector3d offset_m = Eigen::Vector3d::Zero();                 // in the object's body frame
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();     // part -> body
+  std::optional<double> temperature_K;
+  std::optional<double> reflectance;
+};
+
+constexpr int max_composite_depth = 8;
+constexpr std::size_t max_composite_parts = 256;
+
+// Parses and flattens (nested transforms composed). Throws eoir::Error
+// (out_of_range, unknown_name, limit_exceeded) naming the JSON path under
+// `field`, e.g. "composite[1].parts[0].dimensions_m[2]: must be > 0".
+std::vector<CompositePart> parse_composite(const std::string& json_text, const std::string& field);
+
+}  // namespace eoir::universe

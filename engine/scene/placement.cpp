@@ -12,12 +12,12 @@ namespace eoir::scene {
 namespace {
 // Default patch edge (spec 4.2.3: Earth tessellations about 785 km on a side,
 // other central bodies the same number of patches; other objects an eighth of
-// their largest dimension).
-double patch_size_m(const universe::Object& o) {
+// the diameter of their largest part).
+double patch_size_m(const universe::Object& o, const std::vector<geometry::ShapePart>& parts) {
   if (o.body.patch_size_m > 0) return o.body.patch_size_m;
   if (o.kind == universe::ObjectKind::central_body) return 785.0e3 * o.body.dimensions_m[0] / 6378137.0;
   double size = 0;
-  for (double d : o.body.dimensions_m) size = std::max(size, d);
+  for (const auto& part : parts) size = std::max(size, 2.0 * geometry::shape_bounding_radius_m(geometry::shape_geom(part)));
   return std::max(size, 1e-6) / 8.0;
 }
 }  // namespace
@@ -79,7 +79,8 @@ std::optional<Placement> place_object(const universe::Universe& universe, const 
 }
 
 void tessellate_placement(const universe::Object& o, Placement& placement) {
-  placement.placed.tessellation = geometry::tessellate(placement.placed.parts, patch_size_m(o));
+  placement.placed.tessellation =
+      geometry::tessellate(placement.placed.parts, patch_size_m(o, placement.placed.parts));
 }
 
 double projected_solid_angle_sr(const Placement& pl) {

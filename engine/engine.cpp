@@ -54,8 +54,16 @@ const scene::Frame& Engine::render(const std::string& name) {
       sensor::compress_for_display(frame->sensor_electrons, s.sensor.display_agc, s.sensor.display_gain_step, full_scale);
   frame->timings.display_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - display_start).count();
+  // Per-frame truth: the target metrics of every object in the field
+  // (central bodies are backgrounds, not targets), frozen with the frame.
+  std::vector<std::pair<std::string, metrics::TargetMetrics>> truth;
+  for (const scene::FrameObject& o : frame->objects) {
+    if (o.central_body) continue;
+    metrics::TargetMetrics t = metrics::target_metrics(universe_, time_, s, m, o.name);
+    if (t.in_field) truth.emplace_back(o.name, t);
+  }
   frames_[name] = frame;
-  truth_.erase(name);
+  truth_[name] = std::move(truth);
   return *frame;
 }
 
@@ -89,23 +97,9 @@ const metrics::TargetMetrics& Engine::target_metrics(const std::string& sensor, 
   return target_cache_.emplace(key, t).first->second;
 }
 
-const std::vector<std::pair<std::string, metrics::TargetMetrics>>& Engine::truth(const std::string& sensor) {
-  auto it = truth_.find(sensor);
-  if (it != truth_.end()) return it->second;
-  const scene::Frame& f = frame(sensor);
-  // The frame's own time and the universe as it is now (a frame is rendered
-  // and read back without changes in between; a change drops the truth).
-  const EngineTime now = time_;
-  time_ = f.time;
-  std::vector<std::pair<std::string, metrics::TargetMetrics>> rows;
-  const universe::Object& s = universe_.sensor(sensor);
-  for (const scene::FrameObject& o : f.objects) {
-    if (o.central_body) continue;  // central bodies are backgrounds, not targets
-    metrics::TargetMetrics t = metrics::target_metrics(universe_, f.time, s, static_metrics(sensor), o.name);
-    if (t.in_field) rows.emplace_back(o.name, t);
-  }
-  time_ = now;
-  return truth_.emplace(sensor, std::move(rows)).first->second;
+const std::vector<std::pair<std::string, metrics::TargetMetrics>>& Engine::truth(const std::string& sensor) const {
+  frame(sensor);  // throws no_state before the first render
+  return truth_.at(sensor);
 }
 
 }  // namespace eoir

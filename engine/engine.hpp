@@ -57,20 +57,16 @@ class Engine {
   // engine time, cached until the universe or the time changes.
   const metrics::TargetMetrics& target_metrics(const std::string& sensor, const std::string& target);
   // The objects in the field of the last frame of `sensor`, with their
-  // target metrics (per-frame truth). Computed on first request.
-  const std::vector<std::pair<std::string, metrics::TargetMetrics>>& truth(const std::string& sensor);
+  // target metrics as they were when it was rendered (per-frame truth).
+  const std::vector<std::pair<std::string, metrics::TargetMetrics>>& truth(const std::string& sensor) const;
 
   // A state, property or object changed: drop results that depend on it.
-  void note_change() {
-    target_cache_.clear();
-    truth_.clear();
-  }
+  void note_change() { target_cache_.clear(); }
   // Drop every cached result (after a restore or removal).
   void invalidate_caches() {
     metric_cache_.clear();
     frames_.clear();
     target_cache_.clear();
-    truth_.clear();
   }
 
  private:
@@ -85,6 +81,7 @@ class Engine {
   std::map<std::string, CachedMetrics> metric_cache_;
   std::map<std::string, std::shared_ptr<scene::Frame>> frames_;
   std::map<std::pair<std::string, std::string>, metrics::TargetMetrics> target_cache_;
+  // Per-frame truth, computed with each render.
   std::map<std::string, std::vector<std::pair<std::string, metrics::TargetMetrics>>> truth_;
 };
 

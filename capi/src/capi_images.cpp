@@ -119,12 +119,20 @@ EOIR_API eoir_status eoir_pick_get(eoir_engine engine, const char* sensor, int32
     const std::int64_t c = (space == 0 ? x : x * k + k / 2) + f.grid.guard_samples();
     const std::int64_t r = (space == 0 ? y : y * k + k / 2) + f.grid.guard_samples();
     const size_t i = static_cast<size_t>(r * f.grid.width() + c);
-    const geometry::Hit& hit = f.hits[i];
+    // Cast this one sample's ray again, with range, point and patch.
+    const Eigen::Vector3d d = f.body_to_j2000 * f.grid.direction_body(c, r);
+    std::vector<geometry::Hit> hits;
+    geometry::Hit hit;
+    if (f.samples[i].object_id >= 0) {
+      geometry::RayCaster caster;
+      caster.build(f.placed);
+      caster.cast({d}, hits, 1);
+      hit = hits[0];
+    }
     const uint32_t size = pick->struct_size;
     std::memset(pick, 0, sizeof(eoir_pick));
     pick->struct_size = size;
     pick->effective_radiance = f.scene_radiance[i];
-    const Eigen::Vector3d d = f.body_to_j2000 * f.grid.direction_body(c, r);
     ra_dec_deg(d, pick->right_ascension_deg, pick->declination_deg);
     std::vector<double> spectrum(f.spectral.sample_wavelengths_um.size(), 0.0);
     if (hit.object_id < 0) {

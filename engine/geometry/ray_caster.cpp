@@ -216,61 +216,47 @@ void RayCaster::build(const std::vector<PlacedObject>& objects) {
   check_device(device, "rtcCommitScene");
 }
 
-void RayCaster::cast(const std::vector<Vec3>& directions, std::vector<Hit>& hits, unsigned threads) const {
-  if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
-  hits.resize(directions.size());  // every element is overwritten below
+namespace {
+// Casts one ray from the observer; the double-precision nearest hit is left
+// in rc (object -1: nothing).
+void cast_one(RTCScene scene, RayContext& rc, RTCRayHit& rh, const Vec3& d, std::size_t i) {
+  rtcInitIntersectContext(&rc.ctx);
+  rc.ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rc.dir = d;
+  rc.best_t = std::numeric_limits<double>::infinity();
+  rc.object = rc.part = -1;
+  rh.ray.org_x = rh.ray.org_y = rh.ray.org_z = 0.0f;
+  rh.ray.dir_x = static_cast<float>(d.x());
+  rh.ray.dir_y = static_cast<float>(d.y());
+  rh.ray.dir_z = static_cast<float>(d.z());
+  rh.ray.tnear = 0.0f;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.time = 0.0f;
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.ray.id = static_cast<unsigned>(i);
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene, &rc.ctx, &rh);
+}
+
+// Runs body(i, rc, rh) for i in [0, count) on `threads` workers, in blocks of
+// consecutive (coherent) rays.
+template <class Body>
+void for_each_ray(std::size_t count, unsigned threads, const Body& body) {
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  constexpr std::size_t kBlock = 1024;  // consecutive rays (coherent when the caller's are)
-  const std::size_t n_blocks = (directions.size() + kBlock - 1) / kBlock;
+  constexpr std::size_t kBlock = 1024;
+  const std::size_t n_blocks = (count + kBlock - 1) / kBlock;
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, n_blocks)));
   std::atomic<std::size_t> next{0};
-  const auto& objects = impl_->objects;
-  RTCScene scene = impl_->scene;
-
   auto worker = [&] {
     RayContext rc;
     RTCRayHit rh;
     for (;;) {
       const std::size_t b = next.fetch_add(1);
       if (b >= n_blocks) return;
-      const std::size_t end = std::min(directions.size(), (b + 1) * kBlock);
-      for (std::size_t i = b * kBlock; i < end; ++i) {
-        const Vec3& d = directions[i];
-        rtcInitIntersectContext(&rc.ctx);
-        rc.ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-        rc.dir = d;
-        rc.best_t = std::numeric_limits<double>::infinity();
-        rc.object = rc.part = -1;
-        rh.ray.org_x = rh.ray.org_y = rh.ray.org_z = 0.0f;
-        rh.ray.dir_x = static_cast<float>(d.x());
-        rh.ray.dir_y = static_cast<float>(d.y());
-        rh.ray.dir_z = static_cast<float>(d.z());
-        rh.ray.tnear = 0.0f;
-        rh.ray.tfar = std::numeric_limits<float>::infinity();
-        rh.ray.time = 0.0f;
-        rh.ray.mask = 0xFFFFFFFFu;
-        rh.ray.id = static_cast<unsigned>(i);
-        rh.ray.flags = 0;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(scene, &rc.ctx, &rh);
-        Hit& h = hits[i];
-        if (rc.object < 0) {
-          h = Hit{};
-          h.range_m = sky_range_m;
-          continue;
-        }
-        const ObjectData& od = objects[static_cast<std::size_t>(rc.object)];
-        const PlacedObject& obj = *od.object;
-        const PartData& pd = od.parts[static_cast<std::size_t>(rc.part)];
-        h.object_id = obj.object_id;
-        h.part = rc.part;
-        h.range_m = rc.best_t;
-        h.point_body_m = obj.body_to_frame.transpose() * (rc.best_t * d - obj.position_m);
-        h.normal_frame = (pd.part_to_frame * rc.normal_part).normalized();
-        const Vec3 p_part = pd.origin_part_m + rc.best_t * (pd.part_to_frame.transpose() * d);
-        h.patch = patch_in_part(obj.tessellation, rc.part, pd.geom, p_part, rc.normal_part);
-      }
+      const std::size_t end = std::min(count, (b + 1) * kBlock);
+      for (std::size_t i = b * kBlock; i < end; ++i) body(i, rc, rh);
     }
   };
   if (threads == 1) {
@@ -280,6 +266,50 @@ void RayCaster::cast(const std::vector<Vec3>& directions, std::vector<Hit>& hits
   std::vector<std::thread> pool;
   for (unsigned k = 0; k < threads; ++k) pool.emplace_back(worker);
   for (auto& th : pool) th.join();
+}
+}  // namespace
+
+void RayCaster::cast(const std::vector<Vec3>& directions, std::vector<Hit>& hits, unsigned threads) const {
+  if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
+  hits.resize(directions.size());  // every element is overwritten below
+  const auto& objects = impl_->objects;
+  RTCScene scene = impl_->scene;
+  for_each_ray(directions.size(), threads, [&](std::size_t i, RayContext& rc, RTCRayHit& rh) {
+    const Vec3& d = directions[i];
+    cast_one(scene, rc, rh, d, i);
+    Hit& h = hits[i];
+    if (rc.object < 0) {
+      h = Hit{};
+      h.range_m = sky_range_m;
+      return;
+    }
+    const ObjectData& od = objects[static_cast<std::size_t>(rc.object)];
+    const PlacedObject& obj = *od.object;
+    const PartData& pd = od.parts[static_cast<std::size_t>(rc.part)];
+    h.object_id = obj.object_id;
+    h.part = rc.part;
+    h.range_m = rc.best_t;
+    h.point_body_m = obj.body_to_frame.transpose() * (rc.best_t * d - obj.position_m);
+    h.normal_frame = (pd.part_to_frame * rc.normal_part).normalized();
+    const Vec3 p_part = pd.origin_part_m + rc.best_t * (pd.part_to_frame.transpose() * d);
+    h.patch = patch_in_part(obj.tessellation, rc.part, pd.geom, p_part, rc.normal_part);
+  });
+}
+
+void RayCaster::cast_objects(std::size_t count, const std::function<Vec3(std::size_t)>& direction,
+                             const std::function<void(std::size_t, std::int32_t, std::int32_t)>& emit,
+                             unsigned threads) const {
+  if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
+  const auto& objects = impl_->objects;
+  RTCScene scene = impl_->scene;
+  for_each_ray(count, threads, [&](std::size_t i, RayContext& rc, RTCRayHit& rh) {
+    cast_one(scene, rc, rh, direction(i), i);
+    if (rc.object < 0) {
+      emit(i, -1, -1);
+      return;
+    }
+    emit(i, objects[static_cast<std::size_t>(rc.object)].object->object_id, rc.part);
+  });
 }
 
 }  // namespace eoir::geometry

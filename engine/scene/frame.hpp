@@ -57,7 +57,15 @@ struct Frame {
   Eigen::Vector3d up_j2000 = Eigen::Vector3d::UnitY();         // sensor +y
   Eigen::Matrix3d body_to_j2000 = Eigen::Matrix3d::Identity();
   std::vector<FrameObject> objects;          // indexed by object_id of hits
-  std::vector<geometry::Hit> hits;           // full grid incl. guard, row-major
+  // What each sample of the full grid (incl. guard, row-major) ends on:
+  // object_id (-1 the sky) and shape part. Ranges, points and patches are
+  // recomputed for picks by casting that one ray again against `placed`.
+  struct SampleHit {
+    std::int32_t object_id = -1;
+    std::int32_t part = -1;
+  };
+  std::vector<SampleHit> samples;
+  std::vector<geometry::PlacedObject> placed;  // the resolved objects the samples were cast against
   std::vector<double> scene_radiance;        // W cm^-2 sr^-1, full grid incl. guard
   std::vector<PointSource> point_sources;    // inside the field of view
   std::vector<double> sensor_mean;           // electrons, pixels (noise-free r_L + r_E)

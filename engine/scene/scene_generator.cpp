@@ -49,7 +49,8 @@ void generate_scene(const universe::Universe& universe, const EngineTime& t, con
   // 1-2. Snapshot relative to the sensor; cull and classify (DESIGN.md 1).
   frame.objects.clear();
   frame.point_sources.clear();
-  std::vector<geometry::PlacedObject> placed;
+  std::vector<geometry::PlacedObject>& placed = frame.placed;
+  placed.clear();
   for (const universe::Object& o : universe.objects()) {
     if (o.name == sensor.parent) continue;  // a sensor never images its parent (4.1.5.1)
     std::optional<Placement> pl =
@@ -76,36 +77,38 @@ void generate_scene(const universe::Universe& universe, const EngineTime& t, con
   }
 
   const auto t1 = clock::now();
-  // 3. Ray-cast the sample grid (spec 4.1.3) in the observer frame.
+  // 3-5. Ray-cast the sample grid (spec 4.1.3) in the observer frame and
+  // shade only what is hit, band-integrated once per surface (eq. 48). Every
+  // patch of a part has the same self-emission, so coarse (4.2.1) and smooth
+  // (4.2.2) modes give the same samples until per-patch terms arrive.
   const std::int64_t w = grid.width(), h = grid.height();
-  std::vector<Vec3> directions(static_cast<std::size_t>(w * h));
-  for (std::int64_t r = 0; r < h; ++r)
-    for (std::int64_t c = 0; c < w; ++c)
-      directions[static_cast<std::size_t>(r * w + c)] = frame.body_to_j2000 * grid.direction_body(c, r);
+  const std::size_t count = static_cast<std::size_t>(w * h);
+  std::vector<std::vector<double>> part_radiance(frame.objects.size());
+  for (std::size_t k = 0; k < frame.objects.size(); ++k)
+    for (const SurfacePoint& surface : frame.objects[k].parts)
+      part_radiance[k].push_back(effective_radiance(surface, frame.spectral));
+  const auto t2 = clock::now();
+  frame.samples.assign(count, Frame::SampleHit{});
+  frame.scene_radiance.assign(count, 0.0);
   geometry::RayCaster caster;
   caster.build(placed);
-  caster.cast(directions, frame.hits, threads);
-
-  const auto t2 = clock::now();
-  // 4-5. Shade only what was hit, band-integrated once per surface (eq. 48).
-  // Every patch of a part has the same self-emission, so coarse (4.2.1) and
-  // smooth (4.2.2) modes give the same samples until per-patch terms arrive.
-  std::vector<std::vector<double>> part_radiance(frame.objects.size());
-  for (std::size_t k = 0; k < frame.objects.size(); ++k) part_radiance[k].assign(frame.objects[k].parts.size(), -1.0);
-  frame.scene_radiance.assign(directions.size(), 0.0);
-  for (std::size_t i = 0; i < directions.size(); ++i) {
-    const geometry::Hit& hit = frame.hits[i];
-    if (hit.object_id < 0) continue;  // the sky: no background terms yet
-    const FrameObject& o = frame.objects[static_cast<std::size_t>(hit.object_id)];
-    double& L = part_radiance[static_cast<std::size_t>(hit.object_id)][static_cast<std::size_t>(std::max(hit.part, 0))];
-    if (L < 0) L = effective_radiance(o.part(hit.part), frame.spectral);
-    frame.scene_radiance[i] = L;
-  }
+  caster.cast_objects(
+      count,
+      [&](std::size_t i) {
+        const auto r = static_cast<std::int64_t>(i) / w, c = static_cast<std::int64_t>(i) % w;
+        return Vec3(frame.body_to_j2000 * grid.direction_body(c, r));
+      },
+      [&](std::size_t i, std::int32_t object, std::int32_t part) {
+        frame.samples[i] = Frame::SampleHit{object, part};
+        if (object >= 0)
+          frame.scene_radiance[i] = part_radiance[static_cast<std::size_t>(object)][static_cast<std::size_t>(std::max(part, 0))];
+      },
+      threads);
   const auto t3 = clock::now();
   frame.timings.setup_s = seconds(t0, t1);
-  frame.timings.ray_casting_s = seconds(t1, t2);
-  frame.timings.shading_s = seconds(t2, t3);
-  frame.timings.rays = directions.size();
+  frame.timings.shading_s = seconds(t1, t2);  // band integration per surface; the per-sample lookup rides with the casts
+  frame.timings.ray_casting_s = seconds(t2, t3);
+  frame.timings.rays = count;
 }
 
 }  // namespace eoir::scene

@@ -97,9 +97,16 @@ void render_sensor_image(const SensorParameters& p, const StaticMetrics& m, scen
   // Point sources: r_E = R_peak,E E^ps EOD / ENSQ (eqs. 50-51).
   if (!frame.point_sources.empty()) {
     const OpticsModel optics = OpticsModel::from_parameters(p);
-    // The window covers the whole array from any source position, as far as
-    // the PSF grid allows (energy_on_detector needs window < psf_grid_size).
-    const std::int64_t half = std::max<std::int64_t>(1, std::min<std::int64_t>(std::max(nx, ny), (p.psf_grid_size - 2) / 2));
+    // Window: the PSF out to 500 lambda F# (plus the jitter and defocus
+    // blur) about the source -- the diffraction tail beyond holds less than
+    // 2 / (pi^2 500) = 4e-4 of the energy -- and no more than the array, as
+    // far as the PSF grid allows (energy_on_detector needs window <
+    // psf_grid_size). The cost of a window grows with its area.
+    const double reach_cm = 500.0 * optics.diffraction_wavelength_cm * optics.f_number +
+                            6.0 * p.jitter_mrad * 1e-3 * p.focal_length_cm + 0.1 * p.defocus_mm / p.f_number;
+    const auto reach = static_cast<std::int64_t>(std::ceil(reach_cm / std::min(g.pitch_x_cm, g.pitch_y_cm)));
+    const std::int64_t half =
+        std::clamp<std::int64_t>(reach, 2, std::max<std::int64_t>(2, std::min(std::max(nx, ny), (p.psf_grid_size - 2) / 2)));
     const std::int64_t window = 2 * half + 1;
     const double guard = static_cast<double>(g.guard_samples());
     // Sources at the same sub-pixel offset share one energy-on-detector

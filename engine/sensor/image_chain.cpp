@@ -25,7 +25,15 @@ double frequency(int i, int n, double spacing) {
 // edge; around it the FFT buffer is padded by as much again with the border
 // samples repeated, so the circular wrap of the transform only mixes padding
 // that lies two PSF reaches away from the field.
-std::vector<double> convolve_with_otf(const SensorParameters& p, const scene::Frame& frame) {
+struct Blurred {
+  fftw::RealBuffer values;  // fw x fh, the sample grid at offset (pad, pad)
+  int fw = 0, pad = 0;
+  double at(std::int64_t row, std::int64_t col) const {
+    return values[static_cast<std::size_t>(row + pad) * static_cast<std::size_t>(fw) + static_cast<std::size_t>(col + pad)];
+  }
+};
+
+Blurred convolve_with_otf(const SensorParameters& p, const scene::Frame& frame) {
   const scene::SampleGrid& g = frame.grid;
   const int w = static_cast<int>(g.width()), h = static_cast<int>(g.height());
   const int pad = static_cast<int>(g.guard_samples());
@@ -55,29 +63,24 @@ std::vector<double> convolve_with_otf(const SensorParameters& p, const scene::Fr
     }
   }
   fftw_execute_dft_c2r(fftw::c2r_2d(fh, fw), spectrum.get(), real.get());
-  std::vector<double> out(static_cast<std::size_t>(w) * h);
-  for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c)
-      out[static_cast<std::size_t>(r) * w + c] = real[static_cast<std::size_t>(r + pad) * fw + c + pad];
-  return out;
+  return Blurred{std::move(real), fw, pad};  // read in place: no copy of the grid
 }
 }  // namespace
 
 std::vector<double> pixel_radiance(const SensorParameters& p, const scene::Frame& frame) {
   const scene::SampleGrid& g = frame.grid;
-  const std::int64_t nx = g.pixels_x, ny = g.pixels_y, w = g.width(), guard = g.guard_samples();
+  const std::int64_t nx = g.pixels_x, ny = g.pixels_y, guard = g.guard_samples();
   std::vector<double> out(static_cast<std::size_t>(nx * ny), 0.0);
   const bool any_extended =
       std::any_of(frame.scene_radiance.begin(), frame.scene_radiance.end(), [](double v) { return v != 0.0; });
   if (!any_extended) return out;  // no extended sources: skip the scene FFT (DESIGN.md 4)
-  const std::vector<double> blurred = convolve_with_otf(p, frame);
+  const Blurred blurred = convolve_with_otf(p, frame);
   constexpr std::int64_t k = scene::SampleGrid::per_pixel;
   for (std::int64_t m = 0; m < ny; ++m)
     for (std::int64_t n = 0; n < nx; ++n) {
       double sum = 0;
       for (std::int64_t r = 0; r < k; ++r)
-        for (std::int64_t c = 0; c < k; ++c)
-          sum += blurred[static_cast<std::size_t>((guard + m * k + r) * w + guard + n * k + c)];
+        for (std::int64_t c = 0; c < k; ++c) sum += blurred.at(guard + m * k + r, guard + n * k + c);
       out[static_cast<std::size_t>(m * nx + n)] = sum / (k * k);  // (1/A_d) integral over the pixel (eq. 49)
     }
   return out;

@@ -186,7 +186,7 @@ write("valid_sens_snr_access.json", {
     "name": "Valid_Sens_SNR_Access",
     "description": "Spec 7.8 (ERRATA: the sensor is on Satellite1, the target is Satellite2): a nadir-pointing "
                    "24 x 24 deg sensor, 8-12 um, on a geostationary satellite; the target is a LEO satellite at "
-                   "300 K seen against the 288 K Earth (SNR ~0) or space (SNR ~5-9).",
+                   "300 K seen against the 288 K Earth (SNR ~0) or space (SNR ~5.3-7).",
     "start": "2010-12-08T22:00:00Z", "stop": "2010-12-09T22:00:00Z", "step_s": 60,
     "central_bodies": [{"name": "Earth", "properties": {"temperature_K": 288.0}}],
     "objects": [
@@ -205,5 +205,5 @@ write("valid_sens_snr_access.json", {
                  "parameters": dict(lwir, spectral_intervals=10, horizontal_pixels=256, vertical_pixels=256,
                                     horizontal_fov_deg=24.0, vertical_fov_deg=24.0, focal_length_cm=10.0,
                                     f_number=2.0, diffraction_wavelength_um=10.0, integration_time_ms=10.0,
-                                    sensitivity_quantity="irradiance", sensitivity_pairs=[10.0, 4e-18],
+                                    sensitivity_quantity="irradiance", sensitivity_pairs=[10.0, 4.6e-18],
                                     saturation_enabled=False)}]})

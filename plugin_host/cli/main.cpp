@@ -12,6 +12,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -22,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "access.hpp"
+#include "atomic_write.hpp"
 #include "engine.hpp"
 #include "iso_time.hpp"
 #include "report.hpp"
@@ -139,40 +141,62 @@ void emit(const std::optional<std::string>& out_file, const std::string& text) {
     std::cout.flush();
     return;
   }
-  const std::string tmp = *out_file + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    if (!(f << text) || !f.flush()) throw std::runtime_error("--out: cannot write " + tmp);
-  }
-  if (std::rename(tmp.c_str(), out_file->c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("--out: cannot write " + *out_file);
+  try {
+    eoir::imageio::write_file_atomically(*out_file, text.data(), text.size());
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("--out: ") + e.what());
   }
 }
 
-int cmd_report(const std::vector<std::string>& args, const char* library) {
-  std::optional<std::string> scenario_file, provider, sensor, target, start, stop, step, out_file;
-  std::string format = "json";
-  bool quiet = false;
+// Command-line options of one command: "--name value" options (repeatable
+// ones collect every value), flags, and one positional SCENARIO.
+struct Options {
+  std::optional<std::string> scenario;
+  std::map<std::string, std::vector<std::string>> values;
+  std::map<std::string, bool> flags;
+  std::optional<std::string> get(const std::string& name) const {
+    auto it = values.find(name);
+    if (it == values.end() || it->second.empty()) return std::nullopt;
+    return it->second.back();
+  }
+};
+
+// `numbers_as_values`: a token like "-5" is a value, not an option (access's
+// --min-snr -5 is then refused by its own check).
+Options parse_options(const std::vector<std::string>& args, const std::string& command,
+                      const std::vector<std::string>& valued, const std::vector<std::string>& flags,
+                      bool numbers_as_values = false) {
+  Options o;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    const auto value = [&](const char* opt) {
-      if (i + 1 >= args.size()) throw UsageError(std::string(opt) + " needs a value");
-      return args[++i];
-    };
-    if (a == "--provider") provider = value("--provider");
-    else if (a == "--sensor") sensor = value("--sensor");
-    else if (a == "--target") target = value("--target");
-    else if (a == "--start") start = value("--start");
-    else if (a == "--stop") stop = value("--stop");
-    else if (a == "--step") step = value("--step");
-    else if (a == "--format") format = value("--format");
-    else if (a == "--out") out_file = value("--out");
-    else if (a == "--quiet" || a == "-q") quiet = true;
-    else if (!a.empty() && a[0] == '-') throw UsageError("report: unknown option " + a);
-    else if (!scenario_file) scenario_file = a;
-    else throw UsageError("report: unexpected argument '" + a + "'");
+    if (contains(valued, a)) {
+      if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+      o.values[a].push_back(args[++i]);
+    } else if (a == "--quiet" || a == "-q") {
+      if (!contains(flags, "--quiet")) throw UsageError(command + ": unknown option " + a);
+      o.flags["--quiet"] = true;
+    } else if (contains(flags, a)) {
+      o.flags[a] = true;
+    } else if (a.size() > 1 && a[0] == '-' && !(numbers_as_values && a[1] >= '0' && a[1] <= '9')) {
+      throw UsageError(command + ": unknown option " + a);
+    } else if (!o.scenario) {
+      o.scenario = a;
+    } else {
+      throw UsageError(command + ": unexpected argument '" + a + "'");
+    }
   }
+  return o;
+}
+
+int cmd_report(const std::vector<std::string>& args, const char* library) {
+  const Options o = parse_options(
+      args, "report", {"--provider", "--sensor", "--target", "--start", "--stop", "--step", "--format", "--out"},
+      {"--quiet"});
+  const auto scenario_file = o.scenario, provider = o.get("--provider"), sensor = o.get("--sensor"),
+             target = o.get("--target"), start = o.get("--start"), stop = o.get("--stop"), step = o.get("--step"),
+             out_file = o.get("--out");
+  const std::string format = o.get("--format").value_or("json");
+  const bool quiet = o.flags.count("--quiet") > 0;
   if (!scenario_file) throw UsageError("report: missing SCENARIO");
   if (!provider) throw UsageError("report: missing --provider GROUP");
   if (!sensor) throw UsageError("report: missing --sensor NAME");
@@ -248,24 +272,12 @@ int cmd_report(const std::vector<std::string>& args, const char* library) {
 }
 
 int cmd_run(const std::vector<std::string>& args, const char* library) {
-  std::optional<std::string> scenario_file, out_dir, start, stop, step;
+  const Options o = parse_options(args, "run", {"--out", "--start", "--stop", "--step", "--sensor"}, {"--quiet"});
+  const auto scenario_file = o.scenario, out_dir = o.get("--out"), start = o.get("--start"), stop = o.get("--stop"),
+             step = o.get("--step");
   RunOptions opt;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const auto value = [&](const char* o) {
-      if (i + 1 >= args.size()) throw UsageError(std::string(o) + " needs a value");
-      return args[++i];
-    };
-    if (a == "--out") out_dir = value("--out");
-    else if (a == "--start") start = value("--start");
-    else if (a == "--stop") stop = value("--stop");
-    else if (a == "--step") step = value("--step");
-    else if (a == "--sensor") opt.sensors.push_back(value("--sensor"));
-    else if (a == "--quiet" || a == "-q") opt.quiet = true;
-    else if (!a.empty() && a[0] == '-') throw UsageError("run: unknown option " + a);
-    else if (!scenario_file) scenario_file = a;
-    else throw UsageError("run: unexpected argument '" + a + "'");
-  }
+  if (o.values.count("--sensor")) opt.sensors = o.values.at("--sensor");
+  opt.quiet = o.flags.count("--quiet") > 0;
   if (!scenario_file) throw UsageError("run: missing SCENARIO");
   if (!out_dir) throw UsageError("run: missing --out DIR");
   if (out_dir->empty()) throw UsageError("--out: empty directory name");
@@ -311,28 +323,14 @@ std::string format_iso_ms(double t_s) {
 bool api_has(const eoir_api_v1& api, std::size_t offset_end) { return api.struct_size >= offset_end; }
 
 int cmd_access(const std::vector<std::string>& args, const char* library) {
-  std::optional<std::string> scenario_file, sensor, target, min_snr_text, start, stop, step, out_file;
-  std::string format = "json";
-  bool quiet = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const auto value = [&](const char* opt) {
-      if (i + 1 >= args.size()) throw UsageError(std::string(opt) + " needs a value");
-      return args[++i];
-    };
-    if (a == "--sensor") sensor = value("--sensor");
-    else if (a == "--target") target = value("--target");
-    else if (a == "--min-snr") min_snr_text = value("--min-snr");
-    else if (a == "--start") start = value("--start");
-    else if (a == "--stop") stop = value("--stop");
-    else if (a == "--step") step = value("--step");
-    else if (a == "--format") format = value("--format");
-    else if (a == "--out") out_file = value("--out");
-    else if (a == "--quiet" || a == "-q") quiet = true;
-    else if (a.size() > 1 && a[0] == '-' && !(a[1] >= '0' && a[1] <= '9')) throw UsageError("access: unknown option " + a);
-    else if (!scenario_file) scenario_file = a;
-    else throw UsageError("access: unexpected argument '" + a + "'");
-  }
+  const Options o = parse_options(
+      args, "access", {"--sensor", "--target", "--min-snr", "--start", "--stop", "--step", "--format", "--out"},
+      {"--quiet"}, true);
+  const auto scenario_file = o.scenario, sensor = o.get("--sensor"), target = o.get("--target"),
+             min_snr_text = o.get("--min-snr"), start = o.get("--start"), stop = o.get("--stop"),
+             step = o.get("--step"), out_file = o.get("--out");
+  const std::string format = o.get("--format").value_or("json");
+  const bool quiet = o.flags.count("--quiet") > 0;
   if (!scenario_file) throw UsageError("access: missing SCENARIO");
   if (!sensor) throw UsageError("access: missing --sensor NAME");
   if (!target) throw UsageError("access: missing --target NAME");

@@ -202,20 +202,17 @@ class RunContext {
     const double d2 = 2.0 * std::tan(vfov * kDeg / 2.0) / static_cast<double>(in.height) / kDeg;
     const double pa =
         position_angle_deg(in.boresight_ra_deg, in.boresight_dec_deg, in.up_ra_deg, in.up_dec_deg) * kDeg;
-    h.set_integer("WCSAXES", 2, "number of WCS axes");
-    h.set_string("CTYPE1", "RA---TAN", "gnomonic projection");
-    h.set_string("CTYPE2", "DEC--TAN", "gnomonic projection");
-    h.set_string("CUNIT1", "deg");
-    h.set_string("CUNIT2", "deg");
-    h.set_double("CRVAL1", in.boresight_ra_deg, "[deg] RA at the reference pixel (boresight)");
-    h.set_double("CRVAL2", in.boresight_dec_deg, "[deg] Dec at the reference pixel (boresight)");
-    h.set_double("CRPIX1", (static_cast<double>(in.width) + 1.0) / 2.0, "reference pixel: image centre");
-    h.set_double("CRPIX2", (static_cast<double>(in.height) + 1.0) / 2.0, "reference pixel: image centre");
-    h.set_double("CD1_1", -d1 * std::cos(pa));
-    h.set_double("CD1_2", d2 * std::sin(pa));
-    h.set_double("CD2_1", d1 * std::sin(pa));
-    h.set_double("CD2_2", d2 * std::cos(pa));
-    h.set_string("RADESYS", "ICRS", "J2000 axes of the engine (GCRS ~ ICRS)");
+    io::FitsPointing wcs;
+    wcs.ra_deg = in.boresight_ra_deg;
+    wcs.dec_deg = in.boresight_dec_deg;
+    wcs.crpix1 = (static_cast<double>(in.width) + 1.0) / 2.0;  // the boresight: image centre
+    wcs.crpix2 = (static_cast<double>(in.height) + 1.0) / 2.0;
+    wcs.cd1_1 = -d1 * std::cos(pa);
+    wcs.cd1_2 = d2 * std::sin(pa);
+    wcs.cd2_1 = d1 * std::sin(pa);
+    wcs.cd2_2 = d2 * std::cos(pa);
+    wcs.radesys = "ICRS";  // J2000 axes of the engine (GCRS ~ ICRS)
+    io::add_tan_pointing(h, wcs);
     h.set_string("ORIGIN", "eoir " EOIR_CLI_VERSION, "eoir run");
     return h;
   }

@@ -222,7 +222,6 @@ FitsHeader& FitsHeader::add_history(const std::string& text) {
 }
 
 void add_tan_pointing(FitsHeader& h, const FitsPointing& p) {
-  const double rot = p.rotation_deg * (3.14159265358979323846 / 180.0);
   h.set_integer("WCSAXES", 2, "number of WCS axes");
   h.set_string("CTYPE1", "RA---TAN", "gnomonic projection, right ascension");
   h.set_string("CTYPE2", "DEC--TAN", "gnomonic projection, declination");
@@ -232,12 +231,10 @@ void add_tan_pointing(FitsHeader& h, const FitsPointing& p) {
   h.set_double("CRVAL2", p.dec_deg, "[deg] Dec at the reference pixel");
   h.set_double("CRPIX1", p.crpix1, "reference pixel x (FITS, 1 = left)");
   h.set_double("CRPIX2", p.crpix2, "reference pixel y (FITS, 1 = bottom)");
-  h.set_double("CDELT1", p.cdelt1_deg, "[deg/pixel]");
-  h.set_double("CDELT2", p.cdelt2_deg, "[deg/pixel]");
-  h.set_double("PC1_1", std::cos(rot));
-  h.set_double("PC1_2", -std::sin(rot));
-  h.set_double("PC2_1", std::sin(rot));
-  h.set_double("PC2_2", std::cos(rot));
+  h.set_double("CD1_1", p.cd1_1, "[deg/pixel]");
+  h.set_double("CD1_2", p.cd1_2, "[deg/pixel]");
+  h.set_double("CD2_1", p.cd2_1, "[deg/pixel]");
+  h.set_double("CD2_2", p.cd2_2, "[deg/pixel]");
   h.set_string("RADESYS", p.radesys);
 }
 

@@ -65,15 +65,16 @@ class FitsHeader {
 
 // Gnomonic (TAN) celestial pointing, FITS WCS paper II. Writes WCSAXES,
 // CTYPE1/2 = 'RA---TAN'/'DEC--TAN', CUNIT1/2 = 'deg', CRVAL1/2, CRPIX1/2,
-// CDELT1/2, PC1_1..PC2_2 (rotation) and RADESYS.
+// the CD matrix (any scale, rotation and mirroring; pixels need not be
+// square) and RADESYS.
 struct FitsPointing {
   double ra_deg = 0.0;   // CRVAL1: right ascension of the reference pixel
   double dec_deg = 0.0;  // CRVAL2: declination of the reference pixel
   double crpix1 = 0.0;   // reference pixel (FITS convention, see above)
   double crpix2 = 0.0;
-  double cdelt1_deg = 0.0;    // deg per pixel along x; negative for east-left
-  double cdelt2_deg = 0.0;    // deg per pixel along y (up)
-  double rotation_deg = 0.0;  // angle of the PC matrix (CROTA2 convention)
+  // CD_ij (deg per pixel): intermediate world coordinate i (1 = toward east
+  // along RA, 2 = north) per step along pixel axis j (1 = x, 2 = y up).
+  double cd1_1 = 0.0, cd1_2 = 0.0, cd2_1 = 0.0, cd2_2 = 0.0;
   std::string radesys = "ICRS";
 };
 void add_tan_pointing(FitsHeader& header, const FitsPointing& pointing);

@@ -112,8 +112,8 @@ TEST(FitsWriter, Float32RoundTripWithHeaderAndUprightRows) {
   p.dec_deg = 22.0145;
   p.crpix1 = (w + 1) / 2.0;
   p.crpix2 = (h + 1) / 2.0;
-  p.cdelt1_deg = -1e-3;
-  p.cdelt2_deg = 1e-3;
+  p.cd1_1 = -1e-3;  // east to the left
+  p.cd2_2 = 1e-3;
   add_tan_pointing(hdr, p);
   write_fits_image(path, img.data(), w, h, hdr);
   EXPECT_EQ(dir.entries(), 1u) << "temporary file left behind";
@@ -144,7 +144,7 @@ TEST(FitsWriter, Float32RoundTripWithHeaderAndUprightRows) {
   EXPECT_EQ(rd.dbl("CRVAL2"), 22.0145);
   EXPECT_EQ(rd.dbl("CRPIX1"), 3.0);
   EXPECT_EQ(rd.dbl("CRPIX2"), 2.0);
-  EXPECT_EQ(rd.dbl("CDELT1"), -1e-3);
+  EXPECT_EQ(rd.dbl("CD1_1"), -1e-3);
   EXPECT_EQ(rd.str("RADESYS"), "ICRS");
   ASSERT_EQ(rd.st, 0);
   int dataok = 0, hduok = 0;

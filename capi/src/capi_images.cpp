@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "capi_internal.hpp"
+#include "scene/surface_shader.hpp"
 #include "core/constants.hpp"
 #include <GeographicLib/Geocentric.hpp>
 
@@ -145,7 +146,11 @@ EOIR_API eoir_status eoir_pick_get(eoir_engine engine, const char* sensor, int32
       std::snprintf(pick->object, sizeof pick->object, "%s", o.name.c_str());
       pick->patch = hit.patch;
       pick->range_m = hit.range_m;
-      pick->temperature_K = o.part(hit.part).temperature_K;
+      const geometry::PlacedObject* po = nullptr;
+      for (const auto& candidate : f.placed)
+        if (candidate.object_id == hit.object_id) po = &candidate;
+      const scene::SurfaceShader shader(o, *po, f.spectral, f.smooth);
+      pick->temperature_K = shader.temperature_at(hit.part, hit.point_body_m);
       if (o.central_body) {
         // Geodetic latitude/longitude on the body's ellipsoid (GeographicLib):
         // WGS84 on the Earth-fixed Earth; other bodies' axes are J2000-aligned.
@@ -157,7 +162,8 @@ EOIR_API eoir_status eoir_pick_get(eoir_engine engine, const char* sensor, int32
         pick->latitude_deg = lat;
         pick->longitude_deg = lon;
       }
-      spectrum = scene::spectral_radiance(o.part(hit.part), f.spectral);
+      spectrum = scene::spectral_radiance(scene::SurfacePoint{pick->temperature_K, o.part(hit.part).reflectance},
+                                          f.spectral);
     }
     if (count_out) *count_out = spectrum.size();
     if (wavelengths_um && spectral_radiance) {

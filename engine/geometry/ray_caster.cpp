@@ -297,7 +297,7 @@ void RayCaster::cast(const std::vector<Vec3>& directions, std::vector<Hit>& hits
 }
 
 void RayCaster::cast_objects(std::size_t count, const std::function<Vec3(std::size_t)>& direction,
-                             const std::function<void(std::size_t, std::int32_t, std::int32_t)>& emit,
+                             const std::function<void(std::size_t, std::int32_t, std::int32_t, double)>& emit,
                              unsigned threads) const {
   if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
   const auto& objects = impl_->objects;
@@ -305,10 +305,10 @@ void RayCaster::cast_objects(std::size_t count, const std::function<Vec3(std::si
   for_each_ray(count, threads, [&](std::size_t i, RayContext& rc, RTCRayHit& rh) {
     cast_one(scene, rc, rh, direction(i), i);
     if (rc.object < 0) {
-      emit(i, -1, -1);
+      emit(i, -1, -1, sky_range_m);
       return;
     }
-    emit(i, objects[static_cast<std::size_t>(rc.object)].object->object_id, rc.part);
+    emit(i, objects[static_cast<std::size_t>(rc.object)].object->object_id, rc.part, rc.best_t);
   });
 }
 

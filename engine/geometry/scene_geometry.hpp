@@ -99,13 +99,13 @@ class RayCaster {
   void cast(const std::vector<Vec3>& directions, std::vector<Hit>& hits, unsigned threads = 0) const;
 
   // The lean form for whole frames: ray i's direction comes from
-  // direction(i) and its nearest surface goes to emit(i, object_id, part)
-  // (object_id -1: the sky). Neither directions nor full hits are stored,
-  // and no range, point, normal or patch is computed (cast one ray with the
+  // direction(i) and its nearest surface goes to emit(i, object_id, part,
+  // range_m) (object_id -1: the sky). Neither directions nor full hits are
+  // stored, and no point, normal or patch is computed (cast one ray with the
   // form above where those are needed). Both callbacks are called from the
   // worker threads, each index once.
   void cast_objects(std::size_t count, const std::function<Vec3(std::size_t)>& direction,
-                    const std::function<void(std::size_t, std::int32_t, std::int32_t)>& emit,
+                    const std::function<void(std::size_t, std::int32_t, std::int32_t, double)>& emit,
                     unsigned threads = 0) const;
 
  private:

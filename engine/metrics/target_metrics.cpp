@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "scene/placement.hpp"
 #include "scene/sample_grid.hpp"
+#include "scene/surface_shader.hpp"
 #include "universe/object_motion.hpp"
 
 namespace eoir::metrics {
@@ -43,9 +44,10 @@ std::vector<geometry::Hit> cast(const World& w, bool with_target, const std::vec
   return hits;
 }
 
-double radiance_of(const World& w, const geometry::Hit& hit, const scene::SpectralView& view) {
-  if (hit.object_id < 0) return 0.0;  // the sky: no background terms yet
-  return scene::effective_radiance(w.placements[static_cast<size_t>(hit.object_id)].surface.part(hit.part), view);
+// The radiance a hit sees (the sky: no background terms yet).
+double radiance_of(const std::vector<scene::SurfaceShader>& shaders, const geometry::Hit& hit) {
+  if (hit.object_id < 0) return 0.0;
+  return shaders[static_cast<size_t>(hit.object_id)].radiance_at(hit.part, hit.point_body_m);
 }
 }  // namespace
 
@@ -66,6 +68,9 @@ TargetMetrics target_metrics(const universe::Universe& universe, const EngineTim
   const scene::SpectralView view = scene::SpectralView::make(
       p.band_low_um, p.band_high_um, p.spectral_intervals,
       p.band_integration == "exact" ? scene::BandIntegration::exact : scene::BandIntegration::grid);
+
+  std::vector<scene::SurfaceShader> shaders;
+  for (const scene::Placement& pl : w.placements) shaders.emplace_back(pl.surface, pl.placed, view, p.scene_mode == "smooth");
 
   TargetMetrics r;
   const double range_m = tp.range_m;
@@ -96,7 +101,7 @@ TargetMetrics target_metrics(const universe::Universe& universe, const EngineTim
   const double ne_dark = m.dark_noise_electrons, SEe = m.saturation_electrons;
   if (r.point_source) {
     // Background: what the line of sight meets beyond the target (eq. 62).
-    const double L_bkg = radiance_of(w, cast(w, false, {los})[0], view);
+    const double L_bkg = radiance_of(shaders, cast(w, false, {los})[0]);
     const double E_tgt = scene::point_irradiance_W_cm2(tp, view);  // eq. 61
     const double omega_ratio = r.target_solid_angle_sr / m.effective_ifov_solid_angle_sr;
     const double r_tgt = std::min(E_tgt * R_E + L_bkg * (1.0 - omega_ratio) * R_L, SEe);  // eq. 59
@@ -129,7 +134,7 @@ TargetMetrics target_metrics(const universe::Universe& universe, const EngineTim
   double sum_tgt = 0, sum_bkg = 0;
   int n_tgt = 0, n_bkg = 0;
   for (const auto& h : hits) {
-    const double L = radiance_of(w, h, view);
+    const double L = radiance_of(shaders, h);
     if (h.object_id == tp.placed.object_id) sum_tgt += L, ++n_tgt;
     else sum_bkg += L, ++n_bkg;
   }

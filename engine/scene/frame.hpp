@@ -3,6 +3,7 @@
 // 4.1.1), what each sample hit (for picks, spec 6.2.1), and the sensor image
 // (spec 5.11).
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,6 +24,19 @@ struct PointSource {
   double range_m = 0;
 };
 
+// How an object's surface temperature varies (spec 4.3.1.3).
+struct ThermalField {
+  bool subsolar = false;                  // eq. 12; otherwise each part's temperature_K
+  double subsolar_K = 0, night_K = 0;
+  Eigen::Vector3d sun_body = Eigen::Vector3d::UnitX();  // unit vector toward the Sun, body frame
+  // Temperature where the outward surface normal is n (body frame).
+  double at(const Eigen::Vector3d& normal_body, double uniform_K) const {
+    if (!subsolar) return uniform_K;
+    const double c = normal_body.dot(sun_body);
+    return c > 0 ? subsolar_K * std::pow(c, 0.25) : night_K;  // T_ss cos^(1/4)(phi)
+  }
+};
+
 // The surfaces a hit object is made of (one per shape part), for shading and
 // picks.
 struct FrameObject {
@@ -31,6 +45,7 @@ struct FrameObject {
   bool earth = false;  // body frame is Earth-fixed (others: J2000-aligned axes)
   std::vector<SurfacePoint> parts;
   double equatorial_radius_m = 0, polar_radius_m = 0;  // central bodies: for latitude/longitude
+  ThermalField thermal;
   const SurfacePoint& part(std::int32_t i) const { return parts[static_cast<std::size_t>(i < 0 ? 0 : i)]; }
 };
 
@@ -53,6 +68,7 @@ struct Frame {
   EngineTime time;
   SampleGrid grid;
   SpectralView spectral;
+  bool smooth = false;  // scene mode (spec 4.2): smooth, else coarse
   Eigen::Vector3d boresight_j2000 = Eigen::Vector3d::UnitZ();  // sensor +z
   Eigen::Vector3d up_j2000 = Eigen::Vector3d::UnitY();         // sensor +y
   Eigen::Matrix3d body_to_j2000 = Eigen::Matrix3d::Identity();

@@ -5,6 +5,7 @@
 #include "core/frames.hpp"
 #include "geometry/projected_area.hpp"
 #include "geometry/shape_intersect.hpp"
+#include "scene/surface_shader.hpp"
 #include "universe/composite.hpp"
 #include "universe/object_motion.hpp"
 
@@ -65,7 +66,15 @@ std::optional<Placement> place_object(const universe::Universe& universe, const 
   if (earth) po.body_to_frame = frames::j2000_to_earth_fixed(t).transpose();
   else if (po.central_body) po.body_to_frame.setIdentity();
   else po.body_to_frame = k.attitude.toRotationMatrix();
-  pl.surface = FrameObject{o.name, po.central_body, earth, {}, 0.0, 0.0};
+  pl.surface = FrameObject{o.name, po.central_body, earth, {}, 0.0, 0.0, ThermalField{}};
+  if (o.body.thermal_model == "subsolar") {
+    ThermalField& th = pl.surface.thermal;
+    th.subsolar = true;
+    th.subsolar_K = o.body.subsolar_temperature_K;
+    th.night_K = o.body.night_temperature_K;
+    const universe::Kinematics sun = universe::kinematics_at(universe, universe.get("Sun"), t);
+    th.sun_body = (po.body_to_frame.transpose() * (sun.position_m - k.position_m)).normalized();
+  }
   if (po.central_body) {
     pl.surface.equatorial_radius_m = o.body.dimensions_m[0];
     pl.surface.polar_radius_m = o.body.dimensions_m[1];
@@ -91,15 +100,16 @@ double projected_solid_angle_sr(const Placement& pl) {
 
 double point_irradiance_W_cm2(const Placement& pl, const SpectralView& view) {
   const geometry::PlacedObject& po = pl.placed;
-  if (po.parts.size() == 1) return effective_radiance(pl.surface.parts[0], view) * projected_solid_angle_sr(pl);
-  // Parts of different surfaces: the sum over visible patches of L dOmega.
-  std::vector<double> part_radiance;
-  for (const SurfacePoint& s : pl.surface.parts) part_radiance.push_back(effective_radiance(s, view));
+  const SurfaceShader shader(pl.surface, po, view, false);
+  if (po.parts.size() == 1 && !shader.varying()) return shader.part_radiance(0) * projected_solid_angle_sr(pl);
+  // Varying surfaces and composites: the sum over visible patches of L dOmega.
   const geometry::Vec3 toward_observer_body = -(po.body_to_frame.transpose() * po.position_m).normalized();
   double irradiance = 0;
-  for (const geometry::Patch& patch : po.tessellation.patches)
-    irradiance += part_radiance[static_cast<std::size_t>(patch.part)] *
+  for (std::size_t k = 0; k < po.tessellation.patches.size(); ++k) {
+    const geometry::Patch& patch = po.tessellation.patches[k];
+    irradiance += shader.patch_radiance(static_cast<std::int32_t>(k)) *
                   std::max(0.0, patch.normal_body.dot(toward_observer_body)) * patch.area_m2;
+  }
   return irradiance / (pl.range_m * pl.range_m);
 }
 

@@ -31,9 +31,9 @@ void tessellate_placement(const universe::Object& o, Placement& placement);
 
 // Band-integrated irradiance at the observer of an object seen as a point
 // (spec 4.1.6.1; the tessellation sum of ERRATA eq. 11, sum of L dOmega over
-// the visible patches): for a single shape, L A* / R^2 with the projected
-// area A* of eq. 58, exact for analytic shapes; for a composite the patch
-// sum with each part's radiance (parts shadowing parts are not removed).
+// the visible patches): for a single uniform shape, L A* / R^2 with the
+// projected area A* of eq. 58, exact for analytic shapes; for composites and
+// varying surfaces the patch sum (parts shadowing parts are not removed).
 // W/cm^2.
 double point_irradiance_W_cm2(const Placement& placement, const SpectralView& view);
 // A* / R^2, the target solid angle of eq. 58 (sr).

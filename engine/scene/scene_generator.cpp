@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "core/error.hpp"
 #include "scene/placement.hpp"
+#include "scene/surface_shader.hpp"
 #include "universe/object_motion.hpp"
 
 namespace eoir::scene {
@@ -76,32 +78,42 @@ void generate_scene(const universe::Universe& universe, const EngineTime& t, con
     placed.push_back(std::move(pl->placed));
   }
 
+  std::vector<const geometry::PlacedObject*> placed_by_id(frame.objects.size(), nullptr);
+  for (const geometry::PlacedObject& po : placed) placed_by_id[static_cast<std::size_t>(po.object_id)] = &po;
   const auto t1 = clock::now();
   // 3-5. Ray-cast the sample grid (spec 4.1.3) in the observer frame and
-  // shade only what is hit, band-integrated once per surface (eq. 48). Every
-  // patch of a part has the same self-emission, so coarse (4.2.1) and smooth
-  // (4.2.2) modes give the same samples until per-patch terms arrive.
+  // shade only what is hit (eq. 48): one radiance per part of a uniform
+  // surface; per patch (coarse) or per sample point (smooth) where the
+  // temperature varies (scene/surface_shader.hpp).
   const std::int64_t w = grid.width(), h = grid.height();
   const std::size_t count = static_cast<std::size_t>(w * h);
-  std::vector<std::vector<double>> part_radiance(frame.objects.size());
-  for (std::size_t k = 0; k < frame.objects.size(); ++k)
-    for (const SurfacePoint& surface : frame.objects[k].parts)
-      part_radiance[k].push_back(effective_radiance(surface, frame.spectral));
+  const bool smooth = frame.smooth = p.scene_mode == "smooth";
+  std::vector<std::unique_ptr<SurfaceShader>> shaders(frame.objects.size());
+  for (const geometry::PlacedObject& po : placed)
+    shaders[static_cast<std::size_t>(po.object_id)] =
+        std::make_unique<SurfaceShader>(frame.objects[static_cast<std::size_t>(po.object_id)], po, frame.spectral, smooth);
   const auto t2 = clock::now();
   frame.samples.assign(count, Frame::SampleHit{});
   frame.scene_radiance.assign(count, 0.0);
+  const auto direction = [&](std::size_t i) {
+    const auto r = static_cast<std::int64_t>(i) / w, c = static_cast<std::int64_t>(i) % w;
+    return Vec3(frame.body_to_j2000 * grid.direction_body(c, r));
+  };
   geometry::RayCaster caster;
   caster.build(placed);
   caster.cast_objects(
-      count,
-      [&](std::size_t i) {
-        const auto r = static_cast<std::int64_t>(i) / w, c = static_cast<std::int64_t>(i) % w;
-        return Vec3(frame.body_to_j2000 * grid.direction_body(c, r));
-      },
-      [&](std::size_t i, std::int32_t object, std::int32_t part) {
+      count, direction,
+      [&](std::size_t i, std::int32_t object, std::int32_t part, double range_m) {
         frame.samples[i] = Frame::SampleHit{object, part};
-        if (object >= 0)
-          frame.scene_radiance[i] = part_radiance[static_cast<std::size_t>(object)][static_cast<std::size_t>(std::max(part, 0))];
+        if (object < 0) return;
+        const SurfaceShader& shader = *shaders[static_cast<std::size_t>(object)];
+        if (!shader.varying()) {
+          frame.scene_radiance[i] = shader.part_radiance(part);
+          return;
+        }
+        const geometry::PlacedObject& po = *placed_by_id[static_cast<std::size_t>(object)];
+        const Vec3 point_body = po.body_to_frame.transpose() * (range_m * direction(i) - po.position_m);
+        frame.scene_radiance[i] = shader.radiance_at(part, point_body);
       },
       threads);
   const auto t3 = clock::now();

@@ -49,6 +49,12 @@ struct BodyProperties {
   std::int64_t stages = 1;   // missiles only (spec 4.3.6)
   double patch_size_m = 0.0; // tessellation (spec 4.1.5.2): patch edge; 0 = automatic
   std::string composite = "[]";  // parts of shape "composite" (universe/composite.hpp)
+  // Thermal model (spec 4.3.1.3): "uniform" (temperature_K everywhere) or
+  // "subsolar" (eq. 12: T_ss cos^(1/4) of the angle from the subsolar point
+  // on the day side, a constant night temperature on the night side).
+  std::string thermal_model = "uniform";
+  double subsolar_temperature_K = 390.0;  // the Moon's (Lawson and Jakosky)
+  double night_temperature_K = 95.0;
 };
 
 struct StarFieldProperties {

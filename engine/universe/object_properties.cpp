@@ -1,6 +1,7 @@
 #include "universe/object_properties.hpp"
 
 #include <cmath>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "core/limits.hpp"
@@ -87,6 +88,31 @@ std::vector<Spec> body_properties(bool missile) {
                      parse_composite(text, "composite");  // validates, naming the JSON path
                      o.body.composite = text;
                    }});
+  t.push_back(Spec{"thermal_model", ValueType::string, "",
+                   "uniform (temperature_K everywhere) or subsolar (spec 4.3.1.3 eq. 12: T_ss cos^(1/4) of the "
+                   "angle from the subsolar point by day, night_temperature_K by night)",
+                   [](const Object& o) { return Value(o.body.thermal_model); },
+                   [](Object& o, const Value& v) {
+                     const std::string& m = string_of(v, "thermal_model");
+                     if (m != "uniform" && m != "subsolar")
+                       throw Error(Status::unknown_name, "thermal_model: unknown model '" + m + "' (uniform, subsolar)");
+                     o.body.thermal_model = m;
+                   }});
+  for (const auto& [name, member, text] :
+       {std::tuple<const char*, double BodyProperties::*, const char*>{
+            "subsolar_temperature_K", &BodyProperties::subsolar_temperature_K,
+            "T_ss of the subsolar thermal model (eq. 12)"},
+        {"night_temperature_K", &BodyProperties::night_temperature_K,
+         "Night-side temperature of the subsolar thermal model"}}) {
+    const char* field = name;
+    double BodyProperties::*m = member;
+    t.push_back(Spec{field, ValueType::number, "K", text, [m](const Object& o) { return Value(o.body.*m); },
+                     [field, m](Object& o, const Value& v) {
+                       const double x = number_of(v, field);
+                       require_non_negative(x, field);
+                       o.body.*m = x;
+                     }});
+  }
   t.push_back(Spec{"patch_size_m", ValueType::number, "m",
                    "Edge of the patches dA the surface is divided into (spec 4.1.5.2); 0 = automatic (785 km for "
                    "central bodies as spec 4.2.3, an eighth of the object's size otherwise)",

@@ -1,0 +1,69 @@
+#include "scene/surface_shader.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/shape_intersect.hpp"
+
+namespace eoir::scene {
+namespace {
+constexpr int kTableSize = 4096;
+}
+
+SurfaceShader::SurfaceShader(const FrameObject& object, const geometry::PlacedObject& placed, const SpectralView& view,
+                             bool smooth)
+    : object_(&object), placed_(&placed), view_(&view), smooth_(smooth) {
+  for (const SurfacePoint& s : object.parts) part_radiance_.push_back(effective_radiance(s, view));
+  if (!varying()) return;
+  const ThermalField& th = object.thermal;
+  for (const geometry::Patch& patch : placed.tessellation.patches) {
+    const double T = th.at(patch.normal_body, object.part(patch.part).temperature_K);
+    patch_radiance_.push_back(radiance_of_temperature(patch.part, T));
+  }
+  if (!smooth) return;
+  table_T0_ = std::min(th.night_K, th.subsolar_K);
+  table_dT_ = std::max(std::fabs(th.subsolar_K - th.night_K), 1e-9) / (kTableSize - 1);
+  for (std::size_t p = 0; p < object.parts.size(); ++p) {
+    std::vector<double> row(kTableSize + 1);
+    for (int k = 0; k <= kTableSize; ++k)
+      row[static_cast<std::size_t>(k)] =
+          effective_radiance(SurfacePoint{table_T0_ + k * table_dT_, object.parts[p].reflectance}, view);
+    table_.push_back(std::move(row));
+  }
+}
+
+double SurfaceShader::radiance_of_temperature(std::int32_t part, double T) const {
+  return effective_radiance(SurfacePoint{T, object_->part(part).reflectance}, *view_);
+}
+
+geometry::Vec3 SurfaceShader::normal_at(std::int32_t part, const geometry::Vec3& point_body) const {
+  const geometry::ShapePart& sp = placed_->parts[index(part)];
+  const geometry::Vec3 local = sp.orientation.conjugate() * (point_body - sp.offset_m);
+  return (sp.orientation * geometry::shape_normal(geometry::shape_geom(sp), local)).normalized();
+}
+
+double SurfaceShader::temperature_at(std::int32_t part, const geometry::Vec3& point_body) const {
+  const double uniform = object_->part(part).temperature_K;
+  if (!varying()) return uniform;
+  if (!smooth_) {
+    const std::int32_t k = geometry::patch_at(placed_->tessellation, placed_->parts, part, point_body);
+    return object_->thermal.at(placed_->tessellation.patches[static_cast<std::size_t>(k)].normal_body, uniform);
+  }
+  return object_->thermal.at(normal_at(part, point_body), uniform);
+}
+
+double SurfaceShader::radiance_at(std::int32_t part, const geometry::Vec3& point_body) const {
+  if (!varying()) return part_radiance(part);
+  if (!smooth_) return patch_radiance(geometry::patch_at(placed_->tessellation, placed_->parts, part, point_body));
+  const double u = std::clamp((temperature_at(part, point_body) - table_T0_) / table_dT_, 0.0, double(kTableSize));
+  const auto k = std::min(static_cast<std::size_t>(u), static_cast<std::size_t>(kTableSize - 1));
+  const auto& row = table_[index(part)];
+  return row[k] + (u - static_cast<double>(k)) * (row[k + 1] - row[k]);
+}
+
+double SurfaceShader::patch_radiance(std::int32_t patch) const {
+  if (!varying()) return part_radiance(placed_->tessellation.patches[static_cast<std::size_t>(patch)].part);
+  return patch_radiance_[static_cast<std::size_t>(patch)];
+}
+
+}  // namespace eoir::scene

@@ -188,43 +188,63 @@ Options parse_options(const std::vector<std::string>& args, const std::string& c
   return o;
 }
 
+// --start, --stop and --step, checked (the scenario supplies the defaults).
+struct TimeRange {
+  std::optional<double> start_s, stop_s, step_s;
+};
+
+TimeRange parse_time_range(const Options& o) {
+  TimeRange r;
+  if (const auto step = o.get("--step")) {
+    r.step_s = parse_seconds(*step, "--step");
+    if (!(*r.step_s > 0)) throw UsageError("--step: must be positive, not " + *step);
+  }
+  if (const auto start = o.get("--start")) r.start_s = parse_time_option(*start, "--start");
+  if (const auto stop = o.get("--stop")) r.stop_s = parse_time_option(*stop, "--stop");
+  if (r.start_s && r.stop_s && *r.stop_s < *r.start_s)
+    throw UsageError("--stop " + *o.get("--stop") + " is before --start " + *o.get("--start"));
+  return r;
+}
+
+// The scenario's stop unless --stop is given (or --start lies past it).
+double default_stop(const TimeRange& r, const Scenario& sc) {
+  const double t0 = r.start_s.value_or(sc.start_s);
+  return r.stop_s.value_or(r.start_s && *r.start_s > sc.stop_s ? t0 : sc.stop_s);
+}
+
+// t0, t0 + dt, ... up to t1, with t1 itself always last.
+std::vector<double> step_times(double t0, double t1, double dt, const std::string& command, std::size_t most) {
+  if (t1 < t0) throw UsageError("--stop " + format_iso(t1) + " is before the start " + format_iso(t0));
+  std::vector<double> times;
+  for (long long k = 0;; ++k) {
+    const double t = t0 + static_cast<double>(k) * dt;
+    if (t > t1 + 1e-6) break;
+    times.push_back(t);
+    if (times.size() > most)
+      throw UsageError(command + ": more than " + std::to_string(most) + " time steps; use a larger --step");
+  }
+  if (times.back() < t1 - 1e-6) times.push_back(t1);
+  return times;
+}
+
 int cmd_report(const std::vector<std::string>& args, const char* library) {
   const Options o = parse_options(
       args, "report", {"--provider", "--sensor", "--target", "--start", "--stop", "--step", "--format", "--out"},
       {"--quiet"});
   const auto scenario_file = o.scenario, provider = o.get("--provider"), sensor = o.get("--sensor"),
-             target = o.get("--target"), start = o.get("--start"), stop = o.get("--stop"), step = o.get("--step"),
-             out_file = o.get("--out");
+             target = o.get("--target"), out_file = o.get("--out");
   const std::string format = o.get("--format").value_or("json");
   const bool quiet = o.flags.count("--quiet") > 0;
   if (!scenario_file) throw UsageError("report: missing SCENARIO");
   if (!provider) throw UsageError("report: missing --provider GROUP");
   if (!sensor) throw UsageError("report: missing --sensor NAME");
   if (format != "json" && format != "csv") throw UsageError("--format: '" + format + "' is not json or csv");
-  std::optional<double> step_s;
-  if (step) {
-    step_s = parse_seconds(*step, "--step");
-    if (!(*step_s > 0)) throw UsageError("--step: must be positive, not " + *step);
-  }
-  std::optional<double> start_s, stop_s;
-  if (start) start_s = parse_time_option(*start, "--start");
-  if (stop) stop_s = parse_time_option(*stop, "--stop");
-  if (start_s && stop_s && *stop_s < *start_s)
-    throw UsageError("--stop " + *stop + " is before --start " + *start);
+  const TimeRange range = parse_time_range(o);
 
   const Scenario sc = load_scenario(*scenario_file);
-  const double t0 = start_s.value_or(sc.start_s);
-  const double t1 = stop_s.value_or(t0);
-  if (t1 < t0) throw UsageError("--stop " + *stop + " is before the start " + format_iso(t0));
-  const double dt = step_s.value_or(sc.step_s);
-  std::vector<double> times;
-  for (long long k = 0;; ++k) {
-    const double t = t0 + static_cast<double>(k) * dt;
-    if (t > t1 + 1e-6) break;
-    times.push_back(t);
-    if (times.size() > 10000000) throw UsageError("report: more than 10^7 rows; use a larger --step");
-  }
-  if (times.back() < t1 - 1e-6) times.push_back(t1);
+  const double t0 = range.start_s.value_or(sc.start_s);
+  const double t1 = range.stop_s.value_or(t0);  // a report defaults to one row
+  const std::vector<double> times = step_times(t0, t1, range.step_s.value_or(sc.step_s), "report", 10000000);
 
   Engine engine(library);
   Session session(engine, sc);
@@ -273,37 +293,18 @@ int cmd_report(const std::vector<std::string>& args, const char* library) {
 
 int cmd_run(const std::vector<std::string>& args, const char* library) {
   const Options o = parse_options(args, "run", {"--out", "--start", "--stop", "--step", "--sensor"}, {"--quiet"});
-  const auto scenario_file = o.scenario, out_dir = o.get("--out"), start = o.get("--start"), stop = o.get("--stop"),
-             step = o.get("--step");
+  const auto scenario_file = o.scenario, out_dir = o.get("--out");
   RunOptions opt;
   if (o.values.count("--sensor")) opt.sensors = o.values.at("--sensor");
   opt.quiet = o.flags.count("--quiet") > 0;
   if (!scenario_file) throw UsageError("run: missing SCENARIO");
   if (!out_dir) throw UsageError("run: missing --out DIR");
   if (out_dir->empty()) throw UsageError("--out: empty directory name");
-  std::optional<double> step_s;
-  if (step) {
-    step_s = parse_seconds(*step, "--step");
-    if (!(*step_s > 0)) throw UsageError("--step: must be positive, not " + *step);
-  }
-  std::optional<double> start_s, stop_s;
-  if (start) start_s = parse_time_option(*start, "--start");
-  if (stop) stop_s = parse_time_option(*stop, "--stop");
-  if (start_s && stop_s && *stop_s < *start_s)
-    throw UsageError("--stop " + *stop + " is before --start " + *start);
+  const TimeRange range = parse_time_range(o);
 
   const Scenario sc = load_scenario(*scenario_file);
-  const double t0 = start_s.value_or(sc.start_s);
-  const double t1 = stop_s.value_or(start_s && *start_s > sc.stop_s ? t0 : sc.stop_s);
-  if (t1 < t0) throw UsageError("--stop " + format_iso(t1) + " is before the start " + format_iso(t0));
-  const double dt = step_s.value_or(sc.step_s);
-  for (long long k = 0;; ++k) {
-    const double t = t0 + static_cast<double>(k) * dt;
-    if (t > t1 + 1e-6) break;
-    opt.times.push_back(t);
-    if (opt.times.size() > 9999) throw UsageError("run: more than 9999 time steps; use a larger --step");
-  }
-  if (opt.times.back() < t1 - 1e-6) opt.times.push_back(t1);
+  const double t0 = range.start_s.value_or(sc.start_s);
+  opt.times = step_times(t0, default_stop(range, sc), range.step_s.value_or(sc.step_s), "run", 9999);
   opt.scenario_file = *scenario_file;
   opt.out_dir = *out_dir;
 
@@ -327,8 +328,7 @@ int cmd_access(const std::vector<std::string>& args, const char* library) {
       args, "access", {"--sensor", "--target", "--min-snr", "--start", "--stop", "--step", "--format", "--out"},
       {"--quiet"}, true);
   const auto scenario_file = o.scenario, sensor = o.get("--sensor"), target = o.get("--target"),
-             min_snr_text = o.get("--min-snr"), start = o.get("--start"), stop = o.get("--stop"),
-             step = o.get("--step"), out_file = o.get("--out");
+             min_snr_text = o.get("--min-snr"), out_file = o.get("--out");
   const std::string format = o.get("--format").value_or("json");
   const bool quiet = o.flags.count("--quiet") > 0;
   if (!scenario_file) throw UsageError("access: missing SCENARIO");
@@ -344,28 +344,19 @@ int cmd_access(const std::vector<std::string>& args, const char* library) {
     if (m.empty() || end == nullptr || *end != '\0' || !std::isfinite(min_snr))
       throw UsageError("--min-snr: '" + m + "' is not a finite number");
   }
-  std::optional<double> step_s;
-  if (step) {
-    step_s = parse_seconds(*step, "--step");
-    if (!(*step_s > 0)) throw UsageError("--step: must be positive, not " + *step);
-  }
-  std::optional<double> start_s, stop_s;
-  if (start) start_s = parse_time_option(*start, "--start");
-  if (stop) stop_s = parse_time_option(*stop, "--stop");
-  if (start_s && stop_s && *stop_s < *start_s)
-    throw UsageError("--stop " + *stop + " is before --start " + *start);
+  const TimeRange range = parse_time_range(o);
 
   const Scenario sc = load_scenario(*scenario_file);
   // Times in whole milliseconds on the host time line (iso_time.hpp).
   const auto to_ms = [](double t) { return static_cast<int64_t>(std::llround(t * 1000.0)); };
-  const int64_t t0 = to_ms(start_s.value_or(sc.start_s));
-  const int64_t t1 = to_ms(stop_s.value_or(start_s && *start_s > sc.stop_s ? start_s.value_or(sc.start_s) : sc.stop_s));
+  const int64_t t0 = to_ms(range.start_s.value_or(sc.start_s));
+  const int64_t t1 = to_ms(default_stop(range, sc));
   if (t1 < t0)
     throw UsageError("--stop " + format_iso(static_cast<double>(t1) / 1000.0) + " is before the start " +
                      format_iso(static_cast<double>(t0) / 1000.0));
-  const double dt = step_s.value_or(sc.step_s);
+  const double dt = range.step_s.value_or(sc.step_s);
   const int64_t dt_ms = to_ms(dt);
-  if (dt_ms < 1) throw UsageError("--step: " + (step ? *step : std::to_string(dt)) + " s is below the 1 ms resolution of times");
+  if (dt_ms < 1) throw UsageError("--step: " + std::to_string(dt) + " s is below the 1 ms resolution of times");
   std::vector<int64_t> samples;
   for (int64_t t = t0; t <= t1; t += dt_ms) {
     samples.push_back(t);

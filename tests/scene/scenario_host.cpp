@@ -27,6 +27,18 @@ double Image::sum() const {
   return s;
 }
 
+double reference_band_radiance_8_12(double T) {
+  if (T <= 0) return 0;
+  const double c1 = 2 * 6.62607015e-34 * 299792458.0 * 299792458.0 * 1e20;  // W um^4 / (cm^2 sr)
+  const double c2 = 6.62607015e-34 * 299792458.0 / 1.380649e-23 * 1e6;     // um K
+  auto B = [&](double l) { return c1 / std::pow(l, 5) / std::expm1(c2 / (l * T)); };
+  const int n = 4000;
+  const double a = 8, b = 12, h = (b - a) / n;
+  double s = B(a) + B(b);
+  for (int i = 1; i < n; ++i) s += (i % 2 ? 4 : 2) * B(a + i * h);
+  return s * h / 3;
+}
+
 std::string validation_scenario(const std::string& name) {
   return std::string(EOIR_SOURCE_DIR) + "/scenarios/validation/" + name;
 }

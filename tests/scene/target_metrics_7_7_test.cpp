@@ -16,16 +16,6 @@ const char* kUniform = "valid_sens_pt_src_tgt_uniform_bkg.json";
 // Half a unit of the last digit the spec quotes, or 0.1 %, whichever is larger.
 double quoted(double value, double last_digit) { return std::max(0.5 * last_digit, 1e-3 * std::fabs(value)); }
 
-// Band radiance 8-12 um of a blackbody (Simpson, 4000 intervals), W/(cm^2 sr).
-double planck_band_8_12(double T) {
-  const double c1 = 2 * 6.62607015e-34 * 299792458.0 * 299792458.0 * 1e20, c2 = 6.62607015e-34 * 299792458.0 / 1.380649e-23 * 1e6;
-  auto B = [&](double l) { return c1 / std::pow(l, 5) / std::expm1(c2 / (l * T)); };
-  const int n = 4000;
-  const double h = 4.0 / n;
-  double s = B(8) + B(12);
-  for (int i = 1; i < n; ++i) s += (i % 2 ? 4 : 2) * B(8 + i * h);
-  return s * h / 3;
-}
 }  // namespace
 
 // 7.7.1 step 4, items a-j (and k, step 5 with ERRATA's 52.10 m^2): the
@@ -110,7 +100,7 @@ TEST(Spec_7_7_1, PointToExtendedTransition) {
 // over the report's 20 minutes at 60 s.
 TEST(Spec_7_7_2, SnrAgainstRangeMatchesAnalytic) {
   ScenarioHost host("valid_sens_point_src_target.json");
-  const double L = planck_band_8_12(250.0), area_cm2 = M_PI * 1.0 * 1.0;  // r = 1 cm
+  const double L = eoir::test::reference_band_radiance_8_12(250.0), area_cm2 = M_PI * 1.0 * 1.0;  // r = 1 cm
   double first_range = 0, last_range = 0;
   for (int step = 0; step <= 20; ++step) {
     host.at(60.0 * step);

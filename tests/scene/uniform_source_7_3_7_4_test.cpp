@@ -17,19 +17,6 @@ namespace {
 const char* kScenario = "valid_sens_uniform_ext_area_src.json";
 const char* kRadiometric = "EOIR Radiometric Performance";
 
-// Reference band radiance, independent of the engine: composite Simpson over
-// 8-12 um with 4000 intervals of eq. 5 (error < 1e-10 relative), W/(cm^2 sr).
-double planck_band_8_12(double T) {
-  if (T <= 0) return 0;
-  const double c1 = 2 * 6.62607015e-34 * 299792458.0 * 299792458.0 * 1e20;  // W um^4 / (cm^2 sr)
-  const double c2 = 6.62607015e-34 * 299792458.0 / 1.380649e-23 * 1e6;     // um K
-  auto B = [&](double l) { return c1 / std::pow(l, 5) / std::expm1(c2 / (l * T)); };
-  const int n = 4000;
-  const double a = 8, b = 12, h = (b - a) / n;
-  double s = B(a) + B(b);
-  for (int i = 1; i < n; ++i) s += (i % 2 ? 4 : 2) * B(a + i * h);
-  return s * h / 3;
-}
 
 Image render_at(ScenarioHost& host, double T) {
   host.set_number("Satellite2", "temperature_K", T);
@@ -45,10 +32,10 @@ Image render_at(ScenarioHost& host, double T) {
 // the exact option is independent of N.
 TEST(Spec_7_3, BandRadianceConvergesWithSpectralIntervals) {
   ScenarioHost host(kScenario);
-  EXPECT_NEAR(planck_band_8_12(150), 3.40e-5, 0.005e-5);  // the spec's true value, to its 3 digits
+  EXPECT_NEAR(eoir::test::reference_band_radiance_8_12(150), 3.40e-5, 0.005e-5);  // the spec's true value, to its 3 digits
   for (double T : {150.0, 200.0, 300.0}) {
     host.set_number("Satellite2", "temperature_K", T);
-    const double truth = planck_band_8_12(T);
+    const double truth = eoir::test::reference_band_radiance_8_12(T);
     double previous_error = 1.0;
     for (int n : {6, 12, 25, 50, 75, 100}) {
       host.set_number("Sensor1", "spectral_intervals", n);
@@ -85,10 +72,10 @@ TEST(Spec_7_4_1, DarkOffsetIsZero) {
 // responsivity within 0.5 %. 200 K gives 3.481e-4 W/(cm^2 sr).
 TEST(Spec_7_4_2, PeakRadianceResponsivityFromSlope) {
   ScenarioHost host(kScenario);
-  EXPECT_NEAR(planck_band_8_12(200), 3.481e-4, 0.0005e-4);
+  EXPECT_NEAR(eoir::test::reference_band_radiance_8_12(200), 3.481e-4, 0.0005e-4);
   std::vector<double> x, y;
   for (double T : {150.0, 200.0, 250.0, 300.0, 325.0, 350.0}) {
-    x.push_back(planck_band_8_12(T));
+    x.push_back(eoir::test::reference_band_radiance_8_12(T));
     y.push_back(render_at(host, T).mean(0, 0, 128, 128));
   }
   const double n = static_cast<double>(x.size());
@@ -124,7 +111,7 @@ TEST(Spec_7_4_4, ScenePhotonNoise) {
   const double R = host.metric(kRadiometric, "Peak Radiance Responsivity");
   const double ne_dark = 1e-9 * R;  // the scenario's dark NER (spec: 1e-9)
   for (double T : {150.0, 200.0, 250.0, 300.0, 325.0, 350.0}) {
-    const double expected = std::sqrt(ne_dark * ne_dark + planck_band_8_12(T) * R);
+    const double expected = std::sqrt(ne_dark * ne_dark + eoir::test::reference_band_radiance_8_12(T) * R);
     EXPECT_NEAR(render_at(host, T).stddev(0, 0, 128, 128) / expected, 1.0, 0.02) << T << " K";
   }
 }
@@ -140,7 +127,7 @@ TEST(Spec_7_4_5, SaturationAtTheSer) {
   EXPECT_NEAR(host.metric(kRadiometric, "SER"), 4e-3, 1e-12);
   const double full_well = 4e-3 * R;
   for (double T : {200.0, 250.0, 302.0, 304.0, 325.0, 350.0}) {
-    const double L = planck_band_8_12(T);
+    const double L = eoir::test::reference_band_radiance_8_12(T);
     const Image im = render_at(host, T);
     const double mean = im.mean(0, 0, 128, 128);
     if (L < 4e-3) {

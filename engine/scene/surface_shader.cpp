@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/shape_intersect.hpp"
 
@@ -16,10 +17,8 @@ SurfaceShader::SurfaceShader(const FrameObject& object, const geometry::PlacedOb
   for (const SurfacePoint& s : object.parts) part_radiance_.push_back(effective_radiance(s, view));
   if (!varying()) return;
   const ThermalField& th = object.thermal;
-  for (const geometry::Patch& patch : placed.tessellation.patches) {
-    const double T = th.at(patch.normal_body, object.part(patch.part).temperature_K);
-    patch_radiance_.push_back(radiance_of_temperature(patch.part, T));
-  }
+  patch_radiance_ = std::vector<std::atomic<double>>(placed.tessellation.patches.size());
+  for (auto& value : patch_radiance_) value.store(std::numeric_limits<double>::quiet_NaN(), std::memory_order_relaxed);
   if (!smooth) return;
   table_T0_ = std::min(th.night_K, th.subsolar_K);
   table_dT_ = std::max(std::fabs(th.subsolar_K - th.night_K), 1e-9) / (kTableSize - 1);
@@ -62,8 +61,15 @@ double SurfaceShader::radiance_at(std::int32_t part, const geometry::Vec3& point
 }
 
 double SurfaceShader::patch_radiance(std::int32_t patch) const {
-  if (!varying()) return part_radiance(placed_->tessellation.patches[static_cast<std::size_t>(patch)].part);
-  return patch_radiance_[static_cast<std::size_t>(patch)];
+  const geometry::Patch& p = placed_->tessellation.patches[static_cast<std::size_t>(patch)];
+  if (!varying()) return part_radiance(p.part);
+  std::atomic<double>& cached = patch_radiance_[static_cast<std::size_t>(patch)];
+  double L = cached.load(std::memory_order_relaxed);
+  if (std::isnan(L)) {  // two threads may both compute it: the same value
+    L = radiance_of_temperature(p.part, object_->thermal.at(p.normal_body, object_->part(p.part).temperature_K));
+    cached.store(L, std::memory_order_relaxed);
+  }
+  return L;
 }
 
 }  // namespace eoir::scene

@@ -4,8 +4,11 @@
 // spec 4.3.1.3) are shaded per patch dA in coarse mode (spec 4.2.1: the
 // value at the patch's centre, computed once per patch) and at each
 // sample's own surface point in smooth mode (4.2.2; through a table of L(T),
-// which takes the place of interpolating between patches).
+// which takes the place of interpolating between patches). Patch radiances
+// are computed the first time a sample (or a patch sum) asks for them, so
+// patches never hit are never shaded; lookups are safe from many threads.
 #pragma once
+#include <atomic>
 #include <vector>
 
 #include "geometry/scene_geometry.hpp"
@@ -35,7 +38,7 @@ class SurfaceShader {
   const SpectralView* view_;
   bool smooth_;
   std::vector<double> part_radiance_;
-  std::vector<double> patch_radiance_;  // varying surfaces
+  mutable std::vector<std::atomic<double>> patch_radiance_;  // varying surfaces; NaN until computed
   // Varying surfaces in smooth mode: L(T) per part on a uniform T grid.
   double table_T0_ = 0, table_dT_ = 1;
   std::vector<std::vector<double>> table_;

@@ -21,7 +21,6 @@ struct PointSource {
   std::int32_t object_id = -1;
   double column = 0, row = 0;         // fractional sample coordinates in the full grid
   double irradiance_W_cm2 = 0;        // band-integrated at the aperture (eq. 52)
-  double range_m = 0;
 };
 
 // How an object's surface temperature varies (spec 4.3.1.3).
@@ -41,8 +40,7 @@ struct ThermalField {
 // picks.
 struct FrameObject {
   std::string name;
-  bool central_body = false;
-  bool earth = false;  // body frame is Earth-fixed (others: J2000-aligned axes)
+  bool central_body = false;  // body frame Earth-fixed for the Earth, J2000-aligned for the others
   std::vector<SurfacePoint> parts;
   double equatorial_radius_m = 0, polar_radius_m = 0;  // central bodies: for latitude/longitude
   ThermalField thermal;

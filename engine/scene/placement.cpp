@@ -66,7 +66,7 @@ std::optional<Placement> place_object(const universe::Universe& universe, const 
   if (earth) po.body_to_frame = frames::j2000_to_earth_fixed(t).transpose();
   else if (po.central_body) po.body_to_frame.setIdentity();
   else po.body_to_frame = k.attitude.toRotationMatrix();
-  pl.surface = FrameObject{o.name, po.central_body, earth, {}, 0.0, 0.0, ThermalField{}};
+  pl.surface = FrameObject{o.name, po.central_body, {}, 0.0, 0.0, ThermalField{}};
   if (o.body.thermal_model == "subsolar") {
     ThermalField& th = pl.surface.thermal;
     th.subsolar = true;

@@ -72,7 +72,7 @@ void generate_scene(const universe::Universe& universe, const EngineTime& t, con
                           r >= g - 0.5 - tol && r <= g + 4.0 * grid.pixels_y - 0.5 + tol;
       if (inside)
         frame.point_sources.push_back(
-            PointSource{pl->placed.object_id, c, r, point_irradiance_W_cm2(*pl, frame.spectral), range});
+            PointSource{pl->placed.object_id, c, r, point_irradiance_W_cm2(*pl, frame.spectral)});
       continue;
     }
     placed.push_back(std::move(pl->placed));

@@ -67,6 +67,7 @@ class Engine {
     metric_cache_.clear();
     frames_.clear();
     target_cache_.clear();
+    truth_.clear();
   }
 
  private:

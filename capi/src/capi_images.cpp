@@ -149,6 +149,7 @@ EOIR_API eoir_status eoir_pick_get(eoir_engine engine, const char* sensor, int32
       const geometry::PlacedObject* po = nullptr;
       for (const auto& candidate : f.placed)
         if (candidate.object_id == hit.object_id) po = &candidate;
+      if (!po) throw Error(Status::internal, "pick: sample hit an object that was not cast against");
       const scene::SurfaceShader shader(o, *po, f.spectral, f.smooth);
       pick->temperature_K = shader.temperature_at(hit.part, hit.point_body_m);
       if (o.central_body) {

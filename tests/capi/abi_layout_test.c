@@ -1,0 +1,92 @@
+/* The C ABI is a promise (house rule 6): the layout of every public struct
+ * of ABI v1 on LP64 (x86_64) as released. Fields are only ever appended, so
+ * these offsets never change; a struct may only grow. A failure here means
+ * the header broke binary compatibility. */
+#include <stddef.h>
+
+#include "check.h"
+
+#define CHECK_LAYOUT(T, field, offset)                                                     \
+  do {                                                                                     \
+    ++check_count;                                                                         \
+    if (offsetof(T, field) != (offset)) {                                                  \
+      ++check_failures;                                                                    \
+      fprintf(stderr, "%s.%s moved: offset %zu, ABI v1 has %zu\n", #T, #field,             \
+              offsetof(T, field), (size_t)(offset));                                       \
+    }                                                                                      \
+  } while (0)
+#define CHECK_SIZE(T, size)                                                                \
+  do {                                                                                     \
+    ++check_count;                                                                         \
+    if (sizeof(T) < (size)) {                                                              \
+      ++check_failures;                                                                    \
+      fprintf(stderr, "%s shrank: %zu bytes, ABI v1 has %zu\n", #T, sizeof(T), (size_t)(size)); \
+    }                                                                                      \
+  } while (0)
+
+int main(void) {
+  if (sizeof(void*) != 8) {
+    printf("layout baseline is for LP64; skipped on this platform\n");
+    return 0;
+  }
+  CHECK_SIZE(eoir_engine_desc, 16);
+  CHECK_LAYOUT(eoir_engine_desc, threads, 4);
+  CHECK_LAYOUT(eoir_engine_desc, seed, 8);
+  CHECK_SIZE(eoir_time, 24);
+  CHECK_LAYOUT(eoir_time, jd1, 8);
+  CHECK_LAYOUT(eoir_time, jd2, 16);
+  CHECK_SIZE(eoir_state, 88);
+  CHECK_LAYOUT(eoir_state, frame, 4);
+  CHECK_LAYOUT(eoir_state, position, 8);
+  CHECK_LAYOUT(eoir_state, velocity, 32);
+  CHECK_LAYOUT(eoir_state, attitude, 56);
+  CHECK_SIZE(eoir_property_info, 40);
+  CHECK_LAYOUT(eoir_property_info, name, 8);
+  CHECK_LAYOUT(eoir_property_info, type, 16);
+  CHECK_LAYOUT(eoir_property_info, unit, 24);
+  CHECK_LAYOUT(eoir_property_info, description, 32);
+  CHECK_SIZE(eoir_element_info, 40);
+  CHECK_LAYOUT(eoir_element_info, name, 8);
+  CHECK_LAYOUT(eoir_element_info, type, 16);
+  CHECK_LAYOUT(eoir_element_info, unit, 24);
+  CHECK_LAYOUT(eoir_element_info, x_unit, 32);
+  CHECK_SIZE(eoir_host_api, 32);
+  CHECK_LAYOUT(eoir_host_api, user, 8);
+  CHECK_LAYOUT(eoir_host_api, log, 16);
+  CHECK_LAYOUT(eoir_host_api, progress, 24);
+  CHECK_SIZE(eoir_image_info, 72);
+  CHECK_LAYOUT(eoir_image_info, width, 4);
+  CHECK_LAYOUT(eoir_image_info, height, 8);
+  CHECK_LAYOUT(eoir_image_info, kind, 12);
+  CHECK_LAYOUT(eoir_image_info, unit, 16);
+  CHECK_LAYOUT(eoir_image_info, time_jd_utc, 24);
+  CHECK_LAYOUT(eoir_image_info, boresight_ra_deg, 40);
+  CHECK_LAYOUT(eoir_image_info, up_dec_deg, 64);
+  CHECK_SIZE(eoir_pick, 144);
+  CHECK_LAYOUT(eoir_pick, hit, 4);
+  CHECK_LAYOUT(eoir_pick, object, 8);
+  CHECK_LAYOUT(eoir_pick, patch, 72);
+  CHECK_LAYOUT(eoir_pick, range_m, 80);
+  CHECK_LAYOUT(eoir_pick, has_geodetic, 88);
+  CHECK_LAYOUT(eoir_pick, latitude_deg, 96);
+  CHECK_LAYOUT(eoir_pick, right_ascension_deg, 112);
+  CHECK_LAYOUT(eoir_pick, effective_radiance, 128);
+  CHECK_LAYOUT(eoir_pick, temperature_K, 136);
+  CHECK_SIZE(eoir_truth, 128);
+  CHECK_LAYOUT(eoir_truth, object, 4);
+  CHECK_LAYOUT(eoir_truth, pixel_x, 72);
+  CHECK_LAYOUT(eoir_truth, range_m, 88);
+  CHECK_LAYOUT(eoir_truth, point_source, 96);
+  CHECK_LAYOUT(eoir_truth, visible, 100);
+  CHECK_LAYOUT(eoir_truth, effective_irradiance, 104);
+  CHECK_LAYOUT(eoir_truth, snr, 120);
+  CHECK_LAYOUT(eoir_api_v1, abi_major, 4);
+  CHECK_LAYOUT(eoir_api_v1, version, 16);
+  CHECK_LAYOUT(eoir_api_v1, engine_create, 40);
+  CHECK_LAYOUT(eoir_api_v1, sensor_load, 288);
+  CHECK_LAYOUT(eoir_api_v1, render, 296);
+  CHECK_LAYOUT(eoir_api_v1, pick_get, 328);
+  CHECK_LAYOUT(eoir_api_v1, snr_constraint, 336);
+  CHECK_LAYOUT(eoir_api_v1, truth_get, 352);
+  return CHECK_SUMMARY();
+}

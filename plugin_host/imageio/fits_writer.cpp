@@ -131,6 +131,10 @@ void write_image(const std::string& path, const In* pixels, std::int64_t width, 
     // into them, so identical inputs give byte-identical files.
     fits_write_key_str(m.f, "CHECKSUM", "0000000000000000", "HDU checksum (FITS 4.0 standard)", &st);
     fits_write_key_str(m.f, "DATASUM", "0", "data unit checksum", &st);
+    // Flush first: the data unit's fill bytes are only written (as zeros)
+    // on a flush, and a checksum taken before it would sum whatever the
+    // memory driver's fresh buffer held (then cfitsio restamps the comment).
+    fits_flush_file(m.f, &st);
     unsigned long datasum = 0, hdusum = 0;
     fits_get_chksum(m.f, &datasum, &hdusum, &st);
     const std::string datasum_text = std::to_string(datasum);

@@ -121,26 +121,20 @@ StaticMetrics compute_static_metrics(const SensorParameters& p) {
   m.peak_irradiance_responsivity =
       peak_irradiance_responsivity(m.peak_radiance_responsivity, m.ensquared_energy, ifov_h_rad, ifov_v_rad);
   const double r_l = m.peak_radiance_responsivity, r_e = m.peak_irradiance_responsivity;
-  const double sensitivity = operating_sensitivity(p.sensitivity_pairs, p.integration_time_ms);
-  if (p.sensitivity_quantity == ApertureQuantity::irradiance) {
-    m.dark_nei_W_cm2 = sensitivity;
-    m.dark_ner_W_cm2_sr = radiance_from_irradiance(sensitivity, r_l, r_e);
-  } else {
-    m.dark_ner_W_cm2_sr = sensitivity;
-    m.dark_nei_W_cm2 = irradiance_from_radiance(sensitivity, r_l, r_e);
-  }
+  // An operating value given as irradiance or radiance, as both (the same
+  // electrons: E R_peak,E = L R_peak,L).
+  const auto both = [&](ApertureQuantity q, double value, double& irradiance, double& radiance) {
+    irradiance = q == ApertureQuantity::irradiance ? value : irradiance_from_radiance(value, r_l, r_e);
+    radiance = q == ApertureQuantity::radiance ? value : radiance_from_irradiance(value, r_l, r_e);
+  };
+  both(p.sensitivity_quantity, operating_sensitivity(p.sensitivity_pairs, p.integration_time_ms), m.dark_nei_W_cm2,
+       m.dark_ner_W_cm2_sr);
   m.dark_noise_electrons = m.dark_nei_W_cm2 * r_e;  // = NER R_peak,L
   const double infinity = std::numeric_limits<double>::infinity();
   // With saturation off the pairs are still reported when they are valid.
   if (p.saturation_enabled || valid_pairs(p.saturation_pairs)) {
-    const double saturation = operating_saturation(p.saturation_pairs, p.integration_time_ms);
-    if (p.saturation_quantity == ApertureQuantity::irradiance) {
-      m.sei_W_cm2 = saturation;
-      m.ser_W_cm2_sr = radiance_from_irradiance(saturation, r_l, r_e);
-    } else {
-      m.ser_W_cm2_sr = saturation;
-      m.sei_W_cm2 = irradiance_from_radiance(saturation, r_l, r_e);
-    }
+    both(p.saturation_quantity, operating_saturation(p.saturation_pairs, p.integration_time_ms), m.sei_W_cm2,
+         m.ser_W_cm2_sr);
   } else {
     m.sei_W_cm2 = m.ser_W_cm2_sr = infinity;
   }

@@ -76,20 +76,26 @@ double relative_sum(const std::vector<double>& a, const std::vector<double>& ref
   return r != 0 ? (s - r) / r : NAN;
 }
 
+// Renders the sensor once to warm up (static metrics, FFT plans), then once
+// per iteration, and reports the stage split averaged over the frames.
+void time_frames(benchmark::State& state, eoir::Engine& engine) {
+  engine.render("Sensor");
+  StageSums sums;
+  for (auto _ : state) {
+    const eoir::scene::Frame& f = engine.render("Sensor");
+    benchmark::DoNotOptimize(f.sensor_electrons.data());
+    sums.add(f.timings);
+  }
+  sums.report(state);
+}
+
 // args: pixels per side, spectral intervals.
 void BM_Frame(benchmark::State& state) {
   SensorSetup s;
   s.pixels = state.range(0);
   s.intervals = state.range(1);
   auto engine = eoir::bench::make_geo_scene(s);
-  engine->render("Sensor");  // warm-up: static metrics, FFT plans, BVH caches
-  StageSums sums;
-  for (auto _ : state) {
-    const eoir::scene::Frame& f = engine->render("Sensor");
-    benchmark::DoNotOptimize(f.sensor_electrons.data());
-    sums.add(f.timings);
-  }
-  sums.report(state);
+  time_frames(state, *engine);
   state.counters["pixels"] = static_cast<double>(s.pixels * s.pixels);
   state.counters["point_sources"] = static_cast<double>(engine->frame("Sensor").point_sources.size());
   state.counters["peak_rss_MiB"] = eoir::bench::peak_rss_mib();
@@ -115,14 +121,7 @@ void BM_FrameSpectral(benchmark::State& state) {
   s.band_integration = state.range(1) > 0 ? "grid" : "exact";
   const std::vector<double>& ref = exact_reference(s.pixels);
   auto engine = eoir::bench::make_geo_scene(s);
-  engine->render("Sensor");
-  StageSums sums;
-  for (auto _ : state) {
-    const eoir::scene::Frame& f = engine->render("Sensor");
-    benchmark::DoNotOptimize(f.sensor_electrons.data());
-    sums.add(f.timings);
-  }
-  sums.report(state);
+  time_frames(state, *engine);
   const auto& mean = engine->frame("Sensor").sensor_mean;
   state.counters["rel_rms_error_vs_exact"] = relative_rms(mean, ref);
   state.counters["rel_sum_error_vs_exact"] = relative_sum(mean, ref);
@@ -153,14 +152,7 @@ double patch_arg_m(std::int64_t centimetres) { return static_cast<double>(centim
 void BM_FramePatchSize(benchmark::State& state) {
   static const std::vector<double> ref = make_close_scene(0.05)->render("Sensor").sensor_mean;
   auto engine = make_close_scene(patch_arg_m(state.range(0)));
-  engine->render("Sensor");
-  StageSums sums;
-  for (auto _ : state) {
-    const eoir::scene::Frame& f = engine->render("Sensor");
-    benchmark::DoNotOptimize(f.sensor_electrons.data());
-    sums.add(f.timings);
-  }
-  sums.report(state);
+  time_frames(state, *engine);
   state.counters["patch_m"] = patch_arg_m(state.range(0));
   state.counters["rel_rms_error_vs_5cm"] = relative_rms(engine->frame("Sensor").sensor_mean, ref);
 }

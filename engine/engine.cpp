@@ -3,76 +3,112 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
 #include "core/error.hpp"
-#include "scene/scene_generator.hpp"
 #include "sensor/display.hpp"
-#include "sensor/image_chain.hpp"
-#include "sensor/sensor_properties.hpp"
+#include "universe/object_motion.hpp"
+#include "universe/object_properties.hpp"
 
 namespace eoir {
+namespace {
+using clock_type = std::chrono::steady_clock;
+double seconds_between(clock_type::time_point a, clock_type::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+}  // namespace
 
 Engine::Engine(const EngineOptions& options) : options_(options), noise_rng_(options.seed) {}
 
-const sensor::StaticMetrics& Engine::static_metrics(const std::string& name) {
-  const universe::Object& s = universe_.sensor(name);
-  auto it = metric_cache_.find(name);
-  if (it != metric_cache_.end() && it->second.revision == s.revision) return *it->second.metrics;
-  sensor::check_consistency(s.sensor);
-  auto m = std::make_shared<const sensor::StaticMetrics>(sensor::compute_static_metrics(s.sensor));
-  metric_cache_[name] = CachedMetrics{s.revision, m};
-  return *m;
+void Engine::changed() {
+  ++revision_;
+  target_cache_.clear();
 }
 
-const scene::Frame& Engine::render(const std::string& name) {
-  const sensor::StaticMetrics& m = static_metrics(name);
-  const universe::Object& s = universe_.sensor(name);
-  auto frame = std::make_shared<scene::Frame>();
-  scene::generate_scene(universe_, time_, s, m, options_.threads, *frame);
-  sensor::render_sensor_image(s.sensor, m, *frame, noise_rng_);
-  const auto display_start = std::chrono::steady_clock::now();
-  // Display images (spec 4.1.2): the scene view shows the irradiance of each
-  // sample of the field of view (L dOmega) with point sources added to the
-  // nearest sample; the sensor view shows electrons.
-  const scene::SampleGrid& g = frame->grid;
-  const std::int64_t w = g.width(), fw = g.pixels_x * scene::SampleGrid::per_pixel;
-  const std::int64_t fh = g.pixels_y * scene::SampleGrid::per_pixel, guard = g.guard_samples();
-  std::vector<double> irradiance(static_cast<std::size_t>(fw * fh));
-  for (std::int64_t r = 0; r < fh; ++r)
-    for (std::int64_t c = 0; c < fw; ++c)
-      irradiance[static_cast<std::size_t>(r * fw + c)] =
-          frame->scene_radiance[static_cast<std::size_t>((r + guard) * w + c + guard)] *
-          g.sample_solid_angle_sr(c + guard, r + guard);
-  for (const scene::PointSource& ps : frame->point_sources) {
-    const std::int64_t c = std::clamp<std::int64_t>(std::lround(ps.column) - guard, 0, fw - 1);
-    const std::int64_t r = std::clamp<std::int64_t>(std::lround(ps.row) - guard, 0, fh - 1);
-    irradiance[static_cast<std::size_t>(r * fw + c)] += ps.irradiance_W_cm2;
-  }
-  frame->scene_display = sensor::compress_for_display(irradiance, s.sensor.display_agc, s.sensor.display_gain_step, 1e-6);
-  const double full_scale = std::isfinite(m.saturation_electrons) ? m.saturation_electrons : 1e6;
-  frame->sensor_display =
-      sensor::compress_for_display(frame->sensor_electrons, s.sensor.display_agc, s.sensor.display_gain_step, full_scale);
-  frame->timings.display_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - display_start).count();
-  // Per-frame truth: the target metrics of every object in the field
-  // (central bodies are backgrounds, not targets), frozen with the frame.
-  std::vector<std::pair<std::string, metrics::TargetMetrics>> truth;
-  for (const scene::FrameObject& o : frame->objects) {
-    if (o.central_body) continue;
-    metrics::TargetMetrics t = metrics::target_metrics(universe_, time_, s, m, o.name);
-    if (t.in_field) truth.emplace_back(o.name, t);
-  }
-  frames_[name] = frame;
-  truth_[name] = std::move(truth);
-  return *frame;
+void Engine::progress(double fraction, const char* what) const {
+  if (options_.progress && !options_.progress(fraction, what))
+    throw Error(Status::cancelled, std::string(what) + ": cancelled by the host");
 }
 
-const scene::Frame& Engine::frame(const std::string& name) const {
-  universe_.sensor(name);
-  auto it = frames_.find(name);
-  if (it == frames_.end())
-    throw Error(Status::no_state, "sensor: no frame rendered for '" + name + "' yet; call eoir_render first");
-  return *it->second;
+void Engine::set_time(const EngineTime& t) {
+  time_ = t;
+  target_cache_.clear();
+}
+
+void Engine::add_object(universe::ObjectKind kind, const std::string& name) {
+  universe_.add(kind, name);
+  changed();
+}
+
+void Engine::add_sensor(const std::string& name, const std::string& parent) {
+  universe_.add(universe::ObjectKind::sensor, name, parent);
+  models_.erase(name);
+  frames_.erase(name);
+  changed();
+}
+
+void Engine::remove_object(const std::string& name) {
+  const std::string gone = universe_.get(name).name;
+  std::vector<std::string> sensors;
+  for (const auto& o : universe_.objects())
+    if (o.name == gone || (o.kind == universe::ObjectKind::sensor && o.parent == gone)) sensors.push_back(o.name);
+  universe_.remove(gone);
+  for (const auto& s : sensors) {
+    models_.erase(s);
+    worlds_.erase(s);
+    frames_.erase(s);
+  }
+  changed();
+}
+
+void Engine::push_state(const std::string& name, const EngineTime& epoch, int frame, const double position[3],
+                        const double velocity[3], const double attitude_wxyz[4]) {
+  universe::push_state(universe_.get(name), epoch, frame, position, velocity, attitude_wxyz);
+  changed();
+}
+
+void Engine::restore_state(const std::string& name, const universe::PushedState& s) {
+  universe::Object& o = universe_.get(name);
+  const double r[3] = {s.position_m.x(), s.position_m.y(), s.position_m.z()};
+  const double v[3] = {s.velocity_m_s.x(), s.velocity_m_s.y(), s.velocity_m_s.z()};
+  const double q[4] = {s.attitude.w(), s.attitude.x(), s.attitude.y(), s.attitude.z()};
+  universe::push_state(o, s.epoch, s.frame == universe::StateFrame::j2000 ? 0 : 1, r, v, q);  // validates
+  o.state.attitude = s.attitude;  // bit for bit (push_state normalises)
+  changed();
+}
+
+void Engine::set_property(const std::string& object, const std::string& property, const Value& value) {
+  universe::set_property(universe_.get(object, "object"), property, value);
+  changed();
+}
+
+void Engine::set_sensor_parameters(const std::string& sensor, const universe::SensorParameters& parameters) {
+  universe_.sensor(sensor);  // must exist and be a sensor
+  universe::validate(parameters);
+  universe::Object& o = universe_.get(sensor);
+  o.sensor = parameters;
+  ++o.revision;
+  changed();
+}
+
+std::shared_ptr<const sensor::SensorModel> Engine::sensor_model(const std::string& name) {
+  const universe::Object& s = universe_.sensor(name);
+  auto it = models_.find(name);
+  if (it != models_.end() && it->second.revision == s.revision) return it->second.model;
+  auto model = sensor::resolve_sensor(s.sensor);
+  models_[name] = CachedModel{s.revision, model};
+  return model;
+}
+
+std::shared_ptr<const scene::World> Engine::world(const std::string& sensor) {
+  const auto model = sensor_model(sensor);
+  auto it = worlds_.find(sensor);
+  if (it != worlds_.end() && it->second.revision == revision_ && it->second.time == time_) return it->second.world;
+  auto w = scene::build_world(universe_, time_, universe_.sensor(sensor),
+                              scene::ViewDefinition{model->grid, model->spectral, model->fidelity()});
+  ++world_builds_;
+  worlds_[sensor] = CachedWorld{revision_, time_, w};
+  return w;
 }
 
 metrics::ElementValue Engine::provider(const std::string& group, const std::string& element,
@@ -88,18 +124,105 @@ metrics::ElementValue Engine::provider(const std::string& group, const std::stri
   return metrics::static_element(m, group, element);
 }
 
+std::vector<double> Engine::provider_series(const std::string& group, const std::string& element,
+                                            const std::string& sensor, const std::string& target,
+                                            const std::vector<EngineTime>& times) {
+  std::vector<double> values;
+  values.reserve(times.size());
+  const std::size_t every = std::max<std::size_t>(1, times.size() / 100);
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    if (i % every == 0) progress(static_cast<double>(i) / static_cast<double>(times.size()), "report");
+    set_time(times[i]);
+    const metrics::ElementValue v = provider(group, element, sensor, target);
+    if (v.type == metrics::ElementType::curve)
+      throw Error(Status::type_mismatch, "element: '" + element + "' is a curve, not a scalar");
+    values.push_back(v.number);
+  }
+  progress(1.0, "report");
+  return values;
+}
+
 const metrics::TargetMetrics& Engine::target_metrics(const std::string& sensor, const std::string& target) {
   const auto key = std::make_pair(sensor, target);
   auto it = target_cache_.find(key);
   if (it != target_cache_.end()) return it->second;
-  const sensor::StaticMetrics& m = static_metrics(sensor);
-  metrics::TargetMetrics t = metrics::target_metrics(universe_, time_, universe_.sensor(sensor), m, target);
-  return target_cache_.emplace(key, t).first->second;
+  const auto model = sensor_model(sensor);
+  const auto w = world(sensor);
+  const scene::WorldObject& t = metrics::find_target(*w, universe_, target);
+  return target_cache_.emplace(key, metrics::target_metrics(*w, *model, t)).first->second;
 }
 
-const std::vector<std::pair<std::string, metrics::TargetMetrics>>& Engine::truth(const std::string& sensor) const {
-  frame(sensor);  // throws no_state before the first render
-  return truth_.at(sensor);
+const Frame& Engine::render(const std::string& name) {
+  const auto t0 = clock_type::now();
+  progress(0.0, "render");
+  auto frame = std::make_shared<Frame>();
+  frame->sensor_model = sensor_model(name);
+  frame->world = world(name);
+  const sensor::SensorModel& model = *frame->sensor_model;
+  const scene::World& w = *frame->world;
+  const auto t1 = clock_type::now();
+  progress(0.05, "render");
+  frame->scene = scene::generate_scene(w, options_.threads);
+  progress(0.6, "render");
+  frame->sensor = sensor::render_sensor_image(model, frame->scene.image, noise_rng_);
+  progress(0.9, "render");
+  const auto t2 = clock_type::now();
+  const universe::SensorParameters& p = model.parameters;
+  frame->scene_display = sensor::scene_display(frame->scene.image, p.display_agc, p.display_gain_step);
+  const double full_scale = std::isfinite(model.metrics.saturation_electrons) ? model.metrics.saturation_electrons : 1e6;
+  frame->sensor_display =
+      sensor::compress_for_display(frame->sensor.electrons, p.display_agc, p.display_gain_step, full_scale);
+  const auto t3 = clock_type::now();
+  // Per-frame truth: the target metrics of every object in the field,
+  // evaluated on the same world.
+  for (const auto& o : w.objects) {
+    if (o->central_body || o->imaging == scene::Imaging::outside) continue;
+    metrics::TargetMetrics t = metrics::target_metrics(w, model, *o);
+    if (t.in_field) frame->truth.push_back(TruthEntry{o->name, t});
+  }
+  const auto t4 = clock_type::now();
+  FrameTimings& tm = frame->timings;
+  tm.setup_s = seconds_between(t0, t1);
+  tm.shading_s = frame->scene.point_sources_s;
+  tm.ray_casting_s = frame->scene.ray_casting_s;
+  tm.rays = frame->scene.rays;
+  tm.convolution_s = frame->sensor.convolution_s;
+  tm.point_sources_s = frame->sensor.point_sources_s;
+  tm.noise_s = frame->sensor.noise_s;
+  tm.display_s = seconds_between(t2, t3);
+  tm.truth_s = seconds_between(t3, t4);
+  progress(1.0, "render");
+  if (options_.log) {
+    std::ostringstream s;
+    s << "render " << name << ": " << tm.rays << " rays, " << frame->scene.image.point_sources.size()
+      << " point sources, " << 1e3 * seconds_between(t0, t4) << " ms";
+    options_.log(0, s.str());
+  }
+  frames_[name] = frame;
+  return *frame;
+}
+
+const Frame& Engine::frame(const std::string& name) const {
+  universe_.sensor(name);
+  auto it = frames_.find(name);
+  if (it == frames_.end())
+    throw Error(Status::no_state, "sensor: no frame rendered for '" + name + "' yet; call eoir_render first");
+  return *it->second;
+}
+
+scene::Pick Engine::pick(const std::string& sensor, int space, std::int64_t x, std::int64_t y) const {
+  const Frame& f = frame(sensor);
+  if (space != 0 && space != 1) throw Error(Status::out_of_range, "space: 0 (sample) or 1 (pixel)");
+  const geometry::SampleGrid& g = f.grid();
+  const std::int64_t k = g.per_pixel;
+  const std::int64_t limit_x = space == 0 ? g.field_width() : g.pixels_x;
+  const std::int64_t limit_y = space == 0 ? g.field_height() : g.pixels_y;
+  if (x < 0 || x >= limit_x) throw Error(Status::out_of_range, "x: " + std::to_string(x) + " >= " + std::to_string(limit_x));
+  if (y < 0 || y >= limit_y) throw Error(Status::out_of_range, "y: " + std::to_string(y) + " >= " + std::to_string(limit_y));
+  // A pixel is picked at its centre sample (index k / 2 of its k).
+  const std::int64_t c = (space == 0 ? x : x * k + k / 2) + g.guard_samples();
+  const std::int64_t r = (space == 0 ? y : y * k + k / 2) + g.guard_samples();
+  return scene::pick_sample(*f.world, f.scene, c, r);
 }
 
 }  // namespace eoir

@@ -1,17 +1,22 @@
-// The engine: one modeled universe, its time, its sensors' cached metrics and
-// its noise generator. No terminal I/O, no global state; one engine per host
-// thread (calls on one engine must not overlap).
+// The engine: one modeled universe, its time, its sensors' resolved models
+// and worlds, its frames and its noise generator. It owns its state: every
+// change goes through a method here that drops what depends on it. No
+// terminal I/O, no global state. Not thread-safe: one caller at a time (the
+// C ABI serializes the calls on one handle); two engines are independent.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "core/time.hpp"
+#include "core/value.hpp"
+#include "frame.hpp"
 #include "metrics/provider_groups.hpp"
-#include "scene/frame.hpp"
-#include "sensor/static_metrics.hpp"
+#include "scene/pick.hpp"
 #include "universe/universe.hpp"
 
 namespace eoir {
@@ -19,71 +24,93 @@ namespace eoir {
 struct EngineOptions {
   std::uint32_t threads = 0;  // 0 = all cores
   std::uint64_t seed = 1;
+  // Called between the stages of long work with its completed fraction in
+  // [0, 1]; returning false cancels it (Error(Status::cancelled)). May be empty.
+  std::function<bool(double fraction, const std::string& what)> progress;
+  // level 0 debug, 1 info, 2 warning, 3 error. May be empty.
+  std::function<void(int level, const std::string& message)> log;
 };
 
 class Engine {
  public:
   explicit Engine(const EngineOptions& options = {});
 
-  universe::Universe& universe() { return universe_; }
+  // ---- state (read-only views; change it through the methods below)
   const universe::Universe& universe() const { return universe_; }
-
   const EngineTime& time() const { return time_; }
-  void set_time(const EngineTime& t) {
-    time_ = t;
-    target_cache_.clear();
-  }
-
   const EngineOptions& options() const { return options_; }
-  std::mt19937_64& noise_rng() { return noise_rng_; }
   const std::mt19937_64& noise_rng() const { return noise_rng_; }
+
+  // ---- changes: each invalidates what depends on it
+  void set_time(const EngineTime& t);
+  void add_object(universe::ObjectKind kind, const std::string& name);
+  void add_sensor(const std::string& name, const std::string& parent);
+  // Removes an object and the sensors attached to it (never the Sun).
+  void remove_object(const std::string& name);
+  // frame: 0 J2000, 1 Earth-fixed, 2 geodetic (universe/object_motion.hpp).
+  void push_state(const std::string& name, const EngineTime& epoch, int frame, const double position[3],
+                  const double velocity[3], const double attitude_wxyz[4]);
+  // A saved state restored exactly (validated as push_state validates).
+  void restore_state(const std::string& name, const universe::PushedState& state);
+  void set_property(const std::string& object, const std::string& property, const Value& value);
+  void set_sensor_parameters(const std::string& sensor, const universe::SensorParameters& parameters);
   void set_noise_rng(const std::mt19937_64& rng) { noise_rng_ = rng; }
 
-  // Static metrics of a sensor, recomputed only after its parameters change.
-  // Throws eoir::Error (unknown sensor, inconsistent parameters).
-  const sensor::StaticMetrics& static_metrics(const std::string& sensor);
-
+  // ---- derived results, cached until what they depend on changes
+  // The sensor's resolved model (validated); throws naming the field.
+  std::shared_ptr<const sensor::SensorModel> sensor_model(const std::string& sensor);
+  const sensor::StaticMetrics& static_metrics(const std::string& sensor) { return sensor_model(sensor)->metrics; }
+  // The world of `sensor` at the engine time: built once per (universe, time).
+  std::shared_ptr<const scene::World> world(const std::string& sensor);
   // One data-provider element at the engine time. `target` may be empty.
   metrics::ElementValue provider(const std::string& group, const std::string& element, const std::string& sensor,
                                  const std::string& target);
-
-  // Renders the frame of `sensor` at the engine time (spec 4 and 5; DESIGN.md
-  // section 1 steps 1-7) and keeps it until the next render.
-  const scene::Frame& render(const std::string& sensor);
-  // The last frame rendered for `sensor`; throws Error(no_state) if none.
-  const scene::Frame& frame(const std::string& sensor) const;
-
-  // Sensor-to-target metrics (spec 5.13) of `target` seen by `sensor` at the
-  // engine time, cached until the universe or the time changes.
+  // A scalar element at each of `times` (the engine time is left at the last).
+  std::vector<double> provider_series(const std::string& group, const std::string& element, const std::string& sensor,
+                                      const std::string& target, const std::vector<EngineTime>& times);
+  // Sensor-to-target metrics (spec 5.13) at the engine time.
   const metrics::TargetMetrics& target_metrics(const std::string& sensor, const std::string& target);
-  // The objects in the field of the last frame of `sensor`, with their
-  // target metrics as they were when it was rendered (per-frame truth).
-  const std::vector<std::pair<std::string, metrics::TargetMetrics>>& truth(const std::string& sensor) const;
 
-  // A state, property or object changed: drop results that depend on it.
-  void note_change() { target_cache_.clear(); }
-  // Drop every cached result (after a restore or removal).
-  void invalidate_caches() {
-    metric_cache_.clear();
-    frames_.clear();
-    target_cache_.clear();
-    truth_.clear();
-  }
+  // Renders the frame of `sensor` at the engine time (spec 4 and 5; DESIGN
+  // section 1 steps 1-7) and keeps it until the next render. On cancellation
+  // the previous frame stays.
+  const Frame& render(const std::string& sensor);
+  // The last frame rendered for `sensor`; throws Error(no_state) if none.
+  const Frame& frame(const std::string& sensor) const;
+  // Its per-frame truth: the objects in the field with their target metrics.
+  const std::vector<TruthEntry>& truth(const std::string& sensor) const { return frame(sensor).truth; }
+  // What sample (space 0) or the centre sample of pixel (space 1) (x, y) of
+  // the last frame sees.
+  scene::Pick pick(const std::string& sensor, int space, std::int64_t x, std::int64_t y) const;
+
+  // Worlds built so far (the same world serves a render's image, truth and
+  // target metrics).
+  std::uint64_t world_builds() const { return world_builds_; }
 
  private:
-  struct CachedMetrics {
-    std::uint64_t revision;
-    std::shared_ptr<const sensor::StaticMetrics> metrics;
+  void changed();  // the universe changed: drop every derived result but frames
+  // Reports progress; throws Error(cancelled) if the host asks to stop.
+  void progress(double fraction, const char* what) const;
+
+  struct CachedWorld {
+    std::uint64_t revision = 0;
+    EngineTime time;
+    std::shared_ptr<const scene::World> world;
+  };
+  struct CachedModel {
+    std::uint64_t revision = 0;
+    std::shared_ptr<const sensor::SensorModel> model;
   };
   EngineOptions options_;
   universe::Universe universe_;
   EngineTime time_;
   std::mt19937_64 noise_rng_;
-  std::map<std::string, CachedMetrics> metric_cache_;
-  std::map<std::string, std::shared_ptr<scene::Frame>> frames_;
-  std::map<std::pair<std::string, std::string>, metrics::TargetMetrics> target_cache_;
-  // Per-frame truth, computed with each render.
-  std::map<std::string, std::vector<std::pair<std::string, metrics::TargetMetrics>>> truth_;
+  std::uint64_t revision_ = 0;  // bumped by every change of the universe
+  std::uint64_t world_builds_ = 0;
+  std::map<std::string, CachedModel> models_;
+  std::map<std::string, CachedWorld> worlds_;
+  std::map<std::pair<std::string, std::string>, metrics::TargetMetrics> target_cache_;  // at revision_ and time_
+  std::map<std::string, std::shared_ptr<const Frame>> frames_;
 };
 
 }  // namespace eoir

@@ -9,6 +9,7 @@ using eoir::capi::guarded;
 using eoir::capi::need;
 using eoir::capi::need_size;
 using eoir::capi::str;
+using eoir::capi::with_engine;
 
 namespace {
 TimeScale scale_of(int32_t s, const char* field) {
@@ -31,9 +32,13 @@ EOIR_API eoir_status eoir_engine_create(const eoir_engine_desc* desc, eoir_engin
     EngineOptions options;
     if (desc) {
       need_size(desc->struct_size, sizeof(eoir_engine_desc), "desc");
+      if (desc->threads > 1024)
+        throw Error(Status::out_of_range, "desc.threads: at most 1024 worker threads, got " +
+                                              std::to_string(desc->threads));
       options.threads = desc->threads;
       options.seed = desc->seed;
     }
+    capi::attach_host_services(options);
     auto handle = std::make_unique<eoir_engine_s>();
     handle->engine = std::make_unique<Engine>(options);
     *engine_out = handle.release();
@@ -43,12 +48,11 @@ EOIR_API eoir_status eoir_engine_create(const eoir_engine_desc* desc, eoir_engin
 EOIR_API void eoir_engine_destroy(eoir_engine engine) { delete engine; }
 
 EOIR_API eoir_status eoir_engine_set_time(eoir_engine engine, const eoir_time* time) {
-  return guarded([&] { capi::engine_of(engine).set_time(time_of(time, "time")); });
+  return with_engine(engine, [&](Engine& e) { e.set_time(time_of(time, "time")); });
 }
 
 EOIR_API eoir_status eoir_engine_get_time(eoir_engine engine, int32_t scale, eoir_time* time_out) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
+  return with_engine(engine, [&](Engine& e) {
     need(time_out, "time_out");
     const JulianDate d = e.time().to(scale_of(scale, "scale"));
     time_out->scale = scale;
@@ -80,46 +84,34 @@ EOIR_API eoir_status eoir_time_to_iso(const eoir_time* time, char* buffer, size_
 }
 
 EOIR_API eoir_status eoir_object_add(eoir_engine engine, int32_t kind, const char* name) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
+  return with_engine(engine, [&](Engine& e) {
     const std::string n = str(name, "name");
     if (kind < EOIR_KIND_CENTRAL_BODY || kind > EOIR_KIND_MISSILE) {
       if (kind == EOIR_KIND_SENSOR)
         throw Error(Status::out_of_range, "kind: add sensors with eoir_sensor_add (they need a parent)");
       throw Error(Status::out_of_range, "kind: unknown object kind " + std::to_string(kind));
     }
-    e.universe().add(static_cast<universe::ObjectKind>(kind), n);
-    e.invalidate_caches();
+    e.add_object(static_cast<universe::ObjectKind>(kind), n);
   });
 }
 
 EOIR_API eoir_status eoir_sensor_add(eoir_engine engine, const char* name, const char* parent) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
-    e.universe().add(universe::ObjectKind::sensor, str(name, "name"), str(parent, "parent"));
-    e.invalidate_caches();
-  });
+  return with_engine(engine, [&](Engine& e) { e.add_sensor(str(name, "name"), str(parent, "parent")); });
 }
 
 EOIR_API eoir_status eoir_object_remove(eoir_engine engine, const char* name) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
-    e.universe().remove(str(name, "name"));
-    e.invalidate_caches();
-  });
+  return with_engine(engine, [&](Engine& e) { e.remove_object(str(name, "name")); });
 }
 
 EOIR_API eoir_status eoir_object_count(eoir_engine engine, size_t* count_out) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
+  return with_engine(engine, [&](Engine& e) {
     need(count_out, "count_out");
     *count_out = e.universe().objects().size();
   });
 }
 
 EOIR_API eoir_status eoir_object_at(eoir_engine engine, size_t index, const char** name_out, int32_t* kind_out) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
+  return with_engine(engine, [&](Engine& e) {
     need(name_out, "name_out");
     const auto& objects = e.universe().objects();
     if (index >= objects.size())
@@ -134,20 +126,17 @@ EOIR_API eoir_status eoir_object_at(eoir_engine engine, size_t index, const char
 
 EOIR_API eoir_status eoir_object_set_state(eoir_engine engine, const char* name, const eoir_time* time,
                                            const eoir_state* state) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
-    universe::Object& o = e.universe().get(str(name, "name"));
+  return with_engine(engine, [&](Engine& e) {
+    const std::string n = str(name, "name");
     need(state, "state");
     need_size(state->struct_size, sizeof(eoir_state), "state");
     const EngineTime epoch = time ? time_of(time, "time") : e.time();
-    universe::push_state(o, epoch, state->frame, state->position, state->velocity, state->attitude);
-    e.note_change();
+    e.push_state(n, epoch, state->frame, state->position, state->velocity, state->attitude);
   });
 }
 
 EOIR_API eoir_status eoir_object_get_state(eoir_engine engine, const char* name, eoir_state* state) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
+  return with_engine(engine, [&](Engine& e) {
     const universe::Object& o = e.universe().get(str(name, "name"));
     need(state, "state");
     need_size(state->struct_size, sizeof(eoir_state), "state");

@@ -32,6 +32,7 @@ EOIR_API const char* eoir_status_name(eoir_status status) {
     case EOIR_ERR_CORRUPT_FILE: return "EOIR_ERR_CORRUPT_FILE";
     case EOIR_ERR_FILE_VERSION: return "EOIR_ERR_FILE_VERSION";
     case EOIR_ERR_ABI_MISMATCH: return "EOIR_ERR_ABI_MISMATCH";
+    case EOIR_ERR_CANCELLED: return "EOIR_ERR_CANCELLED";
     case EOIR_ERR_INTERNAL: return "EOIR_ERR_INTERNAL";
     default: return "EOIR_ERR_UNKNOWN_STATUS";
   }

@@ -1,8 +1,10 @@
-// Shared pieces of the C ABI implementation: the engine handle, the guard
-// that turns every C++ exception into a status and a thread-local message,
-// and argument checks.
+// Shared pieces of the C ABI implementation: the engine handle (an engine and
+// the mutex that serializes calls on it), the guard that turns every C++
+// exception into a status and a thread-local message, and argument checks.
+// Everything here translates; the engine computes.
 #pragma once
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include "core/error.hpp"
@@ -10,6 +12,7 @@
 #include "eoir/eoir.h"
 
 struct eoir_engine_s {
+  std::mutex mutex;  // one call at a time on one engine (eoir.h "Threads")
   std::unique_ptr<eoir::Engine> engine;
 };
 
@@ -45,9 +48,15 @@ eoir_status guarded(F&& f) noexcept {
 inline void need(const void* p, const char* field) {
   if (!p) throw Error(Status::null_argument, std::string(field) + ": must not be NULL");
 }
-inline Engine& engine_of(eoir_engine e) {
-  need(e, "engine");
-  return *e->engine;
+// Runs f(engine) holding the handle's lock: calls on one engine from several
+// threads are serialized, never interleaved.
+template <class F>
+eoir_status with_engine(eoir_engine handle, F&& f) noexcept {
+  return guarded([&] {
+    need(handle, "engine");
+    std::lock_guard<std::mutex> lock(handle->mutex);
+    f(*handle->engine);
+  });
 }
 // A struct passed in must declare at least `minimum` bytes.
 inline void need_size(uint32_t struct_size, size_t minimum, const char* field) {
@@ -59,5 +68,7 @@ inline std::string str(const char* s, const char* field) {
   need(s, field);
   return s;
 }
+// The host's callbacks (eoir_plugin_entry) as engine options.
+void attach_host_services(EngineOptions& options);
 
 }  // namespace eoir::capi

@@ -58,8 +58,29 @@ const eoir_api_v1 api_v1 = {
     eoir_snr_constraint,
     eoir_truth_count,
     eoir_truth_get,
+    eoir_provider_series,
 };
 }  // namespace
+
+namespace eoir::capi {
+// Engines created after the host's table arrived report to it: progress
+// (cancellation when it returns non-zero) and log messages.
+void attach_host_services(EngineOptions& options) {
+  eoir_host_api host;
+  {
+    std::lock_guard<std::mutex> lock(host_mutex);
+    host = host_services;
+  }
+  if (host.progress) {
+    options.progress = [host](double fraction, const std::string& what) {
+      return host.progress(host.user, fraction, what.c_str()) == 0;
+    };
+  }
+  if (host.log) {
+    options.log = [host](int level, const std::string& message) { host.log(host.user, level, message.c_str()); };
+  }
+}
+}  // namespace eoir::capi
 
 extern "C" EOIR_API eoir_status eoir_plugin_entry(uint32_t abi_major, const eoir_host_api* host,
                                                   const void** api_out) {

@@ -1,4 +1,5 @@
 // Typed property access for objects and sensors.
+#include <cstddef>
 #include <cstring>
 
 #include "capi_internal.hpp"
@@ -8,17 +9,14 @@ using namespace eoir;
 using eoir::capi::guarded;
 using eoir::capi::need;
 using eoir::capi::str;
+using eoir::capi::with_engine;
 
 namespace {
-void set(eoir_engine engine, const char* object, const char* property, const Value& value) {
-  Engine& e = capi::engine_of(engine);
-  universe::Object& o = e.universe().get(str(object, "object"));
-  universe::set_property(o, str(property, "property"), value);
-  e.note_change();
+eoir_status set(eoir_engine engine, const char* object, const char* property, const Value& value) {
+  return with_engine(engine, [&](Engine& e) { e.set_property(str(object, "object"), str(property, "property"), value); });
 }
 
-Value get(eoir_engine engine, const char* object, const char* property, ValueType expected) {
-  Engine& e = capi::engine_of(engine);
+Value get(const Engine& e, const char* object, const char* property, ValueType expected) {
   const universe::Object& o = e.universe().get(str(object, "object"));
   const std::string p = str(property, "property");
   const auto& spec = universe::find_property(o, p);
@@ -35,52 +33,61 @@ Value get(eoir_engine engine, const char* object, const char* property, ValueTyp
 extern "C" {
 
 EOIR_API eoir_status eoir_set_number(eoir_engine engine, const char* object, const char* property, double value) {
-  return guarded([&] { set(engine, object, property, Value(value)); });
+  return set(engine, object, property, Value(value));
 }
 EOIR_API eoir_status eoir_set_integer(eoir_engine engine, const char* object, const char* property, int64_t value) {
-  return guarded([&] { set(engine, object, property, Value(static_cast<std::int64_t>(value))); });
+  return set(engine, object, property, Value(static_cast<std::int64_t>(value)));
 }
 EOIR_API eoir_status eoir_set_bool(eoir_engine engine, const char* object, const char* property, int32_t value) {
-  return guarded([&] { set(engine, object, property, Value(value != 0)); });
+  if (value != 0 && value != 1)
+    return guarded([&] {
+      throw Error(Status::out_of_range, "value: a bool is 0 or 1, got " + std::to_string(value));
+    });
+  return set(engine, object, property, Value(value != 0));
 }
 EOIR_API eoir_status eoir_set_string(eoir_engine engine, const char* object, const char* property,
                                      const char* value) {
-  return guarded([&] { set(engine, object, property, Value(str(value, "value"))); });
+  if (!value) return guarded([&] { need(value, "value"); });
+  return set(engine, object, property, Value(std::string(value)));
 }
 EOIR_API eoir_status eoir_set_array(eoir_engine engine, const char* object, const char* property,
                                     const double* values, size_t count) {
-  return guarded([&] {
-    if (count > 0) need(values, "values");
-    set(engine, object, property, Value(std::vector<double>(values, values + count)));
-  });
+  constexpr size_t max_array = 1u << 20;
+  if ((count > 0 && !values) || count > max_array)
+    return guarded([&] {
+      need(values, "values");
+      throw Error(Status::limit_exceeded, "count: at most " + std::to_string(max_array) + " values, got " +
+                                              std::to_string(count));
+    });
+  return set(engine, object, property, Value(std::vector<double>(values, values + count)));
 }
 
 EOIR_API eoir_status eoir_get_number(eoir_engine engine, const char* object, const char* property,
                                      double* value_out) {
-  return guarded([&] {
+  return with_engine(engine, [&](Engine& e) {
     need(value_out, "value_out");
-    *value_out = std::get<double>(get(engine, object, property, ValueType::number));
+    *value_out = std::get<double>(get(e, object, property, ValueType::number));
   });
 }
 EOIR_API eoir_status eoir_get_integer(eoir_engine engine, const char* object, const char* property,
                                       int64_t* value_out) {
-  return guarded([&] {
+  return with_engine(engine, [&](Engine& e) {
     need(value_out, "value_out");
-    *value_out = std::get<std::int64_t>(get(engine, object, property, ValueType::integer));
+    *value_out = std::get<std::int64_t>(get(e, object, property, ValueType::integer));
   });
 }
 EOIR_API eoir_status eoir_get_bool(eoir_engine engine, const char* object, const char* property,
                                    int32_t* value_out) {
-  return guarded([&] {
+  return with_engine(engine, [&](Engine& e) {
     need(value_out, "value_out");
-    *value_out = std::get<bool>(get(engine, object, property, ValueType::boolean)) ? 1 : 0;
+    *value_out = std::get<bool>(get(e, object, property, ValueType::boolean)) ? 1 : 0;
   });
 }
 EOIR_API eoir_status eoir_get_string(eoir_engine engine, const char* object, const char* property, char* buffer,
                                      size_t capacity) {
-  return guarded([&] {
+  return with_engine(engine, [&](Engine& e) {
     need(buffer, "buffer");
-    const std::string s = std::get<std::string>(get(engine, object, property, ValueType::string));
+    const std::string s = std::get<std::string>(get(e, object, property, ValueType::string));
     if (s.size() + 1 > capacity)
       throw Error(Status::buffer_too_small, "capacity: " + std::to_string(s.size() + 1) + " bytes needed");
     std::memcpy(buffer, s.c_str(), s.size() + 1);
@@ -88,9 +95,9 @@ EOIR_API eoir_status eoir_get_string(eoir_engine engine, const char* object, con
 }
 EOIR_API eoir_status eoir_get_array(eoir_engine engine, const char* object, const char* property, double* values,
                                     size_t capacity, size_t* count_out) {
-  return guarded([&] {
+  return with_engine(engine, [&](Engine& e) {
     need(count_out, "count_out");
-    const auto a = std::get<std::vector<double>>(get(engine, object, property, ValueType::array));
+    const auto a = std::get<std::vector<double>>(get(e, object, property, ValueType::array));
     *count_out = a.size();
     if (!values) return;
     if (a.size() > capacity)
@@ -101,11 +108,11 @@ EOIR_API eoir_status eoir_get_array(eoir_engine engine, const char* object, cons
 
 EOIR_API eoir_status eoir_property_info_at(eoir_engine engine, const char* object, size_t index,
                                            eoir_property_info* info_out) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
+  return with_engine(engine, [&](Engine& e) {
     const universe::Object& o = e.universe().get(str(object, "object"));
     need(info_out, "info_out");
-    capi::need_size(info_out->struct_size, sizeof(eoir_property_info), "info_out");
+    constexpr size_t v1_size = offsetof(eoir_property_info, flags);  // the struct before 1.3 appended flags
+    capi::need_size(info_out->struct_size, v1_size, "info_out");
     const auto& specs = universe::properties_of(o.kind);
     if (index >= specs.size())
       throw Error(Status::out_of_range, "index: " + std::to_string(index) + " >= property count " +
@@ -115,6 +122,8 @@ EOIR_API eoir_status eoir_property_info_at(eoir_engine engine, const char* objec
     info_out->type = static_cast<int32_t>(s.type);
     info_out->unit = s.unit;
     info_out->description = s.description;
+    if (info_out->struct_size >= offsetof(eoir_property_info, flags) + sizeof info_out->flags)
+      info_out->flags = s.fidelity ? EOIR_PROPERTY_FIDELITY : 0;
   });
 }
 }

@@ -20,9 +20,8 @@ int32_t type_of(metrics::ElementType t) {
   return 0;
 }
 
-metrics::ElementValue evaluate(eoir_engine engine, const char* group, const char* element, const char* sensor,
+metrics::ElementValue evaluate(Engine& e, const char* group, const char* element, const char* sensor,
                                const char* target) {
-  Engine& e = capi::engine_of(engine);
   return e.provider(str(group, "group"), str(element, "element"), str(sensor, "sensor"), target ? target : "");
 }
 }  // namespace
@@ -57,9 +56,9 @@ EOIR_API eoir_status eoir_provider_element_at(const char* group, size_t index, e
 
 EOIR_API eoir_status eoir_provider_get(eoir_engine engine, const char* group, const char* element,
                                        const char* sensor, const char* target, double* value_out) {
-  return guarded([&] {
+  return capi::with_engine(engine, [&](Engine& e) {
     need(value_out, "value_out");
-    const metrics::ElementValue v = evaluate(engine, group, element, sensor, target);
+    const metrics::ElementValue v = evaluate(e, group, element, sensor, target);
     if (v.type == metrics::ElementType::curve)
       throw Error(Status::type_mismatch,
                   std::string("element: '") + element + "' is a curve; read it with eoir_provider_get_curve");
@@ -70,9 +69,9 @@ EOIR_API eoir_status eoir_provider_get(eoir_engine engine, const char* group, co
 EOIR_API eoir_status eoir_provider_get_curve(eoir_engine engine, const char* group, const char* element,
                                              const char* sensor, const char* target, double* x, double* y,
                                              size_t capacity, size_t* count_out) {
-  return guarded([&] {
+  return capi::with_engine(engine, [&](Engine& e) {
     need(count_out, "count_out");
-    const metrics::ElementValue v = evaluate(engine, group, element, sensor, target);
+    const metrics::ElementValue v = evaluate(e, group, element, sensor, target);
     if (v.type != metrics::ElementType::curve || !v.curve)
       throw Error(Status::type_mismatch,
                   std::string("element: '") + element + "' is a scalar; read it with eoir_provider_get");
@@ -84,6 +83,28 @@ EOIR_API eoir_status eoir_provider_get_curve(eoir_engine engine, const char* gro
       throw Error(Status::buffer_too_small, "capacity: " + std::to_string(fy.size()) + " points needed");
     std::copy(fx.begin(), fx.end(), x);
     std::copy(fy.begin(), fy.end(), y);
+  });
+}
+
+EOIR_API eoir_status eoir_provider_series(eoir_engine engine, const char* group, const char* element,
+                                          const char* sensor, const char* target, const eoir_time* times,
+                                          size_t count, double* values_out) {
+  return capi::with_engine(engine, [&](Engine& e) {
+    if (count > 0) {
+      need(times, "times");
+      need(values_out, "values_out");
+    }
+    std::vector<EngineTime> t;
+    t.reserve(count);
+    for (size_t i = 0; i < count; ++i) {
+      const std::string field = "times[" + std::to_string(i) + "]";
+      if (times[i].scale < EOIR_TIME_UTC || times[i].scale > EOIR_TIME_TDB)
+        throw Error(Status::out_of_range, field + ".scale: unknown time scale " + std::to_string(times[i].scale));
+      t.push_back(EngineTime::from(JulianDate{static_cast<TimeScale>(times[i].scale), times[i].jd1, times[i].jd2}));
+    }
+    const std::vector<double> v =
+        e.provider_series(str(group, "group"), str(element, "element"), str(sensor, "sensor"), target ? target : "", t);
+    std::copy(v.begin(), v.end(), values_out);
   });
 }
 }

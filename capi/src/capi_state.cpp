@@ -4,41 +4,38 @@
 
 using namespace eoir;
 using eoir::capi::guarded;
+using eoir::capi::need;
 using eoir::capi::str;
 
 extern "C" {
 
 EOIR_API eoir_status eoir_state_save(eoir_engine engine, const char* path) {
-  return guarded([&] { state::save_engine(capi::engine_of(engine), str(path, "path")); });
+  return capi::with_engine(engine, [&](Engine& e) { state::save_engine(e, str(path, "path")); });
 }
 
 EOIR_API eoir_status eoir_state_load(eoir_engine engine, const char* path) {
   return guarded([&] {
-    Engine& e = capi::engine_of(engine);
+    need(engine, "engine");
+    std::lock_guard<std::mutex> lock(engine->mutex);
     // Build the whole new engine first; swap only when it is complete, so a
     // refused file leaves the engine as it was.
-    std::unique_ptr<Engine> loaded = state::load_engine(str(path, "path"), e.options().threads);
+    EngineOptions options = engine->engine->options();
+    std::unique_ptr<Engine> loaded = state::load_engine(str(path, "path"), options);
     engine->engine = std::move(loaded);
   });
 }
 
 EOIR_API eoir_status eoir_sensor_save(eoir_engine engine, const char* sensor, const char* path) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
+  return capi::with_engine(engine, [&](Engine& e) {
     state::save_sensor(e.universe().sensor(str(sensor, "sensor")), str(path, "path"));
   });
 }
 
 EOIR_API eoir_status eoir_sensor_load(eoir_engine engine, const char* sensor, const char* path) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
+  return capi::with_engine(engine, [&](Engine& e) {
     const std::string name = str(sensor, "sensor");
     e.universe().sensor(name);  // must exist
-    const sensor::SensorParameters p = state::load_sensor(str(path, "path"));
-    universe::Object& o = e.universe().get(name);
-    o.sensor = p;
-    ++o.revision;
-    e.note_change();
+    e.set_sensor_parameters(name, state::load_sensor(str(path, "path")));
   });
 }
 }

@@ -5,16 +5,15 @@
 #include "capi_internal.hpp"
 
 using namespace eoir;
-using eoir::capi::guarded;
 using eoir::capi::need;
 using eoir::capi::str;
+using eoir::capi::with_engine;
 
 extern "C" {
 
 EOIR_API eoir_status eoir_snr_constraint(eoir_engine engine, const char* sensor, const char* target,
                                          const eoir_time* time, double* snr_out) {
-  return guarded([&] {
-    Engine& e = capi::engine_of(engine);
+  return with_engine(engine, [&](Engine& e) {
     need(snr_out, "snr_out");
     const std::string s = str(sensor, "sensor"), t = str(target, "target");
     if (time) {
@@ -27,25 +26,26 @@ EOIR_API eoir_status eoir_snr_constraint(eoir_engine engine, const char* sensor,
 }
 
 EOIR_API eoir_status eoir_truth_count(eoir_engine engine, const char* sensor, size_t* count_out) {
-  return guarded([&] {
+  return with_engine(engine, [&](Engine& e) {
     need(count_out, "count_out");
-    *count_out = capi::engine_of(engine).truth(str(sensor, "sensor")).size();
+    *count_out = e.truth(str(sensor, "sensor")).size();
   });
 }
 
 EOIR_API eoir_status eoir_truth_get(eoir_engine engine, const char* sensor, size_t index, eoir_truth* out) {
-  return guarded([&] {
-    const auto& rows = capi::engine_of(engine).truth(str(sensor, "sensor"));
+  return with_engine(engine, [&](Engine& e) {
+    const auto& rows = e.truth(str(sensor, "sensor"));
     need(out, "truth_out");
     capi::need_size(out->struct_size, sizeof(eoir_truth), "truth_out");
     if (index >= rows.size())
       throw Error(Status::out_of_range, "index: " + std::to_string(index) + " >= truth count " +
                                             std::to_string(rows.size()));
-    const auto& [name, t] = rows[index];
+    const TruthEntry& row = rows[index];
+    const metrics::TargetMetrics& t = row.metrics;
     const uint32_t size = out->struct_size;
     std::memset(out, 0, sizeof(eoir_truth));
     out->struct_size = size;
-    std::snprintf(out->object, sizeof out->object, "%s", name.c_str());
+    std::snprintf(out->object, sizeof out->object, "%s", row.object.c_str());
     out->pixel_x = t.pixel_x;
     out->pixel_y = t.pixel_y;
     out->range_m = t.range_km * 1e3;

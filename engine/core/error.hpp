@@ -23,6 +23,7 @@ enum class Status : int {
   corrupt_file = -301,
   file_version = -302,
   abi_mismatch = -400,
+  cancelled = -500,
   internal = -900,
 };
 

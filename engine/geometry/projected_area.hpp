@@ -11,5 +11,8 @@ namespace eoir::geometry {
 // parts of a composite is not removed).
 double projected_area_m2(const std::vector<ShapePart>& parts, const Tessellation& tessellation,
                          const Vec3& toward_observer_body);
+// The exact projected area of one part, or -1 where the shape has no closed
+// form here (cone, coupler).
+double analytic_projected_area_m2(const ShapePart& part, const Vec3& toward_observer_body);
 
 }  // namespace eoir::geometry

@@ -26,7 +26,6 @@
 #include "core/error.hpp"
 #include "geometry/scene_geometry.hpp"
 #include "geometry/shape_intersect.hpp"
-#include "geometry/tessellation.hpp"
 
 namespace eoir::geometry {
 namespace {
@@ -72,12 +71,14 @@ struct ObjectData {
   std::vector<PartData> parts;
   std::vector<unsigned> prim_part;  // Embree primID -> part index
   int index = 0;
+  std::uint32_t mask = ray_mask_all;
 };
 
 // Extended context: Embree passes it to the callback (first member is the
 // RTCIntersectContext, standard layout).
 struct RayContext {
   RTCIntersectContext ctx;
+  RayQuery query;
   Vec3 dir;
   double best_t = std::numeric_limits<double>::infinity();
   int object = -1;
@@ -101,12 +102,18 @@ void bounds_callback(const RTCBoundsFunctionArguments* args) {
   b->upper_z = static_cast<float>(c.z() + r);
 }
 
+// Whether a ray of `query` may meet the object.
+bool admits(const RayQuery& query, const ObjectData& od) {
+  return (query.mask & od.mask) != 0 && query.skip_object != od.object->object_id;
+}
+
 void intersect_callback(const RTCIntersectFunctionNArguments* args) {
   if (args->N != 1 || !args->valid[0]) return;
   const auto* od = static_cast<const ObjectData*>(args->geometryUserPtr);
+  auto* rc = reinterpret_cast<RayContext*>(args->context);
+  if (!admits(rc->query, *od)) return;
   const unsigned part_index = od->prim_part[args->primID];
   const PartData& p = od->parts[part_index];
-  auto* rc = reinterpret_cast<RayContext*>(args->context);
   const Vec3 d = p.part_to_frame.transpose() * rc->dir;
   double t = 0;
   Vec3 n;
@@ -127,16 +134,20 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
   rh->hit.Ng_z = static_cast<float>(nf.z());
 }
 
+// Occlusion: the context carries the exact double direction and the range
+// limit in best_t; any admitted hit closer than that occludes.
 void occluded_callback(const RTCOccludedFunctionNArguments* args) {
   if (args->N != 1 || !args->valid[0]) return;
   const auto* od = static_cast<const ObjectData*>(args->geometryUserPtr);
+  auto* rc = reinterpret_cast<RayContext*>(args->context);
+  if (!admits(rc->query, *od)) return;
   const PartData& p = od->parts[od->prim_part[args->primID]];
-  auto* ray = reinterpret_cast<RTCRay*>(args->ray);
-  const Vec3 dir = Vec3(ray->dir_x, ray->dir_y, ray->dir_z).normalized();
   double t = 0;
   Vec3 n;
-  if (intersect_shape(p.geom, p.origin_part_m, p.part_to_frame.transpose() * dir, ray->tnear, ray->tfar, t, n))
-    ray->tfar = -std::numeric_limits<float>::infinity();
+  if (intersect_shape(p.geom, p.origin_part_m, p.part_to_frame.transpose() * rc->dir, 0.0, rc->best_t, t, n)) {
+    rc->object = od->index;
+    reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
+  }
 }
 
 }  // namespace
@@ -167,7 +178,7 @@ RayCaster::~RayCaster() {
   delete impl_;
 }
 
-void RayCaster::build(const std::vector<PlacedObject>& objects) {
+void RayCaster::build(const std::vector<const PlacedObject*>& objects) {
   impl_->release();
   RTCDevice device = impl_->device;
   RTCScene scene = rtcNewScene(device);
@@ -178,15 +189,16 @@ void RayCaster::build(const std::vector<PlacedObject>& objects) {
   auto& data = impl_->objects;
   data.reserve(objects.size());  // stable addresses: Embree keeps pointers
   for (std::size_t k = 0; k < objects.size(); ++k) {
-    const PlacedObject& obj = objects[k];
+    const PlacedObject& obj = *objects[k];
     ObjectData od;
     od.object = &obj;
     od.index = static_cast<int>(k);
+    od.mask = obj.ray_mask;
     bool contains_observer = false;
     for (std::size_t i = 0; i < obj.parts.size(); ++i) {
       const ShapePart& sp = obj.parts[i];
       PartData pd;
-      pd.geom = shape_geom(sp);
+      pd.geom = sp.geom;
       pd.part_to_frame = obj.body_to_frame * sp.orientation.toRotationMatrix();
       pd.centre_frame_m = obj.position_m + obj.body_to_frame * sp.offset_m;
       // Observer (origin) in the part frame, from body-frame quantities.
@@ -219,9 +231,10 @@ void RayCaster::build(const std::vector<PlacedObject>& objects) {
 namespace {
 // Casts one ray from the observer; the double-precision nearest hit is left
 // in rc (object -1: nothing).
-void cast_one(RTCScene scene, RayContext& rc, RTCRayHit& rh, const Vec3& d, std::size_t i) {
+void cast_one(RTCScene scene, RayContext& rc, RTCRayHit& rh, const Vec3& d, std::size_t i, const RayQuery& query) {
   rtcInitIntersectContext(&rc.ctx);
   rc.ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rc.query = query;
   rc.dir = d;
   rc.best_t = std::numeric_limits<double>::infinity();
   rc.object = rc.part = -1;
@@ -269,47 +282,83 @@ void for_each_ray(std::size_t count, unsigned threads, const Body& body) {
 }
 }  // namespace
 
-void RayCaster::cast(const std::vector<Vec3>& directions, std::vector<Hit>& hits, unsigned threads) const {
+namespace {
+// The full hit of a ray cast_one left in rc.
+Hit full_hit(const std::vector<ObjectData>& objects, const RayContext& rc, const Vec3& d) {
+  Hit h;
+  if (rc.object < 0) {
+    h.range_m = sky_range_m;
+    return h;
+  }
+  const ObjectData& od = objects[static_cast<std::size_t>(rc.object)];
+  const PlacedObject& obj = *od.object;
+  const PartData& pd = od.parts[static_cast<std::size_t>(rc.part)];
+  h.object_id = obj.object_id;
+  h.part = rc.part;
+  h.range_m = rc.best_t;
+  h.point_body_m = obj.body_to_frame.transpose() * (rc.best_t * d - obj.position_m);
+  h.normal_frame = (pd.part_to_frame * rc.normal_part).normalized();
+  return h;
+}
+}  // namespace
+
+Hit RayCaster::cast(const Vec3& direction, const RayQuery& query) const {
+  if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
+  RayContext rc;
+  RTCRayHit rh;
+  cast_one(impl_->scene, rc, rh, direction, 0, query);
+  return full_hit(impl_->objects, rc, direction);
+}
+
+void RayCaster::cast(const std::vector<Vec3>& directions, std::vector<Hit>& hits, unsigned threads,
+                     const RayQuery& query) const {
   if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
   hits.resize(directions.size());  // every element is overwritten below
   const auto& objects = impl_->objects;
   RTCScene scene = impl_->scene;
   for_each_ray(directions.size(), threads, [&](std::size_t i, RayContext& rc, RTCRayHit& rh) {
-    const Vec3& d = directions[i];
-    cast_one(scene, rc, rh, d, i);
-    Hit& h = hits[i];
-    if (rc.object < 0) {
-      h = Hit{};
-      h.range_m = sky_range_m;
-      return;
-    }
-    const ObjectData& od = objects[static_cast<std::size_t>(rc.object)];
-    const PlacedObject& obj = *od.object;
-    const PartData& pd = od.parts[static_cast<std::size_t>(rc.part)];
-    h.object_id = obj.object_id;
-    h.part = rc.part;
-    h.range_m = rc.best_t;
-    h.point_body_m = obj.body_to_frame.transpose() * (rc.best_t * d - obj.position_m);
-    h.normal_frame = (pd.part_to_frame * rc.normal_part).normalized();
-    const Vec3 p_part = pd.origin_part_m + rc.best_t * (pd.part_to_frame.transpose() * d);
-    h.patch = patch_in_part(obj.tessellation, rc.part, pd.geom, p_part, rc.normal_part);
+    cast_one(scene, rc, rh, directions[i], i, query);
+    hits[i] = full_hit(objects, rc, directions[i]);
   });
 }
 
 void RayCaster::cast_objects(std::size_t count, const std::function<Vec3(std::size_t)>& direction,
                              const std::function<void(std::size_t, std::int32_t, std::int32_t, double)>& emit,
-                             unsigned threads) const {
+                             unsigned threads, const RayQuery& query) const {
   if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
   const auto& objects = impl_->objects;
   RTCScene scene = impl_->scene;
   for_each_ray(count, threads, [&](std::size_t i, RayContext& rc, RTCRayHit& rh) {
-    cast_one(scene, rc, rh, direction(i), i);
+    cast_one(scene, rc, rh, direction(i), i, query);
     if (rc.object < 0) {
       emit(i, -1, -1, sky_range_m);
       return;
     }
     emit(i, objects[static_cast<std::size_t>(rc.object)].object->object_id, rc.part, rc.best_t);
   });
+}
+
+bool RayCaster::occluded(const Vec3& d, double range_m, const RayQuery& query) const {
+  if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
+  RayContext rc;
+  rtcInitIntersectContext(&rc.ctx);
+  rc.query = query;
+  rc.dir = d;
+  rc.best_t = range_m;
+  rc.object = -1;
+  RTCRay ray;
+  ray.org_x = ray.org_y = ray.org_z = 0.0f;
+  ray.dir_x = static_cast<float>(d.x());
+  ray.dir_y = static_cast<float>(d.y());
+  ray.dir_z = static_cast<float>(d.z());
+  ray.tnear = 0.0f;
+  ray.tfar = std::nextafter(static_cast<float>(range_m), std::numeric_limits<float>::infinity());
+  ray.time = 0.0f;
+  ray.mask = 0xFFFFFFFFu;
+  ray.id = 0;
+  ray.flags = 0;
+  rtcOccluded1(impl_->scene, &rc.ctx, &ray);
+  return rc.object >= 0;
 }
 
 }  // namespace eoir::geometry

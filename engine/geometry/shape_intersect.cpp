@@ -162,30 +162,12 @@ double arc_ratio(double x, double s) {
 
 }  // namespace
 
-ShapeKind shape_kind(const std::string& name) {
-  static const struct {
-    const char* n;
-    ShapeKind k;
-  } table[] = {{"sphere", ShapeKind::sphere},     {"oblate", ShapeKind::oblate}, {"box", ShapeKind::box},
-               {"plate", ShapeKind::plate},       {"cylinder", ShapeKind::cylinder},
-               {"cone", ShapeKind::cone},         {"coupler", ShapeKind::coupler},
-               {"none", ShapeKind::none}};
-  for (const auto& e : table)
-    if (name == e.n) return e.k;
-  throw Error(Status::unknown_name, "shape: unknown shape '" + name + "'");
-}
-
-ShapeGeom shape_geom(const ShapePart& part) {
+ShapeGeom shape_geom(ShapeKind kind, const std::vector<double>& d, const std::string& field) {
+  if (kind == ShapeKind::composite)
+    throw Error(Status::out_of_range, field + ": a composite is made of simple shapes, not one");
+  universe::check_dimensions(kind, d, field);
   ShapeGeom g;
-  g.kind = shape_kind(part.shape);
-  const auto& d = part.dimensions_m;
-  static const size_t counts[] = {1, 2, 3, 2, 2, 2, 3, 0};
-  const size_t need = counts[static_cast<int>(g.kind)];
-  if (d.size() < need)
-    throw Error(Status::out_of_range, "shape '" + part.shape + "' needs " + std::to_string(need) + " dimensions");
-  for (size_t i = 0; i < need; ++i)
-    if (!(d[i] > 0.0) || !std::isfinite(d[i]))
-      throw Error(Status::out_of_range, "shape '" + part.shape + "': dimensions must be finite and > 0");
+  g.kind = kind;
   switch (g.kind) {
     case ShapeKind::sphere: g.a_m = g.c_m = d[0]; break;
     case ShapeKind::oblate: g.a_m = d[0]; g.c_m = d[1]; break;
@@ -194,7 +176,8 @@ ShapeGeom shape_geom(const ShapePart& part) {
     case ShapeKind::cylinder: g.r_bottom_m = g.r_top_m = d[0]; g.length_m = d[1]; break;
     case ShapeKind::cone: g.r_bottom_m = d[0]; g.r_top_m = 0.0; g.length_m = d[1]; break;
     case ShapeKind::coupler: g.r_bottom_m = d[0]; g.r_top_m = d[1]; g.length_m = d[2]; break;
-    case ShapeKind::none: break;
+    case ShapeKind::none:
+    case ShapeKind::composite: break;
   }
   return g;
 }
@@ -216,7 +199,8 @@ bool intersect_shape(const ShapeGeom& g, const Vec3& origin_m, const Vec3& dir, 
     case ShapeKind::cylinder:
     case ShapeKind::cone:
     case ShapeKind::coupler: hit = hit_frustum(g, o, dir, lo, hi, t, normal); break;
-    case ShapeKind::none: break;
+    case ShapeKind::none:
+    case ShapeKind::composite: break;
   }
   if (!hit) return false;
   t_m = t0 + t;
@@ -243,7 +227,8 @@ bool shape_contains(const ShapeGeom& g, const Vec3& p) {
       return std::hypot(p.x(), p.y()) < r - kInsideTolerance * std::max(g.r_bottom_m, g.r_top_m);
     }
     case ShapeKind::plate:
-    case ShapeKind::none: return false;
+    case ShapeKind::none:
+    case ShapeKind::composite: return false;
   }
   return false;
 }
@@ -258,7 +243,8 @@ double shape_bounding_radius_m(const ShapeGeom& g) {
     case ShapeKind::cone:
     case ShapeKind::coupler:
       return std::max(std::hypot(g.r_bottom_m, 0.5 * g.length_m), std::hypot(g.r_top_m, 0.5 * g.length_m));
-    case ShapeKind::none: return 0.0;
+    case ShapeKind::none:
+    case ShapeKind::composite: return 0.0;
   }
   return 0.0;
 }
@@ -286,7 +272,8 @@ double shape_surface_area_m2(const ShapeGeom& g) {
       const double r1 = g.r_bottom_m, r2 = g.r_top_m;
       return kPi * (r1 + r2) * std::hypot(r1 - r2, g.length_m) + kPi * (r1 * r1 + r2 * r2);
     }
-    case ShapeKind::none: return 0.0;
+    case ShapeKind::none:
+    case ShapeKind::composite: return 0.0;
   }
   return 0.0;
 }
@@ -342,7 +329,8 @@ Vec3 shape_normal(const ShapeGeom& g, const Vec3& p) {
       const double k = (g.r_top_m - g.r_bottom_m) / g.length_m;
       return rho > 0 ? Vec3(p.x() / rho, p.y() / rho, -k).normalized() : Vec3(0, 0, 1);
     }
-    case ShapeKind::none: break;
+    case ShapeKind::none:
+    case ShapeKind::composite: break;
   }
   return Vec3::UnitZ();
 }

@@ -4,11 +4,14 @@
 #include <string>
 #include <vector>
 
-#include "geometry/scene_geometry.hpp"
+#include <Eigen/Core>
+
+#include "universe/shapes.hpp"
 
 namespace eoir::geometry {
 
-enum class ShapeKind { sphere, oblate, box, plate, cylinder, cone, coupler, none };
+using Vec3 = Eigen::Vector3d;
+using universe::ShapeKind;
 
 // A part's shape with its dimensions decoded (metres). Sphere: a = c = r.
 // Frustum shapes (cylinder, cone, coupler) use r_bottom at z = -length/2 and
@@ -20,9 +23,9 @@ struct ShapeGeom {
   double r_bottom_m = 0, r_top_m = 0, length_m = 0;  // frustum
 };
 
-// Throws eoir::Error(unknown_name / out_of_range) for bad shapes.
-ShapeKind shape_kind(const std::string& name);
-ShapeGeom shape_geom(const ShapePart& part);
+// Decodes dimensions (checked as universe::check_dimensions; throws
+// eoir::Error naming `field`). Composite is not a simple shape: out_of_range.
+ShapeGeom shape_geom(ShapeKind kind, const std::vector<double>& dimensions_m, const std::string& field = "shape");
 
 // Nearest hit with t_min < t < t_max of the ray origin + t * dir (dir unit,
 // part frame). Only outward-facing surfaces are reported: a ray that starts

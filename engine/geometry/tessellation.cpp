@@ -20,7 +20,6 @@
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "geometry/scene_geometry.hpp"
-#include "geometry/shape_intersect.hpp"
 #include "geometry/tessellation.hpp"
 
 namespace eoir::geometry {
@@ -195,7 +194,7 @@ Tessellation tessellate(const std::vector<ShapePart>& parts, double target_patch
   t.grid.resize(parts.size());
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const auto part = static_cast<std::int32_t>(k);
-    const ShapeGeom g = shape_geom(parts[k]);
+    const ShapeGeom& g = parts[k].geom;
     const double estimate = shape_surface_area_m2(g) / (target_patch_size_m * target_patch_size_m);
     if (estimate > kMaxPatchesPerPart)
       throw Error(Status::limit_exceeded, "target_patch_size_m: " + std::to_string(target_patch_size_m) +
@@ -223,7 +222,8 @@ Tessellation tessellate(const std::vector<ShapePart>& parts, double target_patch
       case ShapeKind::cylinder:
       case ShapeKind::cone:
       case ShapeKind::coupler: tessellate_frustum(t, part, parts[k], g, target, grid); break;
-      case ShapeKind::none: break;
+      case ShapeKind::none:
+      case ShapeKind::composite: break;
     }
   }
   return t;
@@ -249,7 +249,8 @@ std::int32_t patch_in_part(const Tessellation& t, std::int32_t part, const Shape
     case ShapeKind::cylinder:
     case ShapeKind::cone:
     case ShapeKind::coupler: local = frustum_cell(grid, g, p); break;
-    case ShapeKind::none: return -1;
+    case ShapeKind::none:
+    case ShapeKind::composite: return -1;
   }
   return t.first_patch[static_cast<std::size_t>(part)] + local;
 }
@@ -259,7 +260,7 @@ std::int32_t patch_at_facing(const Tessellation& t, const std::vector<ShapePart>
   if (part < 0 || static_cast<std::size_t>(part) >= parts.size()) return -1;
   const ShapePart& sp = parts[static_cast<std::size_t>(part)];
   const Mat3 r = sp.orientation.toRotationMatrix();
-  return patch_in_part(t, part, shape_geom(sp), r.transpose() * (point_body_m - sp.offset_m),
+  return patch_in_part(t, part, sp.geom, r.transpose() * (point_body_m - sp.offset_m),
                        r.transpose() * normal_body);
 }
 

@@ -1,9 +1,7 @@
 // Internal to the geometry module: the patch rule of tessellation.cpp on a part
-// whose shape is already decoded and whose point is in the part frame (the ray
-// caster's fast path; spec 4.1.5.2).
+// whose point is in the part frame (spec 4.1.5.2).
 #pragma once
 #include "geometry/scene_geometry.hpp"
-#include "geometry/shape_intersect.hpp"
 
 namespace eoir::geometry {
 

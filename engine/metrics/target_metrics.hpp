@@ -1,15 +1,15 @@
 // Dynamic metrics involving a target (spec 5.13, Table 2): point or extended
 // classification by the target solid angle against the effective IFOV solid
-// angle, signal, noise and SNR (eqs. 58-78), evaluated without rendering a
-// frame: one line of sight for point targets, a small window of samples
-// around the target for extended ones (DESIGN.md 4: model no more than the
-// report needs).
+// angle, signal, noise and SNR (eqs. 58-78), evaluated on the sensor's world
+// without rendering a frame: a few lines of sight for point targets, a small
+// window of samples around the target for extended ones (DESIGN section 4:
+// model no more than the report needs).
 #pragma once
+#include <cstdint>
 #include <string>
 
-#include "core/time.hpp"
-#include "sensor/static_metrics.hpp"
-#include "universe/universe.hpp"
+#include "scene/world.hpp"
+#include "sensor/sensor_model.hpp"
 
 namespace eoir::metrics {
 
@@ -27,16 +27,20 @@ struct TargetMetrics {
   double scene_photon_ner_W_cm2_sr = 0, total_ner_W_cm2_sr = 0;      // eqs. 77-78
   double snr = 0;                                                    // eq. 65 or 76
   double geometric_ifov_footprint_m2 = 0, effective_ifov_footprint_m2 = 0;
-  // Where the target is on the focal plane: pixel coordinates with 0 at the
-  // centre of pixel 0 (columns toward body -x, rows toward body -y).
+  // Where the target's body origin is on the focal plane: pixel coordinates
+  // with 0 at the centre of pixel 0 (columns toward body -x, rows toward -y).
   double pixel_x = 0, pixel_y = 0;
   bool in_field = false;
 };
 
-// Throws eoir::Error: unknown sensor/target names, a target equal to the
-// sensor or its parent (not_allowed), a target that images nothing, no state.
-TargetMetrics target_metrics(const universe::Universe& universe, const EngineTime& t,
-                             const universe::Object& sensor, const sensor::StaticMetrics& m,
-                             const std::string& target);
+// The world object a target names. Throws eoir::Error: unknown name, a
+// target equal to the sensor or its parent (not_allowed), a target that
+// images nothing or has no state (not_allowed).
+const scene::WorldObject& find_target(const scene::World& world, const universe::Universe& universe,
+                                      const std::string& target);
+
+// The metrics of `target` (an object of `world`) seen by the world's sensor.
+TargetMetrics target_metrics(const scene::World& world, const sensor::SensorModel& sensor,
+                             const scene::WorldObject& target);
 
 }  // namespace eoir::metrics

@@ -109,12 +109,12 @@ double SpectralBand::grid_wavelength_um(std::int64_t i) const {
 }
 
 double SpectralBand::sample_wavelength_um(std::int64_t i, SpectralQuadrature rule) const {
-  const double offset = rule == SpectralQuadrature::IntervalMidpoint ? 0.5 : 0.0;
+  const double offset = rule == SpectralQuadrature::interval_midpoint ? 0.5 : 0.0;
   return low_um + (static_cast<double>(i) + offset) * interval_um();
 }
 
 std::vector<double> SpectralBand::grid_wavelengths_um() const {
-  return sample_wavelengths_um(SpectralQuadrature::IntervalLeftEdge);
+  return sample_wavelengths_um(SpectralQuadrature::interval_left_edge);
 }
 
 std::vector<double> SpectralBand::sample_wavelengths_um(SpectralQuadrature rule) const {

@@ -8,8 +8,8 @@
 //     dl = (high - low) / N and the grid lambda_i = low + i dl, i = 0..N-1.
 //     The integral is the rectangle sum  sum_i L(s_i) dl  where the sample
 //     s_i of interval i is either
-//       - IntervalMidpoint (default): s_i = lambda_i + dl/2, or
-//       - IntervalLeftEdge: s_i = lambda_i, the literal grid point of 5.3.
+//       - interval_midpoint (default): s_i = lambda_i + dl/2, or
+//       - interval_left_edge: s_i = lambda_i, the literal grid point of 5.3.
 //     Both show the behaviour 7.3 demonstrates (an error at few intervals
 //     that shrinks monotonically as N grows); left-edge error is first order
 //     in dl (it is -13.4 % at N = 6 and still -0.82 % at N = 100 for a 150 K
@@ -22,7 +22,7 @@
 //     errors in numerical integration over wavelength are minimized" and then
 //     expect the exact 3.481e-4 W cm^-2 sr^-1 at 200 K to four digits, which
 //     the midpoint sum gives (error 1e-5) and the left-edge sum does not
-//     (-0.86 %). IntervalLeftEdge stays available for anyone who wants the
+//     (-0.86 %). interval_left_edge stays available for anyone who wants the
 //     literal 5.3 grid.
 //  2. Exactly, for a pure Planck (or gray-body) term: the incomplete
 //     Bose-Einstein integral, by series, independent of N (DESIGN.md 3).
@@ -31,13 +31,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/fidelity.hpp"
+
 namespace eoir::radiometry {
 
-enum class SpectralQuadrature {
-  IntervalMidpoint,  // s_i = low + (i + 1/2) dl; second order (default)
-  IntervalLeftEdge,  // s_i = low + i dl, the spec 5.3 grid verbatim; first order
-};
-constexpr SpectralQuadrature kDefaultSpectralQuadrature = SpectralQuadrature::IntervalMidpoint;
+// The rule is a fidelity knob (core/fidelity.hpp): interval_midpoint,
+// s_i = low + (i + 1/2) dl, second order (default); interval_left_edge,
+// s_i = low + i dl, the spec 5.3 grid verbatim, first order.
+using eoir::SpectralQuadrature;
+constexpr SpectralQuadrature kDefaultSpectralQuadrature = SpectralQuadrature::interval_midpoint;
 
 // Spectral sampling grid of a band [low, high] um with N intervals (spec 5.3).
 // Validates 0 < low < high (finite) and N >= 1; throws

@@ -1,17 +1,34 @@
-// The synthetic scene generator (spec 4.1): places the modeled universe
-// relative to the sensor at one instant, splits it into resolved objects
-// (ray-cast on the sample grid) and distant area sources smaller than a
-// sample (point sources, spec 4.1.6.1), and shades what the samples hit.
+// The synthetic scene generator (spec 4.1): images a world on its sample
+// grid. Objects imaged as extended sources are ray-cast (spec 4.1.3) and
+// shaded where the samples hit them (eq. 48 of eq. 4); distant area sources
+// smaller than a sample (4.1.6.1) go to the point-source list where they lie
+// inside the ideal field of view (5.2, 7.2.1) and no object hides them.
 #pragma once
-#include "scene/frame.hpp"
-#include "sensor/static_metrics.hpp"
-#include "universe/universe.hpp"
+#include <cstdint>
+#include <vector>
+
+#include "radiometry/radiance_image.hpp"
+#include "scene/world.hpp"
 
 namespace eoir::scene {
 
-// Fills frame.{time, grid, spectral, body_to_j2000, boresight/up, objects,
-// hits, scene_radiance, point_sources}. threads: 0 = all cores.
-void generate_scene(const universe::Universe& universe, const EngineTime& t, const universe::Object& sensor,
-                    const sensor::StaticMetrics& metrics, unsigned threads, Frame& frame);
+// What one sample of the full grid ends on: object_id (-1 the sky) and shape
+// part. Range, point and patch are recomputed for picks by casting that one
+// ray again against the world.
+struct SampleHit {
+  std::int32_t object_id = -1;
+  std::int32_t part = -1;
+};
+
+struct SceneImage {
+  radiometry::RadianceImage image;  // the output to the sensor model (spec 4.1.1)
+  std::vector<SampleHit> hits;      // per sample of the full grid, row-major
+  double point_sources_s = 0;       // point-source placement, occlusion and irradiance
+  double ray_casting_s = 0;         // sample rays with the per-sample radiance lookup
+  std::size_t rays = 0;
+};
+
+// threads: 0 = all cores.
+SceneImage generate_scene(const World& world, unsigned threads);
 
 }  // namespace eoir::scene

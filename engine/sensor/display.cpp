@@ -31,3 +31,24 @@ std::vector<std::uint8_t> compress_for_display(const std::vector<double>& values
 }
 
 }  // namespace eoir::sensor
+
+namespace eoir::sensor {
+
+std::vector<std::uint8_t> scene_display(const radiometry::RadianceImage& scene, bool agc, std::int64_t gain_step) {
+  const geometry::SampleGrid& g = scene.grid;
+  const std::int64_t w = g.width(), fw = g.field_width(), fh = g.field_height(), guard = g.guard_samples();
+  std::vector<double> irradiance(static_cast<std::size_t>(fw * fh));
+  for (std::int64_t r = 0; r < fh; ++r)
+    for (std::int64_t c = 0; c < fw; ++c)
+      irradiance[static_cast<std::size_t>(r * fw + c)] =
+          scene.radiance_W_cm2_sr[static_cast<std::size_t>((r + guard) * w + c + guard)] *
+          g.sample_solid_angle_sr(c + guard, r + guard);
+  for (const radiometry::PointSource& ps : scene.point_sources) {
+    const std::int64_t c = std::clamp<std::int64_t>(std::lround(ps.column) - guard, 0, fw - 1);
+    const std::int64_t r = std::clamp<std::int64_t>(std::lround(ps.row) - guard, 0, fh - 1);
+    irradiance[static_cast<std::size_t>(r * fw + c)] += ps.irradiance_W_cm2;
+  }
+  return compress_for_display(irradiance, agc, gain_step, 1e-6);
+}
+
+}  // namespace eoir::sensor

@@ -33,10 +33,10 @@ struct Blurred {
   }
 };
 
-Blurred convolve_with_otf(const SensorParameters& p, const scene::Frame& frame) {
-  const scene::SampleGrid& g = frame.grid;
+Blurred convolve_with_otf(const SensorModel& model, const radiometry::RadianceImage& scene) {
+  const geometry::SampleGrid& g = scene.grid;
   const int w = static_cast<int>(g.width()), h = static_cast<int>(g.height());
-  const int pad = static_cast<int>(g.guard_samples());
+  const int pad = static_cast<int>(std::lround(model.fidelity().fft_padding * static_cast<double>(g.guard_samples())));
   const int fw = fftw::good_size(w + 2 * pad), fh = fftw::good_size(h + 2 * pad);
   const std::size_t n_real = static_cast<std::size_t>(fw) * static_cast<std::size_t>(fh);
   const int cw = fw / 2 + 1;
@@ -46,11 +46,12 @@ Blurred convolve_with_otf(const SensorParameters& p, const scene::Frame& frame) 
     const int sr = std::clamp(r - pad, 0, h - 1);
     for (int c = 0; c < fw; ++c)
       real[static_cast<std::size_t>(r) * fw + c] =
-          frame.scene_radiance[static_cast<std::size_t>(sr) * w + std::clamp(c - pad, 0, w - 1)];
+          scene.radiance_W_cm2_sr[static_cast<std::size_t>(sr) * w + std::clamp(c - pad, 0, w - 1)];
   }
   fftw_execute_dft_r2c(fftw::r2c_2d(fh, fw), real.get(), spectrum.get());
-  const OpticsModel optics = OpticsModel::from_parameters(p);
-  const double dx = g.pitch_x_cm / scene::SampleGrid::per_pixel, dy = g.pitch_y_cm / scene::SampleGrid::per_pixel;
+  const OpticsModel& optics = model.optics;
+  const double k = static_cast<double>(g.per_pixel);
+  const double dx = g.pitch_x_cm / k, dy = g.pitch_y_cm / k;
   const double scale = 1.0 / static_cast<double>(n_real);
   for (int r = 0; r < fh; ++r) {
     const double fy = frequency(r, fh, dy);
@@ -67,70 +68,71 @@ Blurred convolve_with_otf(const SensorParameters& p, const scene::Frame& frame) 
 }
 }  // namespace
 
-std::vector<double> pixel_radiance(const SensorParameters& p, const scene::Frame& frame) {
-  const scene::SampleGrid& g = frame.grid;
+std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene) {
+  const geometry::SampleGrid& g = scene.grid;
   const std::int64_t nx = g.pixels_x, ny = g.pixels_y, guard = g.guard_samples();
   std::vector<double> out(static_cast<std::size_t>(nx * ny), 0.0);
-  const bool any_extended =
-      std::any_of(frame.scene_radiance.begin(), frame.scene_radiance.end(), [](double v) { return v != 0.0; });
+  const auto& radiance = scene.radiance_W_cm2_sr;
+  const bool any_extended = std::any_of(radiance.begin(), radiance.end(), [](double v) { return v != 0.0; });
   if (!any_extended) return out;  // no extended sources: skip the scene FFT (DESIGN.md 4)
-  const Blurred blurred = convolve_with_otf(p, frame);
-  constexpr std::int64_t k = scene::SampleGrid::per_pixel;
+  const Blurred blurred = convolve_with_otf(model, scene);
+  const std::int64_t k = g.per_pixel;
   for (std::int64_t m = 0; m < ny; ++m)
     for (std::int64_t n = 0; n < nx; ++n) {
       double sum = 0;
       for (std::int64_t r = 0; r < k; ++r)
         for (std::int64_t c = 0; c < k; ++c) sum += blurred.at(guard + m * k + r, guard + n * k + c);
-      out[static_cast<std::size_t>(m * nx + n)] = sum / (k * k);  // (1/A_d) integral over the pixel (eq. 49)
+      out[static_cast<std::size_t>(m * nx + n)] = sum / static_cast<double>(k * k);  // (1/A_d) integral over the pixel (eq. 49)
     }
   return out;
 }
 
-void render_sensor_image(const SensorParameters& p, const StaticMetrics& m, scene::Frame& frame,
-                         std::mt19937_64& rng) {
+SensorImage render_sensor_image(const SensorModel& model, const radiometry::RadianceImage& scene,
+                                std::mt19937_64& rng) {
   using clock = std::chrono::steady_clock;
   const auto seconds = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
   const auto t0 = clock::now();
-  const scene::SampleGrid& g = frame.grid;
+  const universe::SensorParameters& p = model.parameters;
+  const StaticMetrics& m = model.metrics;
+  const geometry::SampleGrid& g = scene.grid;
   const std::int64_t nx = g.pixels_x, ny = g.pixels_y;
+  SensorImage out;
   // Extended sources: r_L = R_peak,L * (L conv PSF) averaged over the pixel (eq. 49).
-  std::vector<double> mean = pixel_radiance(p, frame);
+  std::vector<double> mean = pixel_radiance(model, scene);
   const auto t1 = clock::now();
   for (double& v : mean) v *= m.peak_radiance_responsivity;
   // Point sources: r_E = R_peak,E E^ps EOD / ENSQ (eqs. 50-51).
-  if (!frame.point_sources.empty()) {
-    const OpticsModel optics = OpticsModel::from_parameters(p);
-    // Window: the PSF out to 500 lambda F# (plus the jitter and defocus
-    // blur) about the source -- the diffraction tail beyond holds less than
-    // 2 / (pi^2 500) = 4e-4 of the energy -- and no more than the array, as
-    // far as the PSF grid allows (energy_on_detector needs window <
-    // psf_grid_size). The cost of a window grows with its area.
-    const double reach_cm = 500.0 * optics.diffraction_wavelength_cm * optics.f_number +
-                            6.0 * p.jitter_mrad * 1e-3 * p.focal_length_cm + 0.1 * p.defocus_mm / p.f_number;
-    const auto reach = static_cast<std::int64_t>(std::ceil(reach_cm / std::min(g.pitch_x_cm, g.pitch_y_cm)));
-    const std::int64_t half =
-        std::clamp<std::int64_t>(reach, 2, std::max<std::int64_t>(2, std::min(std::max(nx, ny), (p.psf_grid_size - 2) / 2)));
+  if (!scene.point_sources.empty()) {
+    const OpticsModel& optics = model.optics;
+    const Fidelity& f = model.fidelity();
+    // Window: the PSF's reach (fidelity point_psf_reach: 500 lambda F#, whose
+    // diffraction tail beyond holds less than 2 / (pi^2 500) = 4e-4 of the
+    // energy, plus the jitter and defocus blur) about the source, and no more
+    // than the array, as far as the PSF grid allows (energy_on_detector needs
+    // window < psf_grid_size). The cost of a window grows with its area.
+    const auto reach = static_cast<std::int64_t>(
+        std::ceil(psf_reach_cm(optics, f.point_psf_reach) / std::min(g.pitch_x_cm, g.pitch_y_cm)));
+    const std::int64_t half = std::clamp<std::int64_t>(
+        reach, 2, std::max<std::int64_t>(2, std::min(std::max(nx, ny), (f.psf_grid_size - 2) / 2)));
     const std::int64_t window = 2 * half + 1;
-    const double guard = static_cast<double>(g.guard_samples());
+    const PsfNumerics numerics(f);
     // Sources at the same sub-pixel offset share one energy-on-detector
     // window (the costly part: an FFT of the folded OTF).
     std::map<std::pair<long long, long long>, FocalPlaneSamples> eod_by_offset;
-    for (const scene::PointSource& ps : frame.point_sources) {
+    for (const radiometry::PointSource& ps : scene.point_sources) {
       // Position in pixels (0 = centre of pixel 0) from the sample coordinates.
-      const double px = (ps.column - guard + 0.5) / scene::SampleGrid::per_pixel - 0.5;
-      const double py = (ps.row - guard + 0.5) / scene::SampleGrid::per_pixel - 0.5;
+      const double px = g.pixel_x_of(ps.column), py = g.pixel_y_of(ps.row);
       const std::int64_t cx = static_cast<std::int64_t>(std::lround(px));
       const std::int64_t cy = static_cast<std::int64_t>(std::lround(py));
       // Energy on detector about pixel (cx, cy). Image columns grow toward
-      // -x and rows toward -y (scene/sample_grid.hpp): a source right of or
-      // below the pixel centre sits at -x' or -y'.
+      // -x and rows toward -y (geometry/sample_grid.hpp): a source right of
+      // or below the pixel centre sits at -x' or -y'.
       const auto key = std::make_pair(std::llround((px - cx) * 1e9), std::llround((py - cy) * 1e9));
       auto it = eod_by_offset.find(key);
       if (it == eod_by_offset.end())
         it = eod_by_offset
                  .emplace(key, energy_on_detector(optics, g.pitch_x_cm, g.pitch_y_cm, window,
-                                                  -(px - cx) * g.pitch_x_cm, -(py - cy) * g.pitch_y_cm,
-                                                  p.psf_grid_size))
+                                                  -(px - cx) * g.pitch_x_cm, -(py - cy) * g.pitch_y_cm, numerics))
                  .first;
       const FocalPlaneSamples& eod = it->second;
       const double signal = m.peak_irradiance_responsivity * ps.irradiance_W_cm2 / m.ensquared_energy;
@@ -143,19 +145,20 @@ void render_sensor_image(const SensorParameters& p, const StaticMetrics& m, scen
     }
   }
   const auto t2 = clock::now();
-  frame.sensor_mean = mean;
   // Noise (eqs. 53-54) and saturation (eq. 55); zero dark offset (5.11.3).
-  frame.sensor_electrons.resize(mean.size());
+  out.electrons.resize(mean.size());
   std::normal_distribution<double> normal(0.0, 1.0);
   const double dark2 = m.dark_noise_electrons * m.dark_noise_electrons;
   for (std::size_t i = 0; i < mean.size(); ++i) {
     double r = mean[i];
     if (p.noise_enabled) r += std::sqrt(dark2 + std::max(mean[i], 0.0)) * normal(rng);
-    frame.sensor_electrons[i] = std::min(r, m.saturation_electrons);
+    out.electrons[i] = std::min(r, m.saturation_electrons);
   }
-  frame.timings.convolution_s = seconds(t0, t1);
-  frame.timings.point_sources_s = seconds(t1, t2);
-  frame.timings.noise_s = seconds(t2, clock::now());
+  out.mean_electrons = std::move(mean);
+  out.convolution_s = seconds(t0, t1);
+  out.point_sources_s = seconds(t1, t2);
+  out.noise_s = seconds(t2, clock::now());
+  return out;
 }
 
 }  // namespace eoir::sensor

@@ -1,23 +1,32 @@
-// The sensor model's image chain (spec 5.11): the effective-radiance image is
-// convolved with the system OTF by FFT and integrated over pixels (eq. 49),
-// point sources add their energy on detector (eqs. 50-51), then noise (eqs.
-// 53-54) and saturation (eq. 55); the dark offset is zero (5.11.3).
+// The sensor model's image chain (spec 5.11): the scene generator's
+// effective-radiance image is convolved with the system OTF by FFT and
+// integrated over pixels (eq. 49), point sources add their energy on
+// detector (eqs. 50-51), then noise (eqs. 53-54) and saturation (eq. 55); the
+// dark offset is zero (5.11.3). Reads nothing of the scene but its output
+// (spec 4.1.1).
 #pragma once
 #include <random>
+#include <vector>
 
-#include "scene/frame.hpp"
-#include "sensor/static_metrics.hpp"
+#include "radiometry/radiance_image.hpp"
+#include "sensor/sensor_model.hpp"
 
 namespace eoir::sensor {
 
-// Fills frame.sensor_mean and frame.sensor_electrons from frame.scene_radiance
-// and frame.point_sources. Draws noise from `rng` (the engine's seeded
-// generator) when p.noise_enabled.
-void render_sensor_image(const SensorParameters& p, const StaticMetrics& m, scene::Frame& frame,
-                         std::mt19937_64& rng);
+struct SensorImage {
+  std::vector<double> mean_electrons;  // pixels, noise-free r_L + r_E (eqs. 49-50)
+  std::vector<double> electrons;       // pixels, total response (eq. 55)
+  double convolution_s = 0;            // OTF convolution by FFT and pixel integration (eq. 49)
+  double point_sources_s = 0;          // energy on detector (eqs. 50-51)
+  double noise_s = 0;                  // noise and saturation (eqs. 53-55)
+};
+
+// Draws noise from `rng` (the engine's seeded generator) when noise is on.
+SensorImage render_sensor_image(const SensorModel& model, const radiometry::RadianceImage& scene,
+                                std::mt19937_64& rng);
 
 // Eq. 49 without the responsivity: the scene convolved with the system PSF
-// and averaged over each pixel's 4x4 samples (W cm^-2 sr^-1 per pixel).
-std::vector<double> pixel_radiance(const SensorParameters& p, const scene::Frame& frame);
+// and averaged over each pixel's samples (W cm^-2 sr^-1 per pixel).
+std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene);
 
 }  // namespace eoir::sensor

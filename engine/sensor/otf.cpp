@@ -50,11 +50,8 @@ double jitter_otf(double frequency_cycles_per_mrad, double jitter_mrad) {
 }
 
 double resolved_wavefront_error_rms_waves(const SensorParameters& p) {
-  if (p.image_quality == "custom") return p.wavefront_error_rms_waves;
-  for (const ImageQualityPreset& preset : image_quality_presets())
-    if (p.image_quality == preset.name) return preset.wavefront_error_rms_waves;
-  throw Error(Status::unknown_name, "image_quality: unknown preset '" + p.image_quality +
-                                        "' (diffraction_limited, negligible, mild, moderate or custom)");
+  if (p.image_quality == universe::ImageQuality::custom) return p.wavefront_error_rms_waves;
+  return universe::image_quality_presets()[static_cast<std::size_t>(p.image_quality)].wavefront_error_rms_waves;
 }
 
 OpticsModel OpticsModel::from_parameters(const SensorParameters& p) {

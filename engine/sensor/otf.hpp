@@ -5,9 +5,11 @@
 // 1 / (lambda F#) in image space, i.e. D / lambda cycles/rad in object space.
 #pragma once
 
-#include "sensor/sensor_parameters.hpp"
+#include "universe/sensor_parameters.hpp"
 
 namespace eoir::sensor {
+
+using universe::SensorParameters;
 
 // Eq. 34 against the normalised frequency nu = xi / xi_cutoff (0 for nu >= 1).
 double diffraction_otf(double normalized_frequency);
@@ -40,8 +42,7 @@ double defocus_diffraction_product_large(double frequency_cycles_per_cm, double 
 double jitter_otf(double frequency_cycles_per_mrad, double jitter_mrad);
 
 // The Wrms a sensor uses: the preset's value when image_quality names a
-// preset, wavefront_error_rms_waves when it is "custom". Throws
-// Error(unknown_name) naming image_quality otherwise.
+// preset, wavefront_error_rms_waves when it is custom.
 double resolved_wavefront_error_rms_waves(const SensorParameters& p);
 
 // The optics of one sensor with the OTFs of eqs. 33-39 as functions of the

@@ -4,25 +4,8 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "core/limits.hpp"
 
 namespace eoir::sensor {
-
-void validate_reference_pairs(const std::vector<ReferencePair>& pairs, const std::string& field) {
-  if (pairs.empty()) throw Error(Status::out_of_range, field + ": at least one reference pair is required");
-  if (pairs.size() > limits::max_reference_pairs)
-    throw Error(Status::out_of_range, field + ": at most " + std::to_string(limits::max_reference_pairs) +
-                                          " reference pairs, got " + std::to_string(pairs.size()));
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    const std::string item = field + "[" + std::to_string(i) + "]";
-    require_positive(pairs[i].integration_time_ms, item + ".integration_time_ms");
-    require_non_negative(pairs[i].value, item + ".value");
-    for (std::size_t j = 0; j < i; ++j)
-      if (pairs[j].integration_time_ms == pairs[i].integration_time_ms)
-        throw Error(Status::out_of_range, item + ".integration_time_ms: repeats the time of " + field + "[" +
-                                              std::to_string(j) + "]");
-  }
-}
 
 double interpolate_reference_pairs(std::vector<ReferencePair> pairs, double integration_time_ms,
                                    TimeScaling scaling) {

@@ -3,14 +3,15 @@
 #include <string>
 #include <vector>
 
-#include "sensor/sensor_parameters.hpp"
+#include "universe/sensor_parameters.hpp"
 
 namespace eoir::sensor {
 
-// Throws eoir::Error(out_of_range) naming `field` (e.g. "sensitivity_pairs")
-// unless there are 1..limits::max_reference_pairs pairs with finite positive
-// times, finite non-negative values and no repeated time.
-void validate_reference_pairs(const std::vector<ReferencePair>& pairs, const std::string& field);
+using universe::ApertureQuantity;
+using universe::ReferencePair;
+using universe::SensorParameters;
+
+using universe::validate_reference_pairs;
 
 // How the aperture-referred value scales with integration time between and
 // beyond the pairs: NEI ~ 1/sqrt(t) (eqs. 43-44), SEI ~ 1/t (eqs. 45-46).

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 
 #include "core/constants.hpp"
@@ -17,45 +16,6 @@
 
 namespace eoir::sensor {
 namespace {
-
-std::string text(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-constexpr std::int64_t max_otf_curve_points = 100000;
-
-void validate(const SensorParameters& p) {
-  require_positive(static_cast<double>(p.horizontal_pixels), "horizontal_pixels");
-  require_positive(static_cast<double>(p.vertical_pixels), "vertical_pixels");
-  for (auto [value, field] : {std::pair{p.horizontal_fov_deg, "horizontal_fov_deg"},
-                              std::pair{p.vertical_fov_deg, "vertical_fov_deg"}}) {
-    require_positive(value, field);
-    if (!(value < 180.0)) throw Error(Status::out_of_range, std::string(field) + ": must be < 180, got " + text(value));
-  }
-  require_positive(p.band_low_um, "band_low_um");
-  require_positive(p.band_high_um, "band_high_um");
-  if (!(p.band_high_um > p.band_low_um))
-    throw Error(Status::out_of_range, "band_high_um: must be greater than band_low_um (" + text(p.band_high_um) +
-                                          " <= " + text(p.band_low_um) + ")");
-  require_positive(static_cast<double>(p.spectral_intervals), "spectral_intervals");
-  require_positive(p.f_number, "f_number");
-  require_positive(p.focal_length_cm, "focal_length_cm");
-  require_positive(p.diffraction_wavelength_um, "diffraction_wavelength_um");
-  require_non_negative(p.defocus_mm, "defocus_mm");
-  require_non_negative(p.wavefront_error_rms_waves, "wavefront_error_rms_waves");
-  require_non_negative(p.jitter_mrad, "jitter_mrad");
-  require_positive(p.integration_time_ms, "integration_time_ms");
-  validate_reference_pairs(p.sensitivity_pairs, "sensitivity_pairs");
-  if (p.saturation_enabled) validate_reference_pairs(p.saturation_pairs, "saturation_pairs");
-  if (!valid_psf_grid_size(p.psf_grid_size))
-    throw Error(Status::out_of_range, "psf_grid_size: must be a power of two in [64, 4096], got " +
-                                          std::to_string(p.psf_grid_size));
-  if (p.otf_curve_points < 2 || p.otf_curve_points > max_otf_curve_points)
-    throw Error(Status::out_of_range, "otf_curve_points: must be in [2, " + std::to_string(max_otf_curve_points) +
-                                          "], got " + std::to_string(p.otf_curve_points));
-}
 
 bool valid_pairs(const std::vector<ReferencePair>& pairs) {
   try {
@@ -79,7 +39,7 @@ Curve make_curve(const std::vector<double>& frequency_cycles_per_mrad, F&& f) {
 }  // namespace
 
 StaticMetrics compute_static_metrics(const SensorParameters& p) {
-  validate(p);
+  universe::validate(p);
   const OpticsModel optics = OpticsModel::from_parameters(p);  // resolves the image-quality preset
   StaticMetrics m;
 
@@ -100,7 +60,7 @@ StaticMetrics compute_static_metrics(const SensorParameters& p) {
   m.ifov_solid_angle_sr = ifov_h_rad * ifov_v_rad;
 
   // Ensquared energy (eq. 42) and the effective quantities of Table 1.
-  m.ensquared_energy = ensquared_energy(optics, m.pixel_pitch_x_cm, m.pixel_pitch_y_cm, p.psf_grid_size);
+  m.ensquared_energy = ensquared_energy(optics, m.pixel_pitch_x_cm, m.pixel_pitch_y_cm, PsfNumerics(p.fidelity));
   const double root_ensq = std::sqrt(m.ensquared_energy);
   m.effective_horizontal_fov_deg = p.horizontal_fov_deg / root_ensq;
   m.effective_vertical_fov_deg = p.vertical_fov_deg / root_ensq;
@@ -155,7 +115,7 @@ StaticMetrics compute_static_metrics(const SensorParameters& p) {
   // footprint MTFs show their first two zeros (at ~1/IFOV and ~2/IFOV).
   const double min_ifov_mrad = std::min(m.horizontal_ifov_mrad, m.vertical_ifov_mrad);
   const double max_frequency = std::max(optics.cutoff_cycles_per_mrad(), 2.0 / min_ifov_mrad);
-  std::vector<double> xi(static_cast<std::size_t>(p.otf_curve_points));
+  std::vector<double> xi(static_cast<std::size_t>(p.fidelity.otf_curve_points));
   for (std::size_t i = 0; i < xi.size(); ++i)
     xi[i] = max_frequency * static_cast<double>(i) / static_cast<double>(xi.size() - 1);
   m.diffraction_otf = make_curve(xi, [&](double f) { return optics.diffraction(optics.to_image(f)); });

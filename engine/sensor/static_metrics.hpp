@@ -4,9 +4,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "sensor/sensor_parameters.hpp"
+#include "universe/sensor_parameters.hpp"
 
 namespace eoir::sensor {
+
+using universe::ApertureQuantity;
+using universe::ReferencePair;
+using universe::SensorParameters;
 
 // A transfer-function curve against spatial frequency in object space.
 struct Curve {
@@ -47,8 +51,9 @@ struct StaticMetrics {
   Curve horizontal_detector_mtf, vertical_detector_mtf;
 };
 
-// Validates `p` (throws eoir::Error naming the field) and computes every
-// static metric, including the PSF by FFT and the ensquared energy.
+// Validates `p` (universe::validate: throws eoir::Error naming the field) and
+// computes every static metric, including the PSF by FFT and the ensquared
+// energy.
 StaticMetrics compute_static_metrics(const SensorParameters& p);
 
 }  // namespace eoir::sensor

@@ -58,10 +58,9 @@ std::vector<std::vector<AxisFrequency>> axis_frequencies(std::int64_t bins, std:
 // margin shrinks (to 1) if folding would evaluate the OTF more than
 // max(4 n^2, 2^22) times (~50 ms; the pixel is then over a hundred lambda F#
 // and the tails that alias are small).
-constexpr std::int64_t period_margin_steps = 9;
-
 std::int64_t subdivisions_for(const OpticsModel& optics, double step_cm, std::int64_t min_subdivisions,
-                              std::int64_t size, std::int64_t n) {
+                              std::int64_t size, const PsfNumerics& numerics) {
+  const std::int64_t n = numerics.fft_size, period_margin_steps = numerics.alias_margin_steps;
   const std::int64_t nyquist = fft_subdivisions(optics, step_cm, min_subdivisions);
   const double steps_per_cutoff = step_cm * optics.cutoff_cycles_per_cm();
   std::int64_t period_steps = size + period_margin_steps;
@@ -69,7 +68,7 @@ std::int64_t subdivisions_for(const OpticsModel& optics, double step_cm, std::in
     const double period_times_cutoff = static_cast<double>(steps) * steps_per_cutoff;
     return constants::pi * period_times_cutoff * period_times_cutoff;
   };
-  const double budget = std::max(4.0 * static_cast<double>(n) * static_cast<double>(n), 4194304.0);
+  const double budget = std::max(4.0 * static_cast<double>(n) * static_cast<double>(n), numerics.fold_budget);
   while (period_steps > size + 1 && folded_evaluations(period_steps) > budget) --period_steps;
   return std::max<std::int64_t>(1, std::min(nyquist, n / period_steps));
 }
@@ -79,7 +78,8 @@ std::int64_t subdivisions_for(const OpticsModel& optics, double step_cm, std::in
 // (step_x, step_y) in a window of odd `size`.
 FocalPlaneSamples integrated_psf(const OpticsModel& optics, double cell_x_cm, double cell_y_cm, double step_x_cm,
                                  double step_y_cm, std::int64_t size, double offset_x_cm, double offset_y_cm,
-                                 std::int64_t min_subdivisions, std::int64_t fft_size) {
+                                 std::int64_t min_subdivisions, const PsfNumerics& numerics) {
+  const std::int64_t fft_size = numerics.fft_size;
   if (!valid_psf_grid_size(fft_size))
     throw Error(Status::out_of_range, "psf_grid_size: must be a power of two in [64, 4096], got " +
                                           std::to_string(fft_size));
@@ -91,8 +91,8 @@ FocalPlaneSamples integrated_psf(const OpticsModel& optics, double cell_x_cm, do
   if (size + 1 > n)
     throw Error(Status::out_of_range, "psf_grid_size: " + std::to_string(n) + " is too small for a window of " +
                                           std::to_string(size) + " samples");
-  const std::int64_t kx = subdivisions_for(optics, step_x_cm, min_subdivisions, size, n);
-  const std::int64_t ky = subdivisions_for(optics, step_y_cm, min_subdivisions, size, n);
+  const std::int64_t kx = subdivisions_for(optics, step_x_cm, min_subdivisions, size, numerics);
+  const std::int64_t ky = subdivisions_for(optics, step_y_cm, min_subdivisions, size, numerics);
   const double dx = step_x_cm / static_cast<double>(kx);
   const double dy = step_y_cm / static_cast<double>(ky);
   const std::int64_t nc = n / 2 + 1;  // complex columns of the c2r input
@@ -105,10 +105,10 @@ FocalPlaneSamples integrated_psf(const OpticsModel& optics, double cell_x_cm, do
   // linearly (the fold below evaluates it up to millions of times; the table
   // error is below 1e-6 of the OTF's peak, where eq. 34 has its
   // (1 - nu)^(3/2) edge).
-  constexpr std::int64_t table_size = 16384;
-  std::vector<double> otf_table(table_size + 2, 0.0);
+  const std::int64_t table_size = numerics.otf_table_size;
+  std::vector<double> otf_table(static_cast<std::size_t>(table_size + 2), 0.0);
   for (std::int64_t k = 0; k <= table_size; ++k)
-    otf_table[static_cast<std::size_t>(k)] = optics.system(cutoff * static_cast<double>(k) / table_size);
+    otf_table[static_cast<std::size_t>(k)] = optics.system(cutoff * static_cast<double>(k) / static_cast<double>(table_size));
   const double table_scale = static_cast<double>(table_size) / cutoff;
   auto otf_at = [&](double rho) {
     const double u = rho * table_scale;
@@ -186,10 +186,10 @@ std::int64_t fft_subdivisions(const OpticsModel& optics, double step_cm, std::in
 }
 
 FocalPlaneSamples sampled_psf(const OpticsModel& optics, double spacing_x_cm, double spacing_y_cm,
-                              std::int64_t size, std::int64_t fft_size, bool cell_integrated) {
+                              std::int64_t size, const PsfNumerics& numerics, bool cell_integrated) {
   FocalPlaneSamples psf =
       integrated_psf(optics, cell_integrated ? spacing_x_cm : 0.0, cell_integrated ? spacing_y_cm : 0.0,
-                     spacing_x_cm, spacing_y_cm, size, 0.0, 0.0, 1, fft_size);
+                     spacing_x_cm, spacing_y_cm, size, 0.0, 0.0, 1, numerics);
   const double total = psf.sum();
   for (double& v : psf.values) v /= total;
   return psf;
@@ -197,15 +197,16 @@ FocalPlaneSamples sampled_psf(const OpticsModel& optics, double spacing_x_cm, do
 
 FocalPlaneSamples energy_on_detector(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm,
                                      std::int64_t window, double offset_x_cm, double offset_y_cm,
-                                     std::int64_t fft_size) {
+                                     const PsfNumerics& numerics) {
   // At least 4 FFT points per pixel (the p / 4 sample interval of eqs. 13-14)
   // unless the spectrum is folded (see subdivisions_for).
   return integrated_psf(optics, pitch_x_cm, pitch_y_cm, pitch_x_cm, pitch_y_cm, window, offset_x_cm, offset_y_cm,
-                        4, fft_size);
+                        4, numerics);
 }
 
-double ensquared_energy(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm, std::int64_t fft_size) {
-  return energy_on_detector(optics, pitch_x_cm, pitch_y_cm, 1, 0.0, 0.0, fft_size).values[0];
+double ensquared_energy(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm,
+                        const PsfNumerics& numerics) {
+  return energy_on_detector(optics, pitch_x_cm, pitch_y_cm, 1, 0.0, 0.0, numerics).values[0];
 }
 
 }  // namespace eoir::sensor

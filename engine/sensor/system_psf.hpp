@@ -18,9 +18,26 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/fidelity.hpp"
 #include "sensor/otf.hpp"
 
 namespace eoir::sensor {
+
+// The numerical knobs of the PSF computation (core/fidelity.hpp): FFT size
+// (psf_grid_size), radial OTF table size, alias margin and fold budget.
+struct PsfNumerics {
+  std::int64_t fft_size;
+  std::int64_t otf_table_size;
+  std::int64_t alias_margin_steps;
+  double fold_budget;
+  explicit PsfNumerics(const Fidelity& f)
+      : fft_size(f.psf_grid_size),
+        otf_table_size(f.otf_table_size),
+        alias_margin_steps(f.psf_alias_margin_steps),
+        fold_budget(f.psf_fold_budget) {}
+  // The fidelity defaults with another FFT size.
+  PsfNumerics(std::int64_t fft) : PsfNumerics(Fidelity{}) { fft_size = fft; }  // NOLINT: implicit on purpose
+};
 
 // Values on a square focal-plane grid centred on the origin: element
 // (ix, iy), -half <= ix, iy <= half, is at (ix step_x, iy step_y).
@@ -48,18 +65,18 @@ std::int64_t fft_subdivisions(const OpticsModel& optics, double step_cm, std::in
 // psf_grid_size when size + 1 > fft_size (the FFT period must hold the window
 // plus one step; the same holds below).
 FocalPlaneSamples sampled_psf(const OpticsModel& optics, double spacing_x_cm, double spacing_y_cm,
-                              std::int64_t size, std::int64_t fft_size, bool cell_integrated = true);
+                              std::int64_t size, const PsfNumerics& numerics, bool cell_integrated = true);
 
 // (b) Energy on detector, eq. 51, for a point source at (offset_x, offset_y)
 // from the centre of pixel (0, 0): element (m, n) is the fraction of the
 // source's energy on the pixel centred at (m p_x, n p_y). window is odd.
 FocalPlaneSamples energy_on_detector(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm,
                                      std::int64_t window, double offset_x_cm, double offset_y_cm,
-                                     std::int64_t fft_size);
+                                     const PsfNumerics& numerics);
 
 // (c) Ensquared energy, eq. 42: EOD of the centre pixel for a point source at
 // its centre.
-double ensquared_energy(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm, std::int64_t fft_size);
+double ensquared_energy(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm, const PsfNumerics& numerics);
 
 // True for powers of two in [64, 4096], the allowed psf_grid_size values.
 bool valid_psf_grid_size(std::int64_t n);

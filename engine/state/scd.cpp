@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "sensor/sensor_properties.hpp"
+#include "universe/sensor_properties.hpp"
 #include "state/atomic_file.hpp"
 #include "universe/object_motion.hpp"
 #include "universe/object_properties.hpp"
@@ -90,23 +90,26 @@ json properties_to_json(const Object& o) {
   return p;
 }
 
-void apply_properties(Object& o, const json& p, const std::string& where) {
+// Applies the properties of an object of `kind` through `set(name, value)`,
+// in the property table's order (shape before dimensions_m, preset before
+// W_rms), so that any order in the file works.
+template <class Set>
+void apply_properties(ObjectKind kind, const json& p, const std::string& where, const Set& set) {
   if (!p.is_object()) corrupt(where, "expected an object");
-  // Apply in the table's order (shape before dimensions_m, preset before W_rms).
   std::set<std::string> seen;
-  for (const auto& spec : universe::properties_of(o.kind)) {
+  for (const auto& spec : universe::properties_of(kind)) {
     if (!p.contains(spec.name)) continue;
     seen.insert(spec.name);
     const std::string at = where + "." + spec.name;
     try {
-      universe::set_property(o, spec.name, json_to_value(p.at(spec.name), spec.type, at));
+      set(spec.name, json_to_value(p.at(spec.name), spec.type, at));
     } catch (const Error& e) {
       if (e.status() == Status::corrupt_file) throw;
       corrupt(at, e.what());
     }
   }
   for (auto it = p.begin(); it != p.end(); ++it)
-    if (!seen.count(it.key())) corrupt(where + "." + it.key(), "unknown property of a " + std::string(kind_name(o.kind)));
+    if (!seen.count(it.key())) corrupt(where + "." + it.key(), "unknown property of a " + std::string(kind_name(kind)));
 }
 
 json vec(const frames::Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
@@ -164,14 +167,13 @@ json engine_to_json(const Engine& engine) {
   return doc;
 }
 
-std::unique_ptr<Engine> engine_from_json(const json& doc, std::uint32_t threads) {
+std::unique_ptr<Engine> engine_from_json(const json& doc, const EngineOptions& restoring) {
   check_fields(doc, "scd", {"format", "version", "engine", "time", "objects"},
                {"format", "version", "engine", "time", "objects"});
   check_format(doc, "eoir-scd", scd_format_version, "scd");
   const json& e = doc.at("engine");
   check_fields(e, "scd.engine", {"seed", "noise_rng_state"}, {"seed", "noise_rng_state"});
-  EngineOptions options;
-  options.threads = threads;
+  EngineOptions options = restoring;
   options.seed = field<std::uint64_t>(e, "seed", "scd.engine");
   auto engine = std::make_unique<Engine>(options);
   {
@@ -199,16 +201,23 @@ std::unique_ptr<Engine> engine_from_json(const json& doc, std::uint32_t threads)
     check_fields(j, where, {"name", "kind", "parent", "properties", "state"}, {"name", "kind"});
     const auto name = field<std::string>(j, "name", where);
     const ObjectKind kind = kind_from(field<std::string>(j, "kind", where), where + ".kind");
-    Object* o = nullptr;
     try {
-      if (name == "Sun" && kind == ObjectKind::central_body)
-        o = &engine->universe().get("Sun");
-      else
-        o = &engine->universe().add(kind, name, j.value("parent", std::string()));
+      const universe::Object* existing = engine->universe().find(name);
+      const bool the_sun = existing && existing->kind == ObjectKind::central_body && kind == ObjectKind::central_body &&
+                           existing->central_body == universe::CentralBody::sun;
+      if (the_sun) {
+        // always present
+      } else if (kind == ObjectKind::sensor) {
+        engine->add_sensor(name, j.value("parent", std::string()));
+      } else {
+        engine->add_object(kind, name);
+      }
     } catch (const Error& err) {
       corrupt(where, err.what());
     }
-    if (j.contains("properties")) apply_properties(*o, j.at("properties"), where + ".properties");
+    if (j.contains("properties"))
+      apply_properties(kind, j.at("properties"), where + ".properties",
+                       [&](const std::string& property, const Value& v) { engine->set_property(name, property, v); });
     if (j.contains("state")) {
       const json& s = j.at("state");
       const std::string sw = where + ".state";
@@ -223,12 +232,15 @@ std::unique_ptr<Engine> engine_from_json(const json& doc, std::uint32_t threads)
       if (q.size() != 4) corrupt(sw + ".attitude_wxyz", "expected 4 numbers");
       const frames::Vec3 r = vec_from(s, "position_m", sw), v = vec_from(s, "velocity_m_s", sw);
       try {
-        const EngineTime epoch = EngineTime::from_tt_days(field<double>(s, "epoch_days_since_j2000", sw),
-                                                          field<double>(s, "epoch_fraction_of_day", sw));
-        const double rp[3] = {r.x(), r.y(), r.z()}, vp[3] = {v.x(), v.y(), v.z()};
-        universe::push_state(*o, epoch, frame == "j2000" ? 0 : 1, rp, vp, q.data());
-        // Keep the saved quaternion bit for bit (push_state normalises).
-        o->state.attitude = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+        universe::PushedState state;
+        state.valid = true;
+        state.epoch = EngineTime::from_tt_days(field<double>(s, "epoch_days_since_j2000", sw),
+                                               field<double>(s, "epoch_fraction_of_day", sw));
+        state.frame = frame == "j2000" ? universe::StateFrame::j2000 : universe::StateFrame::earth_fixed;
+        state.position_m = r;
+        state.velocity_m_s = v;
+        state.attitude = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);  // kept bit for bit
+        engine->restore_state(name, state);
       } catch (const Error& err) {
         corrupt(sw, err.what());
       }
@@ -250,9 +262,10 @@ sensor::SensorParameters sensor_from_json(const json& doc) {
   Object o;
   o.kind = ObjectKind::sensor;
   o.name = doc.value("name", std::string("sensor"));
-  apply_properties(o, doc.at("parameters"), "sensor.parameters");
+  apply_properties(ObjectKind::sensor, doc.at("parameters"), "sensor.parameters",
+                   [&](const std::string& property, const Value& v) { universe::set_property(o, property, v); });
   try {
-    sensor::check_consistency(o.sensor);
+    universe::validate(o.sensor);
   } catch (const Error& err) {
     corrupt("sensor.parameters", err.what());
   }
@@ -263,8 +276,8 @@ void save_engine(const Engine& engine, const std::string& path) {
   write_file_atomically(path, engine_to_json(engine).dump(1) + "\n");
 }
 
-std::unique_ptr<Engine> load_engine(const std::string& path, std::uint32_t threads) {
-  return engine_from_json(parse_document(read_file(path), path), threads);
+std::unique_ptr<Engine> load_engine(const std::string& path, const EngineOptions& options) {
+  return engine_from_json(parse_document(read_file(path), path), options);
 }
 
 void save_sensor(const Object& sensor, const std::string& path) {

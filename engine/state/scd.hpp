@@ -14,9 +14,10 @@ constexpr int sensor_format_version = 1;
 
 nlohmann::json engine_to_json(const Engine& engine);
 // Builds a complete new engine from `doc`; throws eoir::Error(corrupt_file or
-// file_version) naming the JSON path of the problem. `threads` is the
-// restoring machine's choice, not the file's.
-std::unique_ptr<Engine> engine_from_json(const nlohmann::json& doc, std::uint32_t threads);
+// file_version) naming the JSON path of the problem. The threads and host
+// callbacks of `options` are the restoring host's choice; the seed is the
+// file's.
+std::unique_ptr<Engine> engine_from_json(const nlohmann::json& doc, const EngineOptions& options);
 
 nlohmann::json sensor_to_json(const universe::Object& sensor);
 // Returns the parameters the file describes (validated, consistent).
@@ -27,7 +28,7 @@ sensor::SensorParameters sensor_from_json(const nlohmann::json& doc);
 nlohmann::json parse_document(const std::string& text, const std::string& path);
 
 void save_engine(const Engine& engine, const std::string& path);
-std::unique_ptr<Engine> load_engine(const std::string& path, std::uint32_t threads);
+std::unique_ptr<Engine> load_engine(const std::string& path, const EngineOptions& options);
 void save_sensor(const universe::Object& sensor, const std::string& path);
 sensor::SensorParameters load_sensor(const std::string& path);
 

@@ -8,14 +8,21 @@ namespace eoir::universe {
 
 const std::vector<CentralBodyInfo>& central_bodies() {
   static const std::vector<CentralBodyInfo> table = {
-      {"Sun", 695700.0e3, 695700.0e3, 0},      {"Mercury", 2440.53e3, 2438.26e3, 1},
-      {"Venus", 6051.8e3, 6051.8e3, 2},        {"Earth", 6378137.0, 6356752.314245, 0},
-      {"Mars", 3396.19e3, 3376.20e3, 4},       {"Jupiter", 71492.0e3, 66854.0e3, 5},
-      {"Saturn", 60268.0e3, 54364.0e3, 6},     {"Uranus", 25559.0e3, 24973.0e3, 7},
-      {"Neptune", 24764.0e3, 24341.0e3, 8},    {"Moon", 1737.4e3, 1737.4e3, 0},
+      {CentralBody::sun, "Sun", 695700.0e3, 695700.0e3, 0, BodyAxes::j2000},
+      {CentralBody::mercury, "Mercury", 2440.53e3, 2438.26e3, 1, BodyAxes::j2000},
+      {CentralBody::venus, "Venus", 6051.8e3, 6051.8e3, 2, BodyAxes::j2000},
+      {CentralBody::earth, "Earth", 6378137.0, 6356752.314245, 0, BodyAxes::earth_fixed},
+      {CentralBody::mars, "Mars", 3396.19e3, 3376.20e3, 4, BodyAxes::j2000},
+      {CentralBody::jupiter, "Jupiter", 71492.0e3, 66854.0e3, 5, BodyAxes::j2000},
+      {CentralBody::saturn, "Saturn", 60268.0e3, 54364.0e3, 6, BodyAxes::j2000},
+      {CentralBody::uranus, "Uranus", 25559.0e3, 24973.0e3, 7, BodyAxes::j2000},
+      {CentralBody::neptune, "Neptune", 24764.0e3, 24341.0e3, 8, BodyAxes::j2000},
+      {CentralBody::moon, "Moon", 1737.4e3, 1737.4e3, 0, BodyAxes::j2000},
   };
   return table;
 }
+
+const CentralBodyInfo& central_body_info(CentralBody id) { return central_bodies()[static_cast<std::size_t>(id)]; }
 
 const CentralBodyInfo* find_central_body(const std::string& name) {
   for (const auto& b : central_bodies())
@@ -28,12 +35,11 @@ void central_body_state_j2000(const CentralBodyInfo& body, const EngineTime& t, 
   const JulianDate tdb = t.to(TimeScale::tdb);
   constexpr double au = constants::au_m;
   constexpr double au_per_day = constants::au_m / constants::seconds_per_day;
-  const std::string name = body.name;
   r_m.setZero();
   v_m_s.setZero();
-  if (name == "Earth") return;
+  if (body.id == CentralBody::earth) return;
   double pv[2][3];
-  if (name == "Moon") {
+  if (body.id == CentralBody::moon) {
     eraMoon98(tdb.jd1, tdb.jd2, pv);
     r_m = frames::Vec3(pv[0][0], pv[0][1], pv[0][2]) * au;
     v_m_s = frames::Vec3(pv[1][0], pv[1][1], pv[1][2]) * au_per_day;

@@ -9,16 +9,26 @@
 
 namespace eoir::universe {
 
+enum class CentralBody : int { sun, mercury, venus, earth, mars, jupiter, saturn, uranus, neptune, moon };
+
+// The axes of a central body's body frame: Earth-fixed (ITRS) for the Earth,
+// whose rotation is modeled; J2000-aligned for the others (no rotation
+// models yet).
+enum class BodyAxes : int { j2000, earth_fixed };
+
 struct CentralBodyInfo {
+  CentralBody id;
   const char* name;
   double equatorial_radius_m;
   double polar_radius_m;
   int erfa_planet;  // eraPlan94 index (1 Mercury .. 8 Neptune), 0 for Sun, Earth, Moon
+  BodyAxes axes;
 };
 
-// Sun, Mercury..Neptune, Moon. Radii: IAU WG on cartographic coordinates
-// (2015) mean values; Earth is WGS84.
+// Sun, Mercury..Neptune, Moon, in CentralBody order. Radii: IAU WG on
+// cartographic coordinates (2015) mean values; Earth is WGS84.
 const std::vector<CentralBodyInfo>& central_bodies();
+const CentralBodyInfo& central_body_info(CentralBody id);
 // nullptr if `name` is not a central body.
 const CentralBodyInfo* find_central_body(const std::string& name);
 

@@ -4,7 +4,6 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
-#include "universe/shapes.hpp"
 
 namespace eoir::universe {
 namespace {
@@ -28,7 +27,7 @@ std::vector<double> numbers(const json& j, const std::string& where, std::size_t
 
 void flatten(const json& parts, const std::string& where, const Eigen::Vector3d& offset,
              const Eigen::Quaterniond& orientation, std::optional<double> temperature, std::optional<double> reflectance,
-             int depth, std::vector<CompositePart>& out) {
+             int depth, std::vector<ShapePart>& out) {
   if (depth > max_composite_depth)
     throw Error(Status::limit_exceeded, where + ": composites nest at most " + std::to_string(max_composite_depth) + " deep");
   if (!parts.is_array()) bad(where, "expected an array of parts");
@@ -77,27 +76,26 @@ void flatten(const json& parts, const std::string& where, const Eigen::Vector3d&
       continue;
     }
     if (!p.contains("shape") || !p["shape"].is_string()) bad(at + ".shape", "missing (or give nested parts)");
-    const std::string shape = p["shape"].get<std::string>();
-    if (shape == "composite") bad(at + ".shape", "nest composites with \"parts\"");
-    const ShapeInfo& info = find_shape(shape, at + ".shape");
+    const ShapeKind kind = parse_shape(p["shape"].get<std::string>(), at + ".shape");
+    if (kind == ShapeKind::composite) bad(at + ".shape", "nest composites with \"parts\"");
     const std::vector<double> dims = p.contains("dimensions_m") ? numbers(p["dimensions_m"], at + ".dimensions_m", 0)
                                                                   : std::vector<double>{};
-    check_dimensions(info, dims, at + ".dimensions_m");
+    check_dimensions(kind, dims, at + ".dimensions_m");
     if (out.size() >= max_composite_parts)
       throw Error(Status::limit_exceeded, at + ": at most " + std::to_string(max_composite_parts) + " parts per object");
-    out.push_back(CompositePart{shape, dims, body_offset, body_orientation, t, r});
+    out.push_back(ShapePart{kind, dims, body_offset, body_orientation, t, r});
   }
 }
 }  // namespace
 
-std::vector<CompositePart> parse_composite(const std::string& text, const std::string& field) {
+std::vector<ShapePart> parse_composite(const std::string& text, const std::string& field) {
   json doc;
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
     bad(field, std::string("not valid JSON: ") + e.what());
   }
-  std::vector<CompositePart> out;
+  std::vector<ShapePart> out;
   flatten(doc, field, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity(), std::nullopt, std::nullopt, 1, out);
   return out;
 }

@@ -6,23 +6,15 @@
 //    {"parts": [ ...nested parts... ], "offset_m": [0, 3, 0]}]
 // offset_m and orientation_wxyz (part -> parent) default to zero and
 // identity; temperature_K and reflectance default to the parent's. An empty
-// top-level array (the default) makes a composite that images nothing.
+// top-level array (the default) makes a composite that images nothing. The
+// text is parsed once, when the property is set.
 #pragma once
-#include <Eigen/Geometry>
-#include <optional>
 #include <string>
 #include <vector>
 
-namespace eoir::universe {
+#include "universe/shapes.hpp"
 
-struct CompositePart {
-  std::string shape;
-  std::vector<double> dimensions_m;
-  Eigen::Vector3d offset_m = Eigen::Vector3d::Zero();                 // in the object's body frame
-  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();     // part -> body
-  std::optional<double> temperature_K;
-  std::optional<double> reflectance;
-};
+namespace eoir::universe {
 
 constexpr int max_composite_depth = 8;
 constexpr std::size_t max_composite_parts = 256;
@@ -30,6 +22,6 @@ constexpr std::size_t max_composite_parts = 256;
 // Parses and flattens (nested transforms composed). Throws eoir::Error
 // (out_of_range, unknown_name, limit_exceeded) naming the JSON path under
 // `field`, e.g. "composite[1].parts[0].dimensions_m[2]: must be > 0".
-std::vector<CompositePart> parse_composite(const std::string& json_text, const std::string& field);
+std::vector<ShapePart> parse_composite(const std::string& json_text, const std::string& field);
 
 }  // namespace eoir::universe

@@ -3,12 +3,15 @@
 #pragma once
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/frames.hpp"
 #include "core/time.hpp"
-#include "sensor/sensor_parameters.hpp"
+#include "universe/central_bodies.hpp"
+#include "universe/sensor_parameters.hpp"
+#include "universe/shapes.hpp"
 
 namespace eoir::universe {
 
@@ -38,24 +41,33 @@ struct PushedState {
   Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  // body -> frame
 };
 
+// How an object's surface temperature varies (spec 4.3.1.3): uniform
+// (temperature_K everywhere) or subsolar (eq. 12: T_ss cos^(1/4) of the angle
+// from the subsolar point on the day side, a constant night temperature).
+enum class ThermalModel : int { uniform = 0, subsolar = 1 };
+const std::vector<std::string>& thermal_model_names();
+
 // Physical properties of a body-like object (satellites, vehicles, missiles;
 // central bodies have fixed shapes).
 struct BodyProperties {
-  std::string shape = "sphere";
+  ShapeKind shape = ShapeKind::sphere;
   std::vector<double> dimensions_m{1.0};
   std::string material = "gray_body";
   double temperature_K = 300.0;
   double reflectance = 0.0;  // gray-body SRF; emissivity = 1 - SRF (spec 4.1.4.1)
   std::int64_t stages = 1;   // missiles only (spec 4.3.6)
-  double patch_size_m = 0.0; // tessellation (spec 4.1.5.2): patch edge; 0 = automatic
-  std::string composite = "[]";  // parts of shape "composite" (universe/composite.hpp)
-  // Thermal model (spec 4.3.1.3): "uniform" (temperature_K everywhere) or
-  // "subsolar" (eq. 12: T_ss cos^(1/4) of the angle from the subsolar point
-  // on the day side, a constant night temperature on the night side).
-  std::string thermal_model = "uniform";
+  double patch_size_m = 0.0; // tessellation (spec 4.1.5.2): patch edge; 0 = automatic (the sensor's fidelity)
+  std::string composite = "[]";  // parts of shape "composite" as set (universe/composite.hpp)
+  std::shared_ptr<const std::vector<ShapePart>> composite_parts =
+      std::make_shared<const std::vector<ShapePart>>();  // parsed once, when set
+  ThermalModel thermal_model = ThermalModel::uniform;
   double subsolar_temperature_K = 390.0;  // the Moon's (Lawson and Jakosky)
   double night_temperature_K = 95.0;
 };
+
+// The shape parts of a body in its body frame: the composite's parts, one part
+// for a simple shape, none for shape none.
+std::vector<ShapePart> shape_parts(const BodyProperties& body);
 
 struct StarFieldProperties {
   double limiting_magnitude = 9.0;
@@ -64,12 +76,13 @@ struct StarFieldProperties {
 struct Object {
   std::string name;
   ObjectKind kind = ObjectKind::satellite;
+  CentralBody central_body = CentralBody::sun;  // central bodies only
   std::string parent;  // sensors only
   BodyProperties body;
   StarFieldProperties stars;
-  sensor::SensorParameters sensor;
+  SensorParameters sensor;
   PushedState state;
-  std::uint64_t revision = 0;  // bumped on every property change (metric caches)
+  std::uint64_t revision = 0;  // bumped on every property change (sensor-model caches)
 };
 
 }  // namespace eoir::universe

@@ -48,7 +48,7 @@ void push_state(Object& object, const EngineTime& epoch, int frame, const double
 Kinematics kinematics_at(const Universe& universe, const Object& object, const EngineTime& t) {
   Kinematics k{frames::Vec3::Zero(), frames::Vec3::Zero(), Eigen::Quaterniond::Identity()};
   if (object.kind == ObjectKind::central_body) {
-    central_body_state_j2000(*find_central_body(object.name), t, k.position_m, k.velocity_m_s);
+    central_body_state_j2000(central_body_info(object.central_body), t, k.position_m, k.velocity_m_s);
     return k;
   }
   if (object.kind == ObjectKind::star_field) return k;

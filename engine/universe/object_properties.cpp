@@ -1,28 +1,21 @@
 #include "universe/object_properties.hpp"
 
 #include <cmath>
-#include <tuple>
 
 #include "core/error.hpp"
 #include "core/limits.hpp"
-#include "sensor/sensor_properties.hpp"
 #include "universe/composite.hpp"
 #include "universe/materials.hpp"
-#include "universe/shapes.hpp"
+#include "universe/sensor_properties.hpp"
 
 namespace eoir::universe {
 namespace {
 using Spec = PropertySpec<Object>;
 
-double number_of(const Value& v, const char* field) {
-  if (auto d = std::get_if<double>(&v)) return *d;
-  if (auto i = std::get_if<std::int64_t>(&v)) return static_cast<double>(*i);
-  throw Error(Status::type_mismatch, std::string(field) + ": expects a number");
-}
-const std::string& string_of(const Value& v, const char* field) {
-  if (auto s = std::get_if<std::string>(&v)) return *s;
-  throw Error(Status::type_mismatch, std::string(field) + ": expects a string");
-}
+// Physical bounds: every value a property takes stays finite through the
+// whole model (Planck to 1e6 K, geometry in double relative to the observer).
+constexpr double max_temperature_K = 1.0e6;
+constexpr double max_length_m = 1.0e12;
 
 void refuse_central_body(const Object& o, const char* field) {
   if (o.kind == ObjectKind::central_body)
@@ -30,18 +23,33 @@ void refuse_central_body(const Object& o, const char* field) {
                 std::string(field) + ": the dimensions of central body '" + o.name + "' are fixed (spec 4.1.5.1)");
 }
 
+std::vector<std::string> shape_names() {
+  std::vector<std::string> names;
+  for (const auto& s : shapes()) names.push_back(s.name);
+  return names;
+}
+
+std::vector<std::string> material_choices() {
+  std::vector<std::string> names;
+  for (const char* m : material_names()) names.push_back(m);
+  return names;
+}
+
 std::vector<Spec> body_properties(bool missile) {
   std::vector<Spec> t;
-  t.push_back(Spec{"shape", ValueType::string, "",
-                   "Shape (spec 4.1.5.1): sphere, oblate, box, plate, cylinder, cone, coupler or none; a change of "
-                   "shape resets dimensions_m to 1 m each",
-                   [](const Object& o) { return Value(o.body.shape); },
-                   [](Object& o, const Value& v) {
-                     refuse_central_body(o, "shape");
-                     const ShapeInfo& s = find_shape(string_of(v, "shape"), "shape");
-                     if (o.body.shape != s.name) o.body.dimensions_m.assign(s.dimensions.size(), 1.0);
-                     o.body.shape = s.name;
-                   }});
+  Spec shape = enum_property<Object, ShapeKind>(
+      "shape",
+      "Shape (spec 4.1.5.1): sphere, oblate, box, plate, cylinder, cone, coupler, none or composite; a change to a "
+      "shape taking another number of dimensions resets dimensions_m to 1 m each",
+      [](Object& o) -> auto& { return o.body.shape; }, shape_names());
+  const auto set_shape = shape.set;
+  shape.set = [set_shape](Object& o, const Value& v) {
+    refuse_central_body(o, "shape");
+    set_shape(o, v);
+    const std::size_t n = shape_info(o.body.shape).dimensions.size();
+    if (o.body.dimensions_m.size() != n) o.body.dimensions_m.assign(n, 1.0);
+  };
+  t.push_back(shape);
   t.push_back(Spec{"dimensions_m", ValueType::array, "m",
                    "Dimensions of the shape: sphere [radius], oblate [equatorial, polar radius], box [x, y, z], plate "
                    "[x, y], cylinder [radius, length], cone [base radius, length], coupler [base radius, top radius, "
@@ -49,35 +57,27 @@ std::vector<Spec> body_properties(bool missile) {
                    [](const Object& o) { return Value(o.body.dimensions_m); },
                    [](Object& o, const Value& v) {
                      refuse_central_body(o, "dimensions_m");
-                     const auto* a = std::get_if<std::vector<double>>(&v);
-                     if (!a) throw Error(Status::type_mismatch, "dimensions_m: expects an array of numbers");
-                     check_dimensions(find_shape(o.body.shape, "shape"), *a, "dimensions_m");
-                     o.body.dimensions_m = *a;
-                   }});
+                     const auto& a = array_of(v, "dimensions_m");
+                     check_dimensions(o.body.shape, a, "dimensions_m");
+                     for (std::size_t i = 0; i < a.size(); ++i)
+                       check_range(a[i], Range{0, max_length_m, true}, "dimensions_m[" + std::to_string(i) + "]", "m");
+                     o.body.dimensions_m = a;
+                   },
+                   Range{0, max_length_m, true}});
   t.push_back(Spec{"material", ValueType::string, "", "Surface material (spec 4.3.3-4.3.5)",
                    [](const Object& o) { return Value(o.body.material); },
                    [](Object& o, const Value& v) {
                      const std::string& m = string_of(v, "material");
                      check_material(m, "material");
                      o.body.material = m;
-                   }});
-  t.push_back(Spec{"temperature_K", ValueType::number, "K", "Surface temperature (uniform thermal model)",
-                   [](const Object& o) { return Value(o.body.temperature_K); },
-                   [](Object& o, const Value& v) {
-                     const double x = number_of(v, "temperature_K");
-                     require_non_negative(x, "temperature_K");
-                     o.body.temperature_K = x;
-                   }});
-  t.push_back(Spec{"reflectance", ValueType::number, "",
-                   "Gray-body spectral reflectance SRF in [0, 1]; emissivity = 1 - SRF (spec 4.1.4.1)",
-                   [](const Object& o) { return Value(o.body.reflectance); },
-                   [](Object& o, const Value& v) {
-                     const double x = number_of(v, "reflectance");
-                     require_finite(x, "reflectance");
-                     if (x < 0 || x > 1)
-                       throw Error(Status::out_of_range, "reflectance: must be in [0, 1], got " + std::to_string(x));
-                     o.body.reflectance = x;
-                   }});
+                   },
+                   Range{}, material_choices()});
+  t.push_back(number_property<Object>("temperature_K", "K", "Surface temperature (uniform thermal model)",
+                                      [](Object& o) -> auto& { return o.body.temperature_K; },
+                                      Range{0, max_temperature_K}));
+  t.push_back(number_property<Object>("reflectance", "",
+                                      "Gray-body spectral reflectance SRF in [0, 1]; emissivity = 1 - SRF (spec 4.1.4.1)",
+                                      [](Object& o) -> auto& { return o.body.reflectance; }, Range{0, 1}));
   t.push_back(Spec{"composite", ValueType::string, "",
                    "Parts of shape composite as a JSON array: {shape, dimensions_m, offset_m, orientation_wxyz, "
                    "temperature_K, reflectance} or nested {parts, offset_m, orientation_wxyz} (spec 4.1.5.1)",
@@ -85,83 +85,73 @@ std::vector<Spec> body_properties(bool missile) {
                    [](Object& o, const Value& v) {
                      refuse_central_body(o, "composite");
                      const std::string& text = string_of(v, "composite");
-                     parse_composite(text, "composite");  // validates, naming the JSON path
+                     o.body.composite_parts =
+                         std::make_shared<const std::vector<ShapePart>>(parse_composite(text, "composite"));
                      o.body.composite = text;
                    }});
-  t.push_back(Spec{"thermal_model", ValueType::string, "",
-                   "uniform (temperature_K everywhere) or subsolar (spec 4.3.1.3 eq. 12: T_ss cos^(1/4) of the "
-                   "angle from the subsolar point by day, night_temperature_K by night)",
-                   [](const Object& o) { return Value(o.body.thermal_model); },
-                   [](Object& o, const Value& v) {
-                     const std::string& m = string_of(v, "thermal_model");
-                     if (m != "uniform" && m != "subsolar")
-                       throw Error(Status::unknown_name, "thermal_model: unknown model '" + m + "' (uniform, subsolar)");
-                     o.body.thermal_model = m;
-                   }});
-  for (const auto& [name, member, text] :
-       {std::tuple<const char*, double BodyProperties::*, const char*>{
-            "subsolar_temperature_K", &BodyProperties::subsolar_temperature_K,
-            "T_ss of the subsolar thermal model (eq. 12)"},
-        {"night_temperature_K", &BodyProperties::night_temperature_K,
-         "Night-side temperature of the subsolar thermal model"}}) {
-    const char* field = name;
-    double BodyProperties::*m = member;
-    t.push_back(Spec{field, ValueType::number, "K", text, [m](const Object& o) { return Value(o.body.*m); },
-                     [field, m](Object& o, const Value& v) {
-                       const double x = number_of(v, field);
-                       require_non_negative(x, field);
-                       o.body.*m = x;
-                     }});
+  t.push_back(enum_property<Object, ThermalModel>(
+      "thermal_model",
+      "uniform (temperature_K everywhere) or subsolar (spec 4.3.1.3 eq. 12: T_ss cos^(1/4) of the angle from the "
+      "subsolar point by day, night_temperature_K by night)",
+      [](Object& o) -> auto& { return o.body.thermal_model; }, thermal_model_names()));
+  t.push_back(number_property<Object>("subsolar_temperature_K", "K", "T_ss of the subsolar thermal model (eq. 12)",
+                                      [](Object& o) -> auto& { return o.body.subsolar_temperature_K; },
+                                      Range{0, max_temperature_K}));
+  t.push_back(number_property<Object>("night_temperature_K", "K",
+                                      "Night-side temperature of the subsolar thermal model",
+                                      [](Object& o) -> auto& { return o.body.night_temperature_K; },
+                                      Range{0, max_temperature_K}));
+  t.push_back(number_property<Object>(
+      "patch_size_m", "m",
+      "Edge of the patches dA the surface is divided into (spec 4.1.5.2); 0 = automatic (the imaging sensor's "
+      "fidelity: 785 km at the Earth's radius for central bodies, an eighth of the object's size otherwise)",
+      [](Object& o) -> auto& { return o.body.patch_size_m; }, Range{0, max_length_m}));
+  if (missile) {
+    Spec stages = integer_property<Object>("stages", "count", "Number of stages, 1-18 (spec 4.3.6)",
+                                           [](Object& o) -> auto& { return o.body.stages; },
+                                           Range{1, static_cast<double>(limits::max_missile_stages)});
+    const auto set_stages = stages.set;
+    stages.set = [set_stages](Object& o, const Value& v) {
+      if (integer_of(v, "stages") > static_cast<std::int64_t>(limits::max_missile_stages))
+        throw Error(Status::limit_exceeded, "stages: at most " + std::to_string(limits::max_missile_stages) +
+                                                " stages per missile, got " + std::to_string(integer_of(v, "stages")));
+      set_stages(o, v);
+    };
+    t.push_back(stages);
   }
-  t.push_back(Spec{"patch_size_m", ValueType::number, "m",
-                   "Edge of the patches dA the surface is divided into (spec 4.1.5.2); 0 = automatic (785 km for "
-                   "central bodies as spec 4.2.3, an eighth of the object's size otherwise)",
-                   [](const Object& o) { return Value(o.body.patch_size_m); },
-                   [](Object& o, const Value& v) {
-                     const double x = number_of(v, "patch_size_m");
-                     require_non_negative(x, "patch_size_m");
-                     o.body.patch_size_m = x;
-                   }});
-  if (missile)
-    t.push_back(Spec{"stages", ValueType::integer, "count", "Number of stages, 1-18 (spec 4.3.6)",
-                     [](const Object& o) { return Value(o.body.stages); },
-                     [](Object& o, const Value& v) {
-                       std::int64_t n = 0;
-                       if (auto i = std::get_if<std::int64_t>(&v)) n = *i;
-                       else if (auto d = std::get_if<double>(&v); d && std::floor(*d) == *d && std::fabs(*d) < 1e9)
-                         n = static_cast<std::int64_t>(*d);
-                       else throw Error(Status::type_mismatch, "stages: expects an integer");
-                       if (n < 1) throw Error(Status::out_of_range, "stages: must be >= 1, got " + std::to_string(n));
-                       if (n > static_cast<std::int64_t>(limits::max_missile_stages))
-                         throw Error(Status::limit_exceeded, "stages: at most " +
-                                                                 std::to_string(limits::max_missile_stages) +
-                                                                 " stages per missile, got " + std::to_string(n));
-                       o.body.stages = n;
-                     }});
   return t;
 }
 
 std::vector<Spec> star_field_properties() {
-  return {Spec{"limiting_magnitude", ValueType::number, "mag", "Faintest visual magnitude imaged",
-               [](const Object& o) { return Value(o.stars.limiting_magnitude); },
-               [](Object& o, const Value& v) {
-                 const double x = number_of(v, "limiting_magnitude");
-                 require_finite(x, "limiting_magnitude");
-                 o.stars.limiting_magnitude = x;
-               }}};
+  return {number_property<Object>("limiting_magnitude", "mag", "Faintest visual magnitude imaged",
+                                  [](Object& o) -> auto& { return o.stars.limiting_magnitude; }, Range{-30, 30})};
 }
 
 std::vector<Spec> sensor_object_properties() {
   std::vector<Spec> t;
-  for (const auto& s : sensor::sensor_properties()) {
-    auto get = s.get;
-    auto set = s.set;
+  for (const auto& s : sensor_properties()) {
+    const auto get = s.get;
+    const auto set = s.set;
     t.push_back(Spec{s.name, s.type, s.unit, s.description, [get](const Object& o) { return get(o.sensor); },
-                     [set](Object& o, const Value& v) { set(o.sensor, v); }});
+                     [set](Object& o, const Value& v) { set(o.sensor, v); }, s.range, s.choices, s.fidelity});
   }
   return t;
 }
 }  // namespace
+
+const std::vector<std::string>& thermal_model_names() {
+  static const std::vector<std::string> names{"uniform", "subsolar"};
+  return names;
+}
+
+std::vector<ShapePart> shape_parts(const BodyProperties& body) {
+  if (body.shape == ShapeKind::composite) return *body.composite_parts;
+  if (body.shape == ShapeKind::none) return {};
+  ShapePart part;
+  part.kind = body.shape;
+  part.dimensions_m = body.dimensions_m;
+  return {part};
+}
 
 const std::vector<Spec>& properties_of(ObjectKind kind) {
   static const std::vector<Spec> body = body_properties(false);

@@ -1,35 +1,36 @@
 #include "universe/shapes.hpp"
 
-#include <cmath>
-
 #include "core/error.hpp"
 
 namespace eoir::universe {
 
 const std::vector<ShapeInfo>& shapes() {
   static const std::vector<ShapeInfo> table = {
-      {"sphere", {"radius"}},
-      {"oblate", {"equatorial_radius", "polar_radius"}},
-      {"box", {"length_x", "width_y", "height_z"}},
-      {"plate", {"length_x", "width_y"}},
-      {"cylinder", {"radius", "length"}},
-      {"cone", {"base_radius", "length"}},
-      {"coupler", {"base_radius", "top_radius", "length"}},
-      {"none", {}},
-      {"composite", {}},  // parts in the object's `composite` property (universe/composite.hpp)
+      {ShapeKind::sphere, "sphere", {"radius"}},
+      {ShapeKind::oblate, "oblate", {"equatorial_radius", "polar_radius"}},
+      {ShapeKind::box, "box", {"length_x", "width_y", "height_z"}},
+      {ShapeKind::plate, "plate", {"length_x", "width_y"}},
+      {ShapeKind::cylinder, "cylinder", {"radius", "length"}},
+      {ShapeKind::cone, "cone", {"base_radius", "length"}},
+      {ShapeKind::coupler, "coupler", {"base_radius", "top_radius", "length"}},
+      {ShapeKind::none, "none", {}},
+      {ShapeKind::composite, "composite", {}},  // parts in the object's `composite` property (universe/composite.hpp)
   };
   return table;
 }
 
-const ShapeInfo& find_shape(const std::string& name, const std::string& field) {
+const ShapeInfo& shape_info(ShapeKind kind) { return shapes()[static_cast<std::size_t>(kind)]; }
+
+ShapeKind parse_shape(const std::string& name, const std::string& field) {
   for (const auto& s : shapes())
-    if (name == s.name) return s;
+    if (name == s.name) return s.kind;
   std::string list;
   for (const auto& s : shapes()) list += std::string(list.empty() ? "" : ", ") + s.name;
   throw Error(Status::unknown_name, field + ": unknown shape '" + name + "' (known: " + list + ")");
 }
 
-void check_dimensions(const ShapeInfo& shape, const std::vector<double>& dims, const std::string& field) {
+void check_dimensions(ShapeKind kind, const std::vector<double>& dims, const std::string& field) {
+  const ShapeInfo& shape = shape_info(kind);
   if (dims.size() != shape.dimensions.size())
     throw Error(Status::out_of_range, field + ": shape '" + shape.name + "' takes " +
                                           std::to_string(shape.dimensions.size()) + " dimensions, got " +

@@ -13,6 +13,31 @@ void check_limit(std::size_t have, std::size_t limit, const char* what) {
     throw Error(Status::limit_exceeded, std::string("kind: at most ") + std::to_string(limit) + " " + what +
                                             " (spec 3.1); remove one first");
 }
+
+// Names travel into files (.scd, FITS, JSON): valid UTF-8 without control
+// characters.
+void check_name_text(const std::string& name) {
+  const auto* s = reinterpret_cast<const unsigned char*>(name.data());
+  const std::size_t n = name.size();
+  for (std::size_t i = 0; i < n;) {
+    const unsigned char c = s[i];
+    if (c < 0x20 || c == 0x7f)
+      throw Error(Status::out_of_range, "name: control character at byte " + std::to_string(i));
+    std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    bool ok = len > 0 && i + len <= n;
+    for (std::size_t k = 1; ok && k < len; ++k) ok = (s[i + k] >> 6) == 0x2;
+    if (ok && len > 1) {  // no overlong forms, surrogates or code points past U+10FFFF
+      const unsigned cp = len == 2 ? ((c & 0x1fu) << 6) | (s[i + 1] & 0x3fu)
+                          : len == 3 ? ((c & 0x0fu) << 12) | ((s[i + 1] & 0x3fu) << 6) | (s[i + 2] & 0x3fu)
+                                     : ((c & 0x07u) << 18) | ((s[i + 1] & 0x3fu) << 12) | ((s[i + 2] & 0x3fu) << 6) |
+                                           (s[i + 3] & 0x3fu);
+      const unsigned min_cp = len == 2 ? 0x80u : len == 3 ? 0x800u : 0x10000u;
+      ok = cp >= min_cp && cp <= 0x10ffffu && !(cp >= 0xd800u && cp <= 0xdfffu);
+    }
+    if (!ok) throw Error(Status::out_of_range, "name: not valid UTF-8 at byte " + std::to_string(i));
+    i += len;
+  }
+}
 }  // namespace
 
 Universe::Universe() { add(ObjectKind::central_body, "Sun"); }
@@ -26,6 +51,7 @@ Object& Universe::add(ObjectKind kind, const std::string& name, const std::strin
   if (name.empty()) throw Error(Status::out_of_range, "name: must not be empty");
   if (name.size() > limits::max_name_length)
     throw Error(Status::out_of_range, "name: longer than " + std::to_string(limits::max_name_length) + " bytes");
+  check_name_text(name);
   if (find(name)) throw Error(Status::already_exists, "name: an object named '" + name + "' already exists");
   Object o;
   o.name = name;
@@ -37,7 +63,8 @@ Object& Universe::add(ObjectKind kind, const std::string& name, const std::strin
         throw Error(Status::unknown_name, "name: '" + name +
                                               "' is not a central body (Sun, Mercury, Venus, Earth, Mars, Jupiter, "
                                               "Saturn, Uranus, Neptune, Moon)");
-      o.body.shape = "oblate";
+      o.central_body = body->id;
+      o.body.shape = ShapeKind::oblate;
       o.body.dimensions_m = {body->equatorial_radius_m, body->polar_radius_m};
       break;
     }
@@ -68,7 +95,8 @@ Object& Universe::add(ObjectKind kind, const std::string& name, const std::strin
 
 void Universe::remove(const std::string& name) {
   const Object& o = get(name);
-  if (o.name == "Sun") throw Error(Status::not_allowed, "name: the Sun cannot be removed (spec 3.1)");
+  if (o.kind == ObjectKind::central_body && o.central_body == CentralBody::sun)
+    throw Error(Status::not_allowed, "name: the Sun cannot be removed (spec 3.1)");
   const std::string gone = o.name;
   objects_.erase(std::remove_if(objects_.begin(), objects_.end(),
                                 [&](const Object& x) {

@@ -30,8 +30,8 @@ void grid(benchmark::State& state, SpectralQuadrature rule) {
   state.counters["intervals"] = static_cast<double>(band.intervals);
 }
 
-void BM_BandGridMidpoint(benchmark::State& state) { grid(state, SpectralQuadrature::IntervalMidpoint); }
-void BM_BandGridLeftEdge(benchmark::State& state) { grid(state, SpectralQuadrature::IntervalLeftEdge); }
+void BM_BandGridMidpoint(benchmark::State& state) { grid(state, SpectralQuadrature::interval_midpoint); }
+void BM_BandGridLeftEdge(benchmark::State& state) { grid(state, SpectralQuadrature::interval_left_edge); }
 
 void BM_BandExact(benchmark::State& state) {
   double l150 = 0, l300 = 0;

@@ -28,7 +28,7 @@ struct StageSums {
   double setup = 0, rays = 0, shading = 0, convolution = 0, points = 0, noise = 0, display = 0, total = 0;
   double ray_count = 0;
   int n = 0;
-  void add(const eoir::scene::FrameTimings& t) {
+  void add(const eoir::FrameTimings& t) {
     setup += t.setup_s;
     rays += t.ray_casting_s;
     shading += t.shading_s;
@@ -82,8 +82,8 @@ void time_frames(benchmark::State& state, eoir::Engine& engine) {
   engine.render("Sensor");
   StageSums sums;
   for (auto _ : state) {
-    const eoir::scene::Frame& f = engine.render("Sensor");
-    benchmark::DoNotOptimize(f.sensor_electrons.data());
+    const eoir::Frame& f = engine.render("Sensor");
+    benchmark::DoNotOptimize(f.sensor.electrons.data());
     sums.add(f.timings);
   }
   sums.report(state);
@@ -97,7 +97,7 @@ void BM_Frame(benchmark::State& state) {
   auto engine = eoir::bench::make_geo_scene(s);
   time_frames(state, *engine);
   state.counters["pixels"] = static_cast<double>(s.pixels * s.pixels);
-  state.counters["point_sources"] = static_cast<double>(engine->frame("Sensor").point_sources.size());
+  state.counters["point_sources"] = static_cast<double>(engine->frame("Sensor").scene.image.point_sources.size());
   state.counters["peak_rss_MiB"] = eoir::bench::peak_rss_mib();
 }
 
@@ -110,7 +110,7 @@ const std::vector<double>& exact_reference(std::int64_t pixels) {
   s.pixels = pixels;
   s.band_integration = "exact";
   auto engine = eoir::bench::make_geo_scene(s);
-  return cache[pixels] = engine->render("Sensor").sensor_mean;
+  return cache[pixels] = engine->render("Sensor").sensor.mean_electrons;
 }
 
 // args: pixels per side, spectral intervals (0 = band_integration "exact").
@@ -122,7 +122,7 @@ void BM_FrameSpectral(benchmark::State& state) {
   const std::vector<double>& ref = exact_reference(s.pixels);
   auto engine = eoir::bench::make_geo_scene(s);
   time_frames(state, *engine);
-  const auto& mean = engine->frame("Sensor").sensor_mean;
+  const auto& mean = engine->frame("Sensor").sensor.mean_electrons;
   state.counters["rel_rms_error_vs_exact"] = relative_rms(mean, ref);
   state.counters["rel_sum_error_vs_exact"] = relative_sum(mean, ref);
 }
@@ -132,13 +132,13 @@ void BM_FrameSpectral(benchmark::State& state) {
 std::unique_ptr<eoir::Engine> make_close_scene(double patch_m) {
   auto e = std::make_unique<eoir::Engine>();
   e->set_time(eoir::bench::bench_epoch());
-  e->universe().add(eoir::universe::ObjectKind::central_body, "Earth");
+  e->add_object(eoir::universe::ObjectKind::central_body, "Earth");
   // Host on the y axis at 7000 km (Sun on +x lights the target's side), looking +z.
   const double host[3] = {0, 7000e3, 0}, v[3] = {0, 0, 7500};
   eoir::bench::add_satellite(*e, "Host", "none", {}, 0, host, v);
   const double target[3] = {0, 7000e3, 200};
-  auto& t = eoir::bench::add_satellite(*e, "Target", "sphere", {5.0}, 290.0, target, v);
-  eoir::universe::set_property(t, "patch_size_m", eoir::Value(patch_m));
+  eoir::bench::add_satellite(*e, "Target", "sphere", {5.0}, 290.0, target, v);
+  e->set_property("Target", "patch_size_m", eoir::Value(patch_m));
   SensorSetup s;
   s.pixels = 256;
   s.fov_deg = 5.0;
@@ -150,11 +150,11 @@ double patch_arg_m(std::int64_t centimetres) { return static_cast<double>(centim
 
 // arg: patch edge in cm (0 = automatic).
 void BM_FramePatchSize(benchmark::State& state) {
-  static const std::vector<double> ref = make_close_scene(0.05)->render("Sensor").sensor_mean;
+  static const std::vector<double> ref = make_close_scene(0.05)->render("Sensor").sensor.mean_electrons;
   auto engine = make_close_scene(patch_arg_m(state.range(0)));
   time_frames(state, *engine);
   state.counters["patch_m"] = patch_arg_m(state.range(0));
-  state.counters["rel_rms_error_vs_5cm"] = relative_rms(engine->frame("Sensor").sensor_mean, ref);
+  state.counters["rel_rms_error_vs_5cm"] = relative_rms(engine->frame("Sensor").sensor.mean_electrons, ref);
 }
 
 }  // namespace

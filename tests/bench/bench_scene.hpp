@@ -9,8 +9,6 @@
 #include <string>
 
 #include "engine.hpp"
-#include "universe/object_motion.hpp"
-#include "universe/object_properties.hpp"
 
 namespace eoir::bench {
 
@@ -25,25 +23,19 @@ inline double peak_rss_mib() {
   return static_cast<double>(u.ru_maxrss) / 1024.0;
 }
 
-inline void push_j2000(universe::Object& o, const EngineTime& t, const double pos[3], const double vel[3],
-                       const double q_wxyz[4]) {
-  universe::push_state(o, t, 0, pos, vel, q_wxyz);
-}
-
 // A satellite (shape/dimensions/temperature) at J2000 position `pos_m`.
-inline universe::Object& add_satellite(Engine& e, const std::string& name, const std::string& shape,
-                                       const std::vector<double>& dims, double temperature_K, const double pos_m[3],
-                                       const double vel_m_s[3]) {
-  universe::Object& o = e.universe().add(universe::ObjectKind::satellite, name);
-  universe::set_property(o, "shape", Value(shape));
+inline void add_satellite(Engine& e, const std::string& name, const std::string& shape,
+                          const std::vector<double>& dims, double temperature_K, const double pos_m[3],
+                          const double vel_m_s[3]) {
+  e.add_object(universe::ObjectKind::satellite, name);
+  e.set_property(name, "shape", Value(shape));
   if (shape != "none") {
-    universe::set_property(o, "dimensions_m", Value(dims));
-    universe::set_property(o, "temperature_K", Value(temperature_K));
-    universe::set_property(o, "reflectance", Value(0.2));
+    e.set_property(name, "dimensions_m", Value(dims));
+    e.set_property(name, "temperature_K", Value(temperature_K));
+    e.set_property(name, "reflectance", Value(0.2));
   }
   const double q[4] = {1, 0, 0, 0};
-  push_j2000(o, e.time(), pos_m, vel_m_s, q);
-  return o;
+  e.push_state(name, e.time(), 0, pos_m, vel_m_s, q);
 }
 
 struct SensorSetup {
@@ -56,26 +48,25 @@ struct SensorSetup {
 
 // A sensor named `name` on `parent`, looking along `look` (J2000 unit vector;
 // body +z goes there).
-inline universe::Object& add_sensor(Engine& e, const std::string& name, const std::string& parent,
-                                    const SensorSetup& s, const Eigen::Vector3d& look) {
-  universe::Object& o = e.universe().add(universe::ObjectKind::sensor, name, parent);
-  universe::set_property(o, "horizontal_pixels", Value(s.pixels));
-  universe::set_property(o, "vertical_pixels", Value(s.pixels));
-  universe::set_property(o, "horizontal_fov_deg", Value(s.fov_deg));
-  universe::set_property(o, "vertical_fov_deg", Value(s.fov_deg));
-  universe::set_property(o, "band_low_um", Value(8.0));
-  universe::set_property(o, "band_high_um", Value(12.0));
-  universe::set_property(o, "spectral_intervals", Value(s.intervals));
-  universe::set_property(o, "focal_length_cm", Value(10.0));
-  universe::set_property(o, "f_number", Value(2.0));
-  universe::set_property(o, "diffraction_wavelength_um", Value(10.0));
-  universe::set_property(o, "band_integration", Value(s.band_integration));
-  universe::set_property(o, "noise_enabled", Value(s.noise));
+inline void add_sensor(Engine& e, const std::string& name, const std::string& parent, const SensorSetup& s,
+                       const Eigen::Vector3d& look) {
+  e.add_sensor(name, parent);
+  e.set_property(name, "horizontal_pixels", Value(s.pixels));
+  e.set_property(name, "vertical_pixels", Value(s.pixels));
+  e.set_property(name, "horizontal_fov_deg", Value(s.fov_deg));
+  e.set_property(name, "vertical_fov_deg", Value(s.fov_deg));
+  e.set_property(name, "band_low_um", Value(8.0));
+  e.set_property(name, "band_high_um", Value(12.0));
+  e.set_property(name, "spectral_intervals", Value(s.intervals));
+  e.set_property(name, "focal_length_cm", Value(10.0));
+  e.set_property(name, "f_number", Value(2.0));
+  e.set_property(name, "diffraction_wavelength_um", Value(10.0));
+  e.set_property(name, "band_integration", Value(s.band_integration));
+  e.set_property(name, "noise_enabled", Value(s.noise));
   const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), look.normalized());
   const double qa[4] = {q.w(), q.x(), q.y(), q.z()};
   const double zero[3] = {0, 0, 0};
-  universe::push_state(o, e.time(), 0, zero, zero, qa);
-  return o;
+  e.push_state(name, e.time(), 0, zero, zero, qa);
 }
 
 // The frame scene: Earth, Moon, a GEO-radius host on +x J2000 carrying
@@ -86,8 +77,8 @@ inline std::unique_ptr<Engine> make_geo_scene(const SensorSetup& s, std::uint64_
   opt.seed = seed;
   auto e = std::make_unique<Engine>(opt);
   e->set_time(bench_epoch());
-  e->universe().add(universe::ObjectKind::central_body, "Earth");
-  e->universe().add(universe::ObjectKind::central_body, "Moon");
+  e->add_object(universe::ObjectKind::central_body, "Earth");
+  e->add_object(universe::ObjectKind::central_body, "Moon");
   const double host[3] = {42164.2e3, 0, 0}, host_v[3] = {0, 3074.7, 0};
   add_satellite(*e, "Host", "none", {}, 0, host, host_v);
   const double p1[3] = {6978e3, 1200e3, 400e3}, p2[3] = {7000e3, -900e3, -1500e3}, p3[3] = {6900e3, 300e3, -2000e3};

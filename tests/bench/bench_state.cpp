@@ -19,8 +19,8 @@ namespace {
 std::unique_ptr<eoir::Engine> make_state_engine() {
   auto e = std::make_unique<eoir::Engine>();
   e->set_time(eoir::bench::bench_epoch());
-  e->universe().add(eoir::universe::ObjectKind::central_body, "Earth");
-  e->universe().add(eoir::universe::ObjectKind::central_body, "Moon");
+  e->add_object(eoir::universe::ObjectKind::central_body, "Earth");
+  e->add_object(eoir::universe::ObjectKind::central_body, "Moon");
   for (int i = 0; i < 16; ++i) {
     const double a = 2.0 * M_PI * i / 16.0, r = 7000e3 + 1000e3 * (i % 4);
     const double p[3] = {r * std::cos(a), r * std::sin(a), 1000e3 * (i % 3)};
@@ -59,7 +59,7 @@ void BM_EngineToJson(benchmark::State& state) {
 void BM_EngineFromJson(benchmark::State& state) {
   const nlohmann::json doc = eoir::state::engine_to_json(*make_state_engine());
   for (auto _ : state) {
-    auto e = eoir::state::engine_from_json(doc, 0);
+    auto e = eoir::state::engine_from_json(doc, eoir::EngineOptions{});
     benchmark::DoNotOptimize(e.get());
   }
 }
@@ -86,7 +86,7 @@ void BM_LoadEngine(benchmark::State& state) {
   const std::string path = temp_dir() + "/load.scd";
   eoir::state::save_engine(*make_state_engine(), path);
   for (auto _ : state) {
-    auto e = eoir::state::load_engine(path, 0);
+    auto e = eoir::state::load_engine(path, eoir::EngineOptions{});
     benchmark::DoNotOptimize(e.get());
   }
   std::filesystem::remove(path);
@@ -98,9 +98,9 @@ void BM_LoadEngineAndRender(benchmark::State& state) {
   const std::string path = temp_dir() + "/load_render.scd";
   eoir::state::save_engine(*make_state_engine(), path);
   for (auto _ : state) {
-    auto e = eoir::state::load_engine(path, 0);
+    auto e = eoir::state::load_engine(path, eoir::EngineOptions{});
     const auto& f = e->render("Sensor0");
-    benchmark::DoNotOptimize(f.sensor_electrons.data());
+    benchmark::DoNotOptimize(f.sensor.electrons.data());
   }
   std::filesystem::remove(path);
 }

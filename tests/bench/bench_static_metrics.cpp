@@ -15,9 +15,9 @@ using eoir::sensor::SensorParameters;
 // reports its ensquared energy and the error against psf_grid_size 1024.
 void run(benchmark::State& state, SensorParameters p) {
   SensorParameters ref = p;
-  ref.psf_grid_size = 1024;
+  ref.fidelity.psf_grid_size = 1024;
   const double reference = eoir::sensor::compute_static_metrics(ref).ensquared_energy;
-  p.psf_grid_size = state.range(0);
+  p.fidelity.psf_grid_size = state.range(0);
   double ensq = 0.0;
   for (auto _ : state) {
     eoir::sensor::StaticMetrics m = eoir::sensor::compute_static_metrics(p);
@@ -34,7 +34,7 @@ void BM_StaticMetrics(benchmark::State& state) { run(state, SensorParameters{});
 // The same with aberration, defocus and jitter (every OTF factor evaluated).
 void BM_StaticMetricsAberrated(benchmark::State& state) {
   SensorParameters p;
-  p.image_quality = "mild";
+  p.image_quality = eoir::universe::ImageQuality::mild;
   p.defocus_mm = 0.1;
   p.jitter_mrad = 0.01;
   run(state, p);

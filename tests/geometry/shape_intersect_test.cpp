@@ -16,10 +16,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 g::ShapeGeom make(const std::string& shape, std::vector<double> dims) {
-  g::ShapePart p;
-  p.shape = shape;
-  p.dimensions_m = std::move(dims);
-  return g::shape_geom(p);
+  return g::shape_geom(eoir::universe::parse_shape(shape, "shape"), dims);
 }
 
 struct Result {
@@ -176,9 +173,11 @@ TEST(ShapeIntersect, GrazingRaysNoNaN) {
   }
   for (double eps : {1e-17, 1e-16, 1e-12, -1e-12, -1e-16}) {
     for (const char* name : {"sphere", "oblate", "cylinder", "cone", "coupler", "box"}) {
-      const auto sh = make(name, std::string(name) == "coupler" ? std::vector<double>{1.0, 1.0, 2.0}
-                                  : std::string(name) == "box" ? std::vector<double>{2.0, 2.0, 2.0}
-                                                                : std::vector<double>{1.0, 2.0});
+      const std::string shape = name;
+      const auto sh = make(name, shape == "coupler" ? std::vector<double>{1.0, 1.0, 2.0}
+                                 : shape == "box"   ? std::vector<double>{2.0, 2.0, 2.0}
+                                 : shape == "sphere" ? std::vector<double>{1.0}
+                                                     : std::vector<double>{1.0, 2.0});
       const Vec3 d = Vec3(0, eps, 1).normalized();
       if (g::intersect_shape(sh, Vec3(1, 0, -5), d, 0.0, kInf, t, n)) {
         EXPECT_TRUE(std::isfinite(t)) << name;

@@ -17,10 +17,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 g::ShapePart part(const std::string& shape, std::vector<double> dims) {
-  g::ShapePart p;
-  p.shape = shape;
-  p.dimensions_m = std::move(dims);
-  return p;
+  return g::ShapePart{g::shape_geom(eoir::universe::parse_shape(shape, "shape"), dims)};
 }
 
 const std::vector<std::pair<std::string, std::vector<double>>>& all_shapes() {
@@ -52,7 +49,7 @@ bool random_surface_point(const g::ShapeGeom& s, std::mt19937_64& rng, Vec3& p, 
 TEST(Tessellation, AreasSumToSurfaceArea) {
   for (const auto& [name, dims] : all_shapes()) {
     const auto sp = part(name, dims);
-    const double area = g::shape_surface_area_m2(g::shape_geom(sp));
+    const double area = g::shape_surface_area_m2(sp.geom);
     for (double f : {10.0, 0.3, 0.05, 0.013}) {
       const auto t = g::tessellate({sp}, f * scale(dims));
       double sum = 0;
@@ -70,7 +67,7 @@ TEST(Tessellation, AreasSumToSurfaceArea) {
 TEST(Tessellation, PatchCentresOnSurfaceWithOutwardNormals) {
   for (const auto& [name, dims] : all_shapes()) {
     const auto sp = part(name, dims);
-    const auto s = g::shape_geom(sp);
+    const auto s = sp.geom;
     const auto t = g::tessellate({sp}, 0.1 * scale(dims));
     for (const auto& p : t.patches) {
       // Outward: moving along the normal leaves the shape; the normal matches the surface's.
@@ -110,7 +107,7 @@ TEST(Tessellation, PatchAtMostlyAgreesWithNearestCentre) {
   std::mt19937_64 rng(11);
   for (const auto& [name, dims] : all_shapes()) {
     const std::vector<g::ShapePart> parts = {part(name, dims)};
-    const auto s = g::shape_geom(parts[0]);
+    const auto s = parts[0].geom;
     const auto t = g::tessellate(parts, 0.1 * scale(dims));
     int agree = 0, total = 0;
     for (int k = 0; k < 3000; ++k) {
@@ -154,7 +151,7 @@ TEST(Tessellation, CompositeWithOffsetsAndOrientation) {
     EXPECT_EQ(g::patch_at_facing(t, parts, p.part, p.centre_body_m, p.normal_body), static_cast<int>(k));
   }
   double expected = 0;
-  for (const auto& sp : parts) expected += g::shape_surface_area_m2(g::shape_geom(sp));
+  for (const auto& sp : parts) expected += g::shape_surface_area_m2(sp.geom);
   EXPECT_NEAR(total / expected, 1.0, 1e-9);
   EXPECT_EQ(t.first_patch[2], t.first_patch[3]);  // none: no patches
   EXPECT_EQ(g::patch_at(t, parts, 2, Vec3::Zero()), -1);

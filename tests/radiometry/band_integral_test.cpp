@@ -38,11 +38,11 @@ TEST(BandGrid, SpecGridAndSampleWavelengths) {
   const r::SpectralBand band{8.0, 12.0, 4};
   EXPECT_DOUBLE_EQ(band.interval_um(), 1.0);
   EXPECT_EQ(band.grid_wavelengths_um(), (std::vector<double>{8.0, 9.0, 10.0, 11.0}));  // spec 5.3
-  EXPECT_EQ(band.sample_wavelengths_um(r::SpectralQuadrature::IntervalLeftEdge), band.grid_wavelengths_um());
-  EXPECT_EQ(band.sample_wavelengths_um(r::SpectralQuadrature::IntervalMidpoint),
+  EXPECT_EQ(band.sample_wavelengths_um(r::SpectralQuadrature::interval_left_edge), band.grid_wavelengths_um());
+  EXPECT_EQ(band.sample_wavelengths_um(r::SpectralQuadrature::interval_midpoint),
             (std::vector<double>{8.5, 9.5, 10.5, 11.5}));
   EXPECT_EQ(band.sample_wavelengths_um(), band.sample_wavelengths_um(r::kDefaultSpectralQuadrature));
-  EXPECT_EQ(r::kDefaultSpectralQuadrature, r::SpectralQuadrature::IntervalMidpoint);
+  EXPECT_EQ(r::kDefaultSpectralQuadrature, r::SpectralQuadrature::interval_midpoint);
   EXPECT_DOUBLE_EQ(r::integrate_spectral_samples(band, {1.0, 2.0, 3.0, 4.0}), 10.0);
   EXPECT_THROW(r::integrate_spectral_samples(band, {1.0, 2.0}), eoir::Error);
   EXPECT_THROW((r::SpectralBand{12.0, 8.0, 4}.validate()), eoir::Error);
@@ -194,8 +194,8 @@ TEST(GridBand, ConvergesToExactAsIntervalsGrow) {
     double prev_mid = kInf, prev_left = kInf, first_left = 0.0;
     for (int N : Ns) {
       const r::SpectralBand band{8.0, 12.0, N};
-      const double mid = r::grid_planck_band_radiance(T, band, r::SpectralQuadrature::IntervalMidpoint);
-      const double left = r::grid_planck_band_radiance(T, band, r::SpectralQuadrature::IntervalLeftEdge);
+      const double mid = r::grid_planck_band_radiance(T, band, r::SpectralQuadrature::interval_midpoint);
+      const double left = r::grid_planck_band_radiance(T, band, r::SpectralQuadrature::interval_left_edge);
       const double e_mid = mid / exact - 1.0, e_left = left / exact - 1.0;
       std::printf("T %5.0f K  N %3d  midpoint %+.4f %%  left edge %+.3f %%\n", T, N, 100 * e_mid, 100 * e_left);
       // Midpoint: strictly monotone convergence, second order.

@@ -38,7 +38,7 @@ TEST(Otf, CutoffImageAndObjectSpace) {
 }
 
 TEST(Otf, HufnagelPresetsEq35) {
-  const auto& presets = image_quality_presets();
+  const auto& presets = eoir::universe::image_quality_presets();
   ASSERT_EQ(presets.size(), 4u);
   const double expected[] = {0.0, 0.07, 0.14, 0.28};
   const char* names[] = {"diffraction_limited", "negligible", "mild", "moderate"};
@@ -46,12 +46,12 @@ TEST(Otf, HufnagelPresetsEq35) {
     EXPECT_STREQ(presets[i].name, names[i]);
     EXPECT_DOUBLE_EQ(presets[i].wavefront_error_rms_waves, expected[i]);
     SensorParameters p;
-    p.image_quality = names[i];
+    p.image_quality = static_cast<eoir::universe::ImageQuality>(i);
     p.wavefront_error_rms_waves = 99.0;  // ignored: the preset decides
     EXPECT_DOUBLE_EQ(resolved_wavefront_error_rms_waves(p), expected[i]);
   }
   SensorParameters custom;
-  custom.image_quality = "custom";
+  custom.image_quality = eoir::universe::ImageQuality::custom;
   custom.wavefront_error_rms_waves = 0.21;
   EXPECT_DOUBLE_EQ(resolved_wavefront_error_rms_waves(custom), 0.21);
   // OQF(0) = 1; at high frequency it tends to exp(-(2 pi Wrms)^2) (ERRATA eq. 35).

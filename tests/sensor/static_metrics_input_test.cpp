@@ -82,14 +82,19 @@ TEST(StaticMetricsInput, RangesAndLimits) {
   expect_rejected([](auto& p) { p.integration_time_ms = 0.0; }, "integration_time_ms");
   expect_rejected([](auto& p) { p.integration_time_ms = -5.0; }, "integration_time_ms");
   expect_rejected([](auto& p) { p.sensitivity_pairs.clear(); }, "sensitivity_pairs");
-  expect_rejected([](auto& p) { p.sensitivity_pairs.assign(9, ReferencePair{1.0, 1e-18}); }, "sensitivity_pairs");
-  expect_rejected([](auto& p) { p.saturation_pairs.assign(9, ReferencePair{1.0, 1e-15}); }, "saturation_pairs");
+  // A ninth pair exceeds EOIR_MAX_REFERENCE_PAIRS (the C ABI's status).
+  expect_rejected([](auto& p) { p.sensitivity_pairs.assign(9, ReferencePair{1.0, 1e-18}); }, "sensitivity_pairs",
+                  eoir::Status::limit_exceeded);
+  expect_rejected([](auto& p) { p.saturation_pairs.assign(9, ReferencePair{1.0, 1e-15}); }, "saturation_pairs",
+                  eoir::Status::limit_exceeded);
   expect_rejected([](auto& p) { p.sensitivity_pairs[0].integration_time_ms = 0.0; },
                   "sensitivity_pairs[0].integration_time_ms");
   for (std::int64_t n : {0, 32, 100, 1000, 8192})
-    expect_rejected([n](auto& p) { p.psf_grid_size = n; }, "psf_grid_size");
-  expect_rejected([](auto& p) { p.otf_curve_points = 1; }, "otf_curve_points");
-  expect_rejected([](auto& p) { p.image_quality = "excellent"; }, "image_quality", eoir::Status::unknown_name);
+    expect_rejected([n](auto& p) { p.fidelity.psf_grid_size = n; }, "psf_grid_size");
+  expect_rejected([](auto& p) { p.fidelity.otf_curve_points = 1; }, "otf_curve_points");
+  expect_rejected([](auto& p) { p.fidelity.samples_per_pixel = 0; }, "samples_per_pixel");
+  expect_rejected([](auto& p) { p.image_quality = static_cast<eoir::universe::ImageQuality>(9); }, "image_quality",
+                  eoir::Status::unknown_name);
 }
 
 TEST(StaticMetricsInput, SaturationDisabled) {

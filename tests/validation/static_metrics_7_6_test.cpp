@@ -29,7 +29,7 @@ SensorParameters table3_sensor() {
   p.f_number = 3.5;
   p.focal_length_cm = 147.0;
   p.defocus_mm = 0.0;
-  p.image_quality = "diffraction_limited";
+  p.image_quality = eoir::universe::ImageQuality::diffraction_limited;
   p.diffraction_wavelength_um = 2.5;
   p.integration_time_ms = 10.0;
   p.sensitivity_quantity = ApertureQuantity::irradiance;
@@ -146,13 +146,13 @@ void check_curves(const SensorParameters& p, bool expect_large_defocus) {
   const StaticMetrics m = compute_static_metrics(p);
   const double f = p.focal_length_cm, F = p.f_number, lambda = p.diffraction_wavelength_um * 1e-4;
   const double delta = p.defocus_mm * 0.1;
-  const double w = p.image_quality == "mild" ? 0.14 : p.wavefront_error_rms_waves;
+  const double w = p.image_quality == eoir::universe::ImageQuality::mild ? 0.14 : p.wavefront_error_rms_waves;
   const double cutoff_image = 1 / (lambda * F);                  // cycles/cm
   const double cutoff_object = (f / F) / lambda / 1000.0;        // D / lambda, cycles/mrad
   const double wpp = delta / (8 * F * F * lambda);
   EXPECT_EQ(wpp > 2.2, expect_large_defocus);
   const double ifov_mrad = 2 * std::atan(m.pixel_pitch_x_cm / (2 * f)) * 1000;
-  ASSERT_EQ(m.optics_otf.value.size(), static_cast<std::size_t>(p.otf_curve_points));
+  ASSERT_EQ(m.optics_otf.value.size(), static_cast<std::size_t>(p.fidelity.otf_curve_points));
   EXPECT_NEAR(m.optics_otf.frequency_cycles_per_mrad.back(), std::max(cutoff_object, 2 / ifov_mrad), 1e-9);
   for (std::size_t i = 0; i < m.optics_otf.value.size(); ++i) {
     const double xi = m.optics_otf.frequency_cycles_per_mrad[i];
@@ -182,10 +182,10 @@ TEST(Spec5_6_OtfCurves, PointwiseEqualToEqs34To38SmallDefocus) {
   p.focal_length_cm = 16.0;
   p.f_number = 2.0;
   p.diffraction_wavelength_um = 4.0;
-  p.image_quality = "mild";  // Wrms 0.14
+  p.image_quality = eoir::universe::ImageQuality::mild;  // Wrms 0.14
   p.defocus_mm = 0.1;        // W_pp = 0.78 waves: eq. 36
   p.jitter_mrad = 0.02;
-  p.otf_curve_points = 257;
+  p.fidelity.otf_curve_points = 257;
   check_curves(p, false);
 }
 
@@ -194,7 +194,7 @@ TEST(Spec5_6_OtfCurves, PointwiseEqualToEqs34To38LargeDefocus) {
   p.focal_length_cm = 16.0;
   p.f_number = 2.0;
   p.diffraction_wavelength_um = 4.0;
-  p.image_quality = "custom";
+  p.image_quality = eoir::universe::ImageQuality::custom;
   p.wavefront_error_rms_waves = 0.05;
   p.defocus_mm = 1.0;  // W_pp = 7.8 waves: eq. 37
   p.jitter_mrad = 0.02;

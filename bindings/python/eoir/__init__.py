@@ -14,8 +14,8 @@ build/lib above this package, then ctypes.util.find_library("eoir").
 from . import errors
 from ._lib import library_path, version_number  # loads the library (ImportError on failure)
 from .errors import (AbiMismatchError, AlreadyExistsError, ArgumentError,
-                     BufferTooSmallError, CorruptFileError, EoirError,
-                     FileError, FileIOError, FileVersionError, InternalError,
+                     BufferTooSmallError, CancelledError, CorruptFileError, EoirError,
+                     FileError, FileIOError, FileVersionError, HostRequestError, InternalError,
                      LimitExceededError, NoStateError, NotAllowedError,
                      NullArgumentError, OutOfRangeError, PluginError,
                      StructSizeError, TypeMismatchError, UniverseError,
@@ -46,5 +46,5 @@ __all__ = [
     "BufferTooSmallError", "UniverseError", "LimitExceededError",
     "AlreadyExistsError", "NotAllowedError", "NoStateError", "FileError",
     "FileIOError", "CorruptFileError", "FileVersionError", "PluginError",
-    "AbiMismatchError", "InternalError",
+    "AbiMismatchError", "HostRequestError", "CancelledError", "InternalError",
 ]

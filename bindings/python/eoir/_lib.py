@@ -40,6 +40,8 @@ EOIR_ERR_IO = -300
 EOIR_ERR_CORRUPT_FILE = -301
 EOIR_ERR_FILE_VERSION = -302
 EOIR_ERR_ABI_MISMATCH = -400
+EOIR_ERR_CANCELLED = -500
+EOIR_PROPERTY_FIDELITY = 1
 EOIR_ERR_INTERNAL = -900
 
 EOIR_MAX_SATELLITES = 16
@@ -110,7 +112,8 @@ class eoir_property_info(Structure):
                 ("name", c_char_p),
                 ("type", c_int32),
                 ("unit", c_char_p),
-                ("description", c_char_p)]
+                ("description", c_char_p),
+                ("flags", c_uint32)]  # appended in 1.3
 
 
 class eoir_element_info(Structure):
@@ -226,6 +229,8 @@ _SIGNATURES = {
     "eoir_snr_constraint": (eoir_status, [eoir_engine, _c_str, _c_str, POINTER(eoir_time), _c_dblp]),
     "eoir_truth_count": (eoir_status, [eoir_engine, _c_str, _c_sizep]),
     "eoir_truth_get": (eoir_status, [eoir_engine, _c_str, c_size_t, POINTER(eoir_truth)]),
+    "eoir_provider_series": (eoir_status, [eoir_engine, _c_str, _c_str, _c_str, _c_str, POINTER(eoir_time),
+                                           c_size_t, _c_dblp]),
     "eoir_plugin_entry": (eoir_status, [c_uint32, POINTER(eoir_host_api), POINTER(c_void_p)]),
 }
 
@@ -284,7 +289,9 @@ class eoir_api_v1(Structure):
                 # appended in 1.2 (targets)
                 ("snr_constraint", _fn("eoir_snr_constraint")),
                 ("truth_count", _fn("eoir_truth_count")),
-                ("truth_get", _fn("eoir_truth_get"))]
+                ("truth_get", _fn("eoir_truth_get")),
+                # appended in 1.3
+                ("provider_series", _fn("eoir_provider_series"))]
 
 
 # ------------------------------------------------------------------- loading

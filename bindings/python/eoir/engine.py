@@ -523,6 +523,18 @@ class Engine:
             return x[:m].copy(), y[:m].copy()
         check(status)
 
+    def provider_series(self, group: str, element: str, sensor: str, times, target: Optional[str] = None) -> np.ndarray:
+        """A scalar element at each of `times` (ISO-8601 UTC strings) in one
+        engine call (eoir_provider_series); the engine time is left at the last."""
+        ts = (_lib.eoir_time * len(times))()
+        for i, t in enumerate(times):
+            check(lib.eoir_time_from_iso(encode(t), byref(ts[i])))
+        out = np.zeros(len(times), dtype=np.float64)
+        tg = None if target is None else encode(target)
+        check(lib.eoir_provider_series(self.handle, encode(group), encode(element), encode(sensor), tg, ts,
+                                       len(times), out.ctypes.data_as(ctypes.POINTER(c_double))))
+        return out
+
     def report(self, group: str, sensor: str, target: Optional[str] = None) -> Dict[str, Tuple[Any, str]]:
         """Every element of a group: {element: (value, unit)} (curves give
         ((x, y), y unit))."""

@@ -14,6 +14,8 @@ status code; the classes follow the gapped status blocks of ``eoir.h``::
     |   +-- FileIOError, CorruptFileError, FileVersionError
     +-- PluginError          (-400 block)
     |   +-- AbiMismatchError
+    +-- HostRequestError     (-500 block)
+    |   +-- CancelledError
     +-- InternalError        (-900 block)
 """
 
@@ -39,6 +41,8 @@ __all__ = [
     "FileVersionError",
     "PluginError",
     "AbiMismatchError",
+    "HostRequestError",
+    "CancelledError",
     "InternalError",
     "error_class",
 ]
@@ -144,6 +148,14 @@ class AbiMismatchError(PluginError):
     """EOIR_ERR_ABI_MISMATCH."""
 
 
+class HostRequestError(EoirError):
+    """-500 block: the host's requests."""
+
+
+class CancelledError(HostRequestError):
+    """EOIR_ERR_CANCELLED: the host's progress callback asked to stop."""
+
+
 class InternalError(EoirError):
     """EOIR_ERR_INTERNAL: a bug in the library; please report it."""
 
@@ -163,6 +175,7 @@ _BY_STATUS = {
     -301: CorruptFileError,
     -302: FileVersionError,
     -400: AbiMismatchError,
+    -500: CancelledError,
     -900: InternalError,
 }
 
@@ -171,6 +184,7 @@ _BY_BLOCK = {
     -200: UniverseError,
     -300: FileError,
     -400: PluginError,
+    -500: HostRequestError,
     -900: InternalError,
 }
 

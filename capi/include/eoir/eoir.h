@@ -16,6 +16,12 @@
  *    (names, units) unless documented otherwise.
  *  - Units: positions in metres, velocities in m/s, angles in degrees unless a
  *    name says otherwise, radiometry in the spec's W, cm, sr, um.
+ *  - Threads: calls on one engine from several threads are serialized (each
+ *    call holds the engine's lock for its duration), never interleaved, so
+ *    they cannot corrupt it; calls on different engines run fully in
+ *    parallel. Pointers an engine returns (object names) stay valid only
+ *    until the next call that changes the engine. eoir_engine_destroy must
+ *    not race with other calls on the same engine.
  */
 #ifndef EOIR_EOIR_H
 #define EOIR_EOIR_H
@@ -39,7 +45,7 @@ extern "C" {
 
 /* ------------------------------------------------------------------ version */
 #define EOIR_VERSION_MAJOR 1
-#define EOIR_VERSION_MINOR 2
+#define EOIR_VERSION_MINOR 3
 #define EOIR_VERSION_PATCH 0
 
 /* Returns EOIR_VERSION_MAJOR*10000 + MINOR*100 + PATCH of the loaded library. */
@@ -69,6 +75,8 @@ typedef int32_t eoir_status;
 #define EOIR_ERR_FILE_VERSION      -302 /* written by a newer format version */
 /* -400 block: plugin negotiation */
 #define EOIR_ERR_ABI_MISMATCH      -400 /* host asked for an ABI major this library lacks */
+/* -500 block: the host's requests (1.3) */
+#define EOIR_ERR_CANCELLED         -500 /* the host's progress callback asked to stop; nothing changed */
 /* -900 block */
 #define EOIR_ERR_INTERNAL          -900 /* a bug: please report with eoir_last_error() */
 
@@ -213,12 +221,16 @@ EOIR_API eoir_status eoir_get_string(eoir_engine engine, const char* object, con
 EOIR_API eoir_status eoir_get_array(eoir_engine engine, const char* object, const char* property,
                                     double* values, size_t capacity, size_t* count_out);
 
+#define EOIR_PROPERTY_FIDELITY 1 /* a knob trading speed for accuracy (README "Fidelity") */
+
 typedef struct eoir_property_info {
   uint32_t struct_size;
   const char* name;        /* static */
   int32_t type;            /* eoir_value_type */
   const char* unit;        /* static, "" if none */
   const char* description; /* static */
+  /* appended in 1.3; written only when struct_size covers it */
+  uint32_t flags;          /* EOIR_PROPERTY_* bits */
 } eoir_property_info;
 
 /* The index-th property of an object (0-based); EOIR_ERR_OUT_OF_RANGE past
@@ -250,6 +262,12 @@ EOIR_API eoir_status eoir_provider_get(eoir_engine engine, const char* group, co
 EOIR_API eoir_status eoir_provider_get_curve(eoir_engine engine, const char* group, const char* element,
                                              const char* sensor, const char* target,
                                              double* x, double* y, size_t capacity, size_t* count_out);
+/* A scalar element at each of `count` times (1.3): values_out[i] at times[i].
+ * The engine time is left at the last time. Reports progress to the host and
+ * stops with EOIR_ERR_CANCELLED when asked. */
+EOIR_API eoir_status eoir_provider_series(eoir_engine engine, const char* group, const char* element,
+                                          const char* sensor, const char* target, const eoir_time* times,
+                                          size_t count, double* values_out);
 
 /* ------------------------------------------------------------ save, restore */
 /* The whole engine state (objects, properties, sensors, time, noise seeds) as
@@ -281,9 +299,11 @@ typedef enum eoir_image_kind {
 /* Renders the frame of `sensor` at the engine time (ray casting, shading,
  * band integration, OTF convolution, point sources, noise from the engine's
  * seeded generator). The frame is kept until the next render of that sensor.
- * Settings: sensor properties scene_mode ("coarse", "smooth"),
- * band_integration ("grid", "exact"), noise_enabled, display_agc,
- * display_gain_step, patch_size_m, ... (README "Properties"). */
+ * Settings: sensor properties noise_enabled, display_agc, display_gain_step,
+ * the fidelity knobs (scene_mode, band_integration, samples_per_pixel, ...;
+ * README "Fidelity") and objects' patch_size_m. The host's progress callback
+ * is called between stages; a non-zero return cancels the render
+ * (EOIR_ERR_CANCELLED, the previous frame stays). */
 EOIR_API eoir_status eoir_render(eoir_engine engine, const char* sensor);
 
 typedef struct eoir_image_info {
@@ -364,7 +384,10 @@ EOIR_API eoir_status eoir_truth_get(eoir_engine engine, const char* sensor, size
 
 /* ------------------------------------------------------------------- plugin */
 /* The host's services, passed to the plugin entry point. Any pointer may be
- * NULL. */
+ * NULL. Engines created after the entry call report to them: progress during
+ * renders and series of data providers (a non-zero return cancels with
+ * EOIR_ERR_CANCELLED), and log messages (a debug line per render). They are
+ * called on the thread that made the engine call. */
 typedef struct eoir_host_api {
   uint32_t struct_size;
   void* user;
@@ -427,6 +450,9 @@ typedef struct eoir_api_v1 {
   eoir_status (*snr_constraint)(eoir_engine, const char*, const char*, const eoir_time*, double*);
   eoir_status (*truth_count)(eoir_engine, const char*, size_t*);
   eoir_status (*truth_get)(eoir_engine, const char*, size_t, eoir_truth*);
+  /* appended in 1.3 */
+  eoir_status (*provider_series)(eoir_engine, const char*, const char*, const char*, const char*, const eoir_time*,
+                                 size_t, double*);
 } eoir_api_v1;
 
 /* The plugin's one entry point (resolved by name with dlsym). Returns, in

@@ -1,0 +1,129 @@
+#include "core/fidelity.hpp"
+
+#include "core/error.hpp"
+
+namespace eoir {
+namespace {
+using F = Fidelity;
+using Spec = PropertySpec<F>;
+
+bool power_of_two(std::int64_t n) { return n > 0 && (n & (n - 1)) == 0; }
+
+}  // namespace
+
+const std::vector<std::string>& scene_mode_names() {
+  static const std::vector<std::string> names{"coarse", "smooth"};
+  return names;
+}
+const std::vector<std::string>& band_integration_names() {
+  static const std::vector<std::string> names{"grid", "exact"};
+  return names;
+}
+const std::vector<std::string>& spectral_quadrature_names() {
+  static const std::vector<std::string> names{"midpoint", "left_edge"};
+  return names;
+}
+
+const std::vector<Spec>& fidelity_properties() {
+  static const std::vector<Spec> table = [] {
+    std::vector<Spec> t;
+    t.push_back(enum_property<F, SceneMode>(
+        "scene_mode",
+        "Scene generation mode (spec 4.2): coarse (one radiance per patch dA) or smooth (radiance evaluated at "
+        "each sample's own surface point)",
+        [](F& f) -> auto& { return f.scene_mode; }, scene_mode_names(), true));
+    t.push_back(integer_property<F>("samples_per_pixel", "count",
+                                    "Scene samples per pixel along each axis (spec 4.1.3: 4)",
+                                    [](F& f) -> auto& { return f.samples_per_pixel; }, Range{1, 16}, true));
+    t.push_back(number_property<F>("central_body_patch_size_m", "m",
+                                   "Default patch edge of central bodies at the Earth's radius, scaled with the "
+                                   "radius (spec 4.2.3: 785 km)",
+                                   [](F& f) -> auto& { return f.central_body_patch_size_m; }, Range{0, 1e8, true}, true));
+    t.push_back(number_property<F>("object_patch_divisions", "",
+                                   "Default patch edge of other objects: their largest part's diameter divided by "
+                                   "this",
+                                   [](F& f) -> auto& { return f.object_patch_divisions; }, Range{0, 1e4, true}, true));
+    t.push_back(integer_property<F>("temperature_table_size", "count",
+                                    "Entries of the L(T) table of smooth shading where the temperature varies",
+                                    [](F& f) -> auto& { return f.temperature_table_size; }, Range{2, 1 << 20}, true));
+    t.push_back(enum_property<F, BandIntegration>(
+        "band_integration",
+        "Band integration (eq. 48): grid (the spec 5.3 intervals) or exact (series integral of Planck terms, "
+        "independent of the interval count)",
+        [](F& f) -> auto& { return f.band_integration; }, band_integration_names(), true));
+    t.push_back(enum_property<F, SpectralQuadrature>(
+        "spectral_quadrature",
+        "Where the grid samples each interval: midpoint (second order) or left_edge (the lambda_i of spec 5.3, "
+        "first order)",
+        [](F& f) -> auto& { return f.spectral_quadrature; }, spectral_quadrature_names(), true));
+    Spec grid = integer_property<F>("psf_grid_size", "count",
+                                    "FFT grid size of the system PSF and energy on detector (eq. 40): a power of "
+                                    "two, 64-4096",
+                                    [](F& f) -> auto& { return f.psf_grid_size; }, Range{64, 4096}, true);
+    const auto set_range = grid.set;
+    grid.set = [set_range](F& f, const Value& v) {
+      const std::int64_t n = integer_of(v, "psf_grid_size");
+      if (!power_of_two(n))
+        throw Error(Status::out_of_range,
+                    "psf_grid_size: must be a power of two in [64, 4096], got " + std::to_string(n));
+      set_range(f, v);
+    };
+    t.push_back(grid);
+    t.push_back(integer_property<F>("otf_table_size", "count",
+                                    "Entries of the radial OTF table interpolated by the PSF computation",
+                                    [](F& f) -> auto& { return f.otf_table_size; }, Range{64, 1 << 24}, true));
+    t.push_back(integer_property<F>("psf_alias_margin_steps", "count",
+                                    "FFT period of the energy on detector beyond its window, in output steps",
+                                    [](F& f) -> auto& { return f.psf_alias_margin_steps; }, Range{1, 1000}, true));
+    t.push_back(number_property<F>("psf_fold_budget", "count",
+                                   "OTF evaluations allowed when the spectrum is folded onto a coarse grid",
+                                   [](F& f) -> auto& { return f.psf_fold_budget; }, Range{1e4, 1e10}, true));
+    const struct {
+      const char* lambda_f;
+      const char* jitter;
+      const char* defocus;
+      PsfReach F::*reach;
+      const char* what;
+    } reaches[] = {{"scene_psf_reach_lambda_f", "scene_psf_reach_jitter_sigmas", "scene_psf_reach_defocus_blurs",
+                    &F::scene_psf_reach, "guard band of scene samples beyond the field"},
+                   {"point_psf_reach_lambda_f", "point_psf_reach_jitter_sigmas", "point_psf_reach_defocus_blurs",
+                    &F::point_psf_reach, "window of a point source's energy on detector"}};
+    for (const auto& r : reaches) {
+      PsfReach F::*reach = r.reach;
+      t.push_back(number_property<F>(r.lambda_f, "lambda F#",
+                                     "PSF reach of the diffraction tail (an Airy pattern keeps 2 / (pi^2 k) of "
+                                     "its energy beyond k lambda F#)",
+                                     [reach](F& f) -> double& { return (f.*reach).diffraction_lambda_f; },
+                                     Range{0, 1e5}, true));
+      t.push_back(number_property<F>(r.jitter, "sigma", "PSF reach of the jitter blur, in jitter sigmas",
+                                     [reach](F& f) -> double& { return (f.*reach).jitter_sigmas; }, Range{0, 100},
+                                     true));
+      t.push_back(number_property<F>(r.defocus, "blur diameters",
+                                     "PSF reach of the defocus blur, in blur diameters delta / F#",
+                                     [reach](F& f) -> double& { return (f.*reach).defocus_blur_diameters; },
+                                     Range{0, 100}, true));
+    }
+    t.push_back(number_property<F>("fft_padding", "guard bands",
+                                   "Padding of the scene FFT beyond the guard band, in guard bands (the border "
+                                   "samples repeated)",
+                                   [](F& f) -> auto& { return f.fft_padding; }, Range{0, 16}, true));
+    t.push_back(integer_property<F>("otf_curve_points", "count", "Samples of the OTF and MTF report curves",
+                                    [](F& f) -> auto& { return f.otf_curve_points; }, Range{2, 100000}, true));
+    t.push_back(integer_property<F>("target_window_max_half_samples", "count",
+                                    "Extended targets (5.13.3): at most (2n + 1)^2 rays average the target and "
+                                    "background radiances",
+                                    [](F& f) -> auto& { return f.target_window_max_half_samples; }, Range{2, 4096}, true));
+    t.push_back(number_property<F>("target_window_extent", "radii",
+                                   "Extended targets: half-width of the averaging window in target angular radii",
+                                   [](F& f) -> auto& { return f.target_window_extent; }, Range{1, 100}, true));
+    return t;
+  }();
+  return table;
+}
+
+void validate(const Fidelity& f) {
+  Fidelity copy = f;
+  for (const Spec& s : fidelity_properties()) s.set(copy, s.get(f));  // each setter checks its knob
+}
+
+}  // namespace eoir

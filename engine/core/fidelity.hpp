@@ -1,0 +1,73 @@
+// Every knob that trades speed for accuracy, in one documented struct (after
+// GalSim's GSParams): its default and meaning here, its name, range and unit
+// in fidelity_properties(). Each sensor carries one (its scene generator and
+// sensor model use it); it is settable as sensor properties, saved in .scd
+// and sensor files, and echoed into every output.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/value.hpp"
+
+namespace eoir {
+
+// Scene generation mode (spec 4.2): coarse gives each sample the radiance of
+// the centre of its patch dA (4.2.1); smooth evaluates each sample's own
+// surface point (4.2.2).
+enum class SceneMode : int { coarse = 0, smooth = 1 };
+// Band integration of eq. 48: on the spectral grid of spec 5.3, or exactly
+// (series integral of Planck terms, independent of the interval count).
+enum class BandIntegration : int { grid = 0, exact = 1 };
+// Where the grid samples each of its N intervals (radiometry/band_integral.hpp):
+// the midpoint (second order) or the left edge lambda_i of spec 5.3 (first order).
+enum class SpectralQuadrature : int { interval_midpoint = 0, interval_left_edge = 1 };
+
+// How far the PSF reaches in the focal plane: k_d lambda F# of diffraction
+// tail, k_j sigma of jitter (times the focal length) and k_f defocus blur
+// diameters delta / F#. An Airy pattern holds about 2 / (pi^2 k_d) of its
+// energy beyond k_d lambda F#.
+struct PsfReach {
+  double diffraction_lambda_f = 20.0;
+  double jitter_sigmas = 4.0;
+  double defocus_blur_diameters = 1.0;
+};
+
+struct Fidelity {
+  // Scene generator (spec 4.1-4.2).
+  SceneMode scene_mode = SceneMode::coarse;
+  std::int64_t samples_per_pixel = 4;  // scene samples per pixel and axis (spec 4.1.3: 4)
+  // Default patch edge where an object's patch_size_m is 0 (spec 4.1.5.2):
+  // central bodies scaled from the Earth's 785 km (spec 4.2.3), other objects
+  // their largest part's diameter divided by this.
+  double central_body_patch_size_m = 785.0e3;  // at the Earth's equatorial radius
+  double object_patch_divisions = 8.0;
+  std::int64_t temperature_table_size = 4096;  // L(T) table of smooth shading of varying surfaces
+  // Spectral (spec 5.3, eq. 48).
+  BandIntegration band_integration = BandIntegration::grid;
+  SpectralQuadrature spectral_quadrature = SpectralQuadrature::interval_midpoint;
+  // Sensor model (spec 5.6-5.11).
+  std::int64_t psf_grid_size = 512;      // FFT grid of the PSF and energy on detector (eq. 40), power of two
+  std::int64_t otf_table_size = 16384;   // radial OTF table the PSF fold interpolates (error < 1e-6)
+  std::int64_t psf_alias_margin_steps = 9;     // FFT period beyond the window, in output steps
+  double psf_fold_budget = 4194304.0;          // OTF evaluations allowed when the spectrum is folded
+  PsfReach scene_psf_reach{20.0, 4.0, 1.0};    // guard band of scene samples beyond the field (~1 % tail)
+  PsfReach point_psf_reach{500.0, 6.0, 1.0};   // window of a point source's energy on detector (~4e-4 tail)
+  double fft_padding = 1.0;  // FFT padding beyond the guard band, in guard bands
+  // Reports (spec 5.12-5.13).
+  std::int64_t otf_curve_points = 101;            // samples of the OTF/MTF report curves
+  std::int64_t target_window_max_half_samples = 64;  // extended-target window: at most (2n+1)^2 rays
+  double target_window_extent = 1.5;              // window half-width in target angular radii
+};
+
+// The knobs as named, typed properties of a Fidelity (README "Fidelity").
+const std::vector<PropertySpec<Fidelity>>& fidelity_properties();
+const std::vector<std::string>& scene_mode_names();
+const std::vector<std::string>& band_integration_names();
+const std::vector<std::string>& spectral_quadrature_names();
+
+// Throws out_of_range naming the field unless every knob is in its range
+// (and psf_grid_size a power of two).
+void validate(const Fidelity& f);
+
+}  // namespace eoir

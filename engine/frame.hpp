@@ -1,0 +1,57 @@
+// One rendered frame of a scene-generator/sensor-model pair, kept until the
+// next render of that sensor: the world it imaged, the scene generator's
+// output (spec 4.1.1) and what each sample hit (for picks, spec 6.2.1), the
+// sensor image (spec 5.11), the display images (4.1.2) and the per-frame
+// truth, frozen when it was rendered.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "metrics/target_metrics.hpp"
+#include "scene/scene_generator.hpp"
+#include "scene/world.hpp"
+#include "sensor/image_chain.hpp"
+#include "sensor/sensor_model.hpp"
+
+namespace eoir {
+
+// Wall-clock seconds spent in each stage of a render (DESIGN section 1).
+struct FrameTimings {
+  double setup_s = 0;          // the world: snapshot, culling, classification, ray caster
+  double ray_casting_s = 0;    // sample rays with the per-sample radiance lookup
+  double shading_s = 0;        // point sources: placement, occlusion, irradiance
+  double convolution_s = 0;    // OTF convolution by FFT and pixel integration (eq. 49)
+  double point_sources_s = 0;  // energy on detector (eqs. 50-51)
+  double noise_s = 0;          // noise and saturation (eqs. 53-55)
+  double display_s = 0;        // display compression (4.1.2)
+  double truth_s = 0;          // target metrics of the objects in the field
+  std::size_t rays = 0;
+  double total_s() const {
+    return setup_s + ray_casting_s + shading_s + convolution_s + point_sources_s + noise_s + display_s + truth_s;
+  }
+};
+
+// The target metrics of one object in the field (central bodies are
+// backgrounds, not targets).
+struct TruthEntry {
+  std::string object;
+  metrics::TargetMetrics metrics;
+};
+
+struct Frame {
+  std::shared_ptr<const scene::World> world;
+  std::shared_ptr<const sensor::SensorModel> sensor_model;
+  scene::SceneImage scene;
+  sensor::SensorImage sensor;
+  std::vector<std::uint8_t> scene_display;   // samples of the field of view
+  std::vector<std::uint8_t> sensor_display;  // pixels
+  std::vector<TruthEntry> truth;
+  FrameTimings timings;
+
+  const EngineTime& time() const { return world->time; }
+  const geometry::SampleGrid& grid() const { return scene.image.grid; }
+};
+
+}  // namespace eoir

@@ -1,0 +1,27 @@
+// The interface between the scene generator and the sensor model (spec 4.1.1,
+// 4.1.6.1): the effective radiance of every angular sample of the sensor's
+// grid and the list of point sources kept apart from it. The scene generator
+// writes it; the sensor model reads nothing else of the scene.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "geometry/sample_grid.hpp"
+
+namespace eoir::radiometry {
+
+// An object smaller than a scene sample (spec 4.1.6.1), kept apart from the
+// sample grid at its exact focal-plane position.
+struct PointSource {
+  std::int32_t object_id = -1;
+  double column = 0, row = 0;   // fractional sample coordinates in the full grid
+  double irradiance_W_cm2 = 0;  // band-integrated at the aperture (eq. 52)
+};
+
+struct RadianceImage {
+  geometry::SampleGrid grid;
+  std::vector<double> radiance_W_cm2_sr;  // effective radiance (eq. 48) per sample, full grid incl. guard, row-major
+  std::vector<PointSource> point_sources;  // inside the field of view
+};
+
+}  // namespace eoir::radiometry

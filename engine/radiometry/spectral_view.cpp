@@ -1,0 +1,37 @@
+#include "radiometry/spectral_view.hpp"
+
+#include "radiometry/planck.hpp"
+
+namespace eoir::radiometry {
+
+SpectralView SpectralView::make(double low_um, double high_um, std::int64_t intervals, BandIntegration integration,
+                                SpectralQuadrature quadrature) {
+  SpectralView v;
+  v.band = SpectralBand{low_um, high_um, intervals};
+  v.band.validate();
+  v.integration = integration;
+  v.quadrature = quadrature;
+  v.sample_wavelengths_um = v.band.sample_wavelengths_um(quadrature);
+  return v;
+}
+
+double SpectralView::integrate(const std::vector<double>& spectral_values) const {
+  return integrate_spectral_samples(band, spectral_values);
+}
+
+std::vector<double> SpectralView::gray_body_spectrum(double temperature_K, double reflectance) const {
+  const double emissivity = emissivity_from_reflectance(reflectance);
+  std::vector<double> out(sample_wavelengths_um.size());
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = emissivity * planck_radiance(sample_wavelengths_um[i], temperature_K);
+  return out;
+}
+
+double SpectralView::gray_body_radiance(double temperature_K, double reflectance) const {
+  if (integration == BandIntegration::exact)
+    return gray_body_band_radiance(emissivity_from_reflectance(reflectance), temperature_K, band.low_um,
+                                   band.high_um);
+  return integrate(gray_body_spectrum(temperature_K, reflectance));
+}
+
+}  // namespace eoir::radiometry

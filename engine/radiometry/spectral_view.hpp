@@ -1,0 +1,30 @@
+// The sensor's spectral view (spec 4.1.1, 5.3): the band, the N wavelengths
+// at which the scene generator evaluates its spectral radiance vectors, and
+// how it integrates them over the band (eq. 48, RSR = 1 in band).
+#pragma once
+#include <vector>
+
+#include "core/fidelity.hpp"
+#include "radiometry/band_integral.hpp"
+
+namespace eoir::radiometry {
+
+struct SpectralView {
+  SpectralBand band;
+  BandIntegration integration = BandIntegration::grid;
+  SpectralQuadrature quadrature = SpectralQuadrature::interval_midpoint;
+  std::vector<double> sample_wavelengths_um;  // where spectral vectors are evaluated
+
+  // Validates the band (throws eoir::Error naming the field).
+  static SpectralView make(double low_um, double high_um, std::int64_t intervals, BandIntegration integration,
+                           SpectralQuadrature quadrature);
+  // Band integral (eq. 48) of a spectral vector sampled at sample_wavelengths_um.
+  double integrate(const std::vector<double>& spectral_values) const;
+  // eps B_lambda(T) of an opaque gray body of reflectance `reflectance`
+  // (eq. 4's self-emission, emissivity 1 - SRF, spec 4.1.4.1): the spectral
+  // vector, and its band integral (exact when the view says so).
+  std::vector<double> gray_body_spectrum(double temperature_K, double reflectance) const;
+  double gray_body_radiance(double temperature_K, double reflectance) const;
+};
+
+}  // namespace eoir::radiometry

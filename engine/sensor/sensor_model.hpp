@@ -1,0 +1,36 @@
+// One sensor model resolved from its parameters (spec 5), once per change of
+// them: validated in one place (universe::validate), its optics (eqs. 33-39),
+// static metrics (Table 1), spectral view (5.3) and the sample grid it asks
+// the scene generator to fill (4.1.3, 5.2) with a guard band as wide as its
+// PSF reaches.
+#pragma once
+#include <memory>
+
+#include "core/fidelity.hpp"
+#include "geometry/sample_grid.hpp"
+#include "radiometry/spectral_view.hpp"
+#include "sensor/otf.hpp"
+#include "sensor/static_metrics.hpp"
+#include "universe/sensor_parameters.hpp"
+
+namespace eoir::sensor {
+
+struct SensorModel {
+  universe::SensorParameters parameters;
+  OpticsModel optics;
+  StaticMetrics metrics;
+  radiometry::SpectralView spectral;
+  geometry::SampleGrid grid;
+  const Fidelity& fidelity() const { return parameters.fidelity; }
+};
+
+// Throws eoir::Error naming the field of an invalid parameter.
+std::shared_ptr<const SensorModel> resolve_sensor(const universe::SensorParameters& p);
+
+// How far the PSF reaches in the focal plane (cm): k_d lambda F# of
+// diffraction tail, k_j sigma f of jitter and k_f delta / F# of defocus blur
+// (core/fidelity.hpp PsfReach). The one formula behind the scene's guard band
+// and the point-source window.
+double psf_reach_cm(const OpticsModel& optics, const PsfReach& reach);
+
+}  // namespace eoir::sensor

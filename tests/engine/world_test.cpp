@@ -1,0 +1,180 @@
+// One world per (sensor, time) (DESIGN section 1): the image, per-frame truth
+// and target metrics read the same world, built once; and the defects found
+// when the scene had three copies of it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "engine.hpp"
+
+namespace {
+using eoir::Engine;
+using eoir::Value;
+using eoir::universe::ObjectKind;
+
+const double identity[4] = {1, 0, 0, 0};
+const double zero[3] = {0, 0, 0};
+
+// An Earth-pointing sensor on a host at GEO radius on +x J2000, 24 deg field,
+// 64 x 64 pixels, 8-12 um, noise and saturation off.
+std::unique_ptr<Engine> geo_engine() {
+  auto e = std::make_unique<Engine>();
+  e->set_time(eoir::EngineTime::from(eoir::utc_from_iso("2010-03-30T02:25:00Z")));
+  e->add_object(ObjectKind::central_body, "Earth");
+  e->add_object(ObjectKind::satellite, "Host");
+  e->set_property("Host", "shape", Value(std::string("none")));
+  const double host[3] = {42164.2e3, 0, 0};
+  e->push_state("Host", e->time(), 0, host, zero, identity);
+  e->add_sensor("Sensor", "Host");
+  for (const char* p : {"horizontal_pixels", "vertical_pixels"}) e->set_property("Sensor", p, Value(std::int64_t{64}));
+  for (const char* p : {"horizontal_fov_deg", "vertical_fov_deg"}) e->set_property("Sensor", p, Value(24.0));
+  e->set_property("Sensor", "band_low_um", Value(8.0));
+  e->set_property("Sensor", "band_high_um", Value(12.0));
+  e->set_property("Sensor", "focal_length_cm", Value(10.0));
+  e->set_property("Sensor", "diffraction_wavelength_um", Value(10.0));
+  e->set_property("Sensor", "noise_enabled", Value(false));
+  e->set_property("Sensor", "saturation_enabled", Value(false));  // the 300 K Earth saturates the default SEI
+  // Body +z toward -x J2000 (the Earth's centre).
+  const double look[4] = {std::sqrt(0.5), 0, -std::sqrt(0.5), 0};
+  e->push_state("Sensor", e->time(), 0, zero, zero, look);
+  return e;
+}
+
+void add_sphere(Engine& e, const std::string& name, double radius_m, const double position_m[3]) {
+  e.add_object(ObjectKind::satellite, name);
+  e.set_property(name, "dimensions_m", Value(std::vector<double>{radius_m}));
+  e.set_property(name, "temperature_K", Value(350.0));  // the Earth is at 300 K
+  e.push_state(name, e.time(), 0, position_m, zero, identity);
+}
+}  // namespace
+
+TEST(World, BuiltOncePerRenderAndReusedByTruthAndTargetMetrics) {
+  auto e = geo_engine();
+  const double p1[3] = {20000e3, 1000e3, 0}, p2[3] = {20000e3, -1000e3, 500e3}, p3[3] = {15000e3, 0, -800e3};
+  add_sphere(*e, "A", 1.0, p1);
+  add_sphere(*e, "B", 2.0, p2);
+  add_sphere(*e, "C", 3.0, p3);
+  const auto before = e->world_builds();
+  const eoir::Frame& f = e->render("Sensor");
+  EXPECT_EQ(e->world_builds(), before + 1);
+  EXPECT_EQ(f.truth.size(), 3u);  // the three satellites, each with its target metrics from that world
+  for (const char* t : {"A", "B", "C"}) EXPECT_GT(e->target_metrics("Sensor", t).snr, 0.0) << t;
+  EXPECT_GT(e->provider("EOIR Sensor-to-Target Metrics", "Range to Target", "Sensor", "A").number, 0.0);
+  EXPECT_EQ(e->world_builds(), before + 1) << "truth and target metrics must reuse the render's world";
+  e->render("Sensor");
+  EXPECT_EQ(e->world_builds(), before + 1) << "nothing changed: the same world";
+  e->set_time(e->time().plus_seconds(1.0));
+  e->target_metrics("Sensor", "A");
+  e->render("Sensor");
+  EXPECT_EQ(e->world_builds(), before + 2) << "a new time: one new world for metrics and image";
+  e->set_property("C", "temperature_K", Value(310.0));
+  e->render("Sensor");
+  EXPECT_EQ(e->world_builds(), before + 3);
+  // The frame keeps its own world: later changes do not reach it.
+  EXPECT_EQ(f.world->find("C")->surface->part(0).temperature_K, 350.0);
+}
+
+// Review defect: a point source hidden behind another object was drawn (no
+// occlusion test in the point-source branch). A 1 m sphere behind the Earth
+// is not imaged and its truth says hidden; in front of the Earth it is.
+TEST(World, PointSourceBehindTheEarthIsNotImaged) {
+  auto hidden = geo_engine();
+  const double behind[3] = {-8000e3, 100e3, 0};
+  add_sphere(*hidden, "Sat", 1.0, behind);
+  const eoir::Frame& h = hidden->render("Sensor");
+  EXPECT_TRUE(h.scene.image.point_sources.empty());
+  ASSERT_EQ(h.truth.size(), 1u);
+  EXPECT_FALSE(h.truth[0].metrics.visible);
+  EXPECT_EQ(h.truth[0].metrics.snr, 0.0);
+
+  auto seen = geo_engine();
+  const double in_front[3] = {8000e3, 100e3, 0};
+  add_sphere(*seen, "Sat", 1.0, in_front);
+  const eoir::Frame& s = seen->render("Sensor");
+  ASSERT_EQ(s.scene.image.point_sources.size(), 1u);
+  EXPECT_GT(s.scene.image.point_sources[0].irradiance_W_cm2, 0.0);
+  EXPECT_TRUE(s.truth[0].metrics.visible);
+  // The hidden satellite adds nothing to the image: identical to the Earth alone.
+  auto alone = geo_engine();
+  EXPECT_EQ(alone->render("Sensor").sensor.mean_electrons, h.sensor.mean_electrons);
+}
+
+// Review defect: visibility was one ray to the object's origin, so a
+// composite whose origin is empty space (two spheres 20 m apart) was
+// reported hidden with SNR 0.
+TEST(World, CompositeWithAnEmptyOriginIsVisible) {
+  auto e = geo_engine();
+  e->add_object(ObjectKind::satellite, "Pair");
+  e->set_property("Pair", "shape", Value(std::string("composite")));
+  e->set_property("Pair", "composite",
+                  Value(std::string(R"([{"shape": "sphere", "dimensions_m": [1], "offset_m": [0, 10, 0]},
+                                        {"shape": "sphere", "dimensions_m": [1], "offset_m": [0, -10, 0]}])")));
+  e->set_property("Pair", "temperature_K", Value(350.0));
+  const double pos[3] = {42164.2e3 - 50e3, 0, 0};  // 50 km in front of the sensor, against the Earth's disc
+  e->push_state("Pair", e->time(), 0, pos, zero, identity);
+  const eoir::metrics::TargetMetrics& t = e->target_metrics("Sensor", "Pair");
+  EXPECT_TRUE(t.in_field);
+  EXPECT_TRUE(t.visible);
+  EXPECT_GT(t.snr, 0.0);
+  const eoir::Frame& f = e->render("Sensor");
+  ASSERT_EQ(f.truth.size(), 1u);
+  EXPECT_TRUE(f.truth[0].metrics.visible);
+}
+
+// Picks read the frame's world: the same radiance the image holds, the
+// surface it came from, the sky's RA/Dec elsewhere.
+TEST(World, PicksReadTheFramesWorld) {
+  auto e = geo_engine();
+  const eoir::Frame& f = e->render("Sensor");
+  const eoir::scene::Pick centre = e->pick("Sensor", 1, 32, 32);
+  EXPECT_TRUE(centre.hit);
+  EXPECT_EQ(centre.object, "Earth");
+  EXPECT_TRUE(centre.has_geodetic);
+  const auto& g = f.grid();
+  const std::int64_t c = 32 * g.per_pixel + g.per_pixel / 2 + g.guard_samples();
+  EXPECT_EQ(centre.effective_radiance_W_cm2_sr,
+            f.scene.image.radiance_W_cm2_sr[static_cast<std::size_t>(c * g.width() + c)]);
+  // The spectral vector integrates to the image's sample (one radiance path).
+  EXPECT_NEAR(f.world->spectral().integrate(centre.spectral_radiance_W_cm2_sr_um), centre.effective_radiance_W_cm2_sr,
+              1e-12 * centre.effective_radiance_W_cm2_sr);
+  const eoir::scene::Pick corner = e->pick("Sensor", 1, 0, 0);
+  EXPECT_FALSE(corner.hit);
+  EXPECT_EQ(corner.range_m, eoir::geometry::sky_range_m);
+}
+
+// Cancellation from the host's progress callback leaves the last frame.
+TEST(World, ProgressReportsAndCancels) {
+  std::vector<double> fractions;
+  bool cancel = false;
+  eoir::EngineOptions options;
+  options.progress = [&](double fraction, const std::string& what) {
+    EXPECT_EQ(what, "render");
+    fractions.push_back(fraction);
+    return !(cancel && fraction > 0.5);
+  };
+  auto base = geo_engine();
+  Engine e(options);
+  e.set_time(base->time());
+  e.add_object(ObjectKind::central_body, "Earth");
+  e.add_object(ObjectKind::satellite, "Host");
+  e.set_property("Host", "shape", Value(std::string("none")));
+  const double host[3] = {42164.2e3, 0, 0};
+  e.push_state("Host", e.time(), 0, host, zero, identity);
+  e.add_sensor("Sensor", "Host");
+  e.render("Sensor");
+  ASSERT_GE(fractions.size(), 3u);
+  EXPECT_EQ(fractions.front(), 0.0);
+  EXPECT_EQ(fractions.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  const eoir::Frame* first = &e.frame("Sensor");
+  cancel = true;
+  e.set_time(e.time().plus_seconds(60));
+  try {
+    e.render("Sensor");
+    FAIL() << "not cancelled";
+  } catch (const eoir::Error& err) {
+    EXPECT_EQ(err.status(), eoir::Status::cancelled);
+  }
+  EXPECT_EQ(&e.frame("Sensor"), first);
+}

@@ -57,6 +57,7 @@ TEST(World, BuiltOncePerRenderAndReusedByTruthAndTargetMetrics) {
   add_sphere(*e, "C", 3.0, p3);
   const auto before = e->world_builds();
   const eoir::Frame& f = e->render("Sensor");
+  const std::shared_ptr<const eoir::scene::World> first_world = f.world;  // the frame itself goes with the next render
   EXPECT_EQ(e->world_builds(), before + 1);
   EXPECT_EQ(f.truth.size(), 3u);  // the three satellites, each with its target metrics from that world
   for (const char* t : {"A", "B", "C"}) EXPECT_GT(e->target_metrics("Sensor", t).snr, 0.0) << t;
@@ -71,8 +72,9 @@ TEST(World, BuiltOncePerRenderAndReusedByTruthAndTargetMetrics) {
   e->set_property("C", "temperature_K", Value(310.0));
   e->render("Sensor");
   EXPECT_EQ(e->world_builds(), before + 3);
-  // The frame keeps its own world: later changes do not reach it.
-  EXPECT_EQ(f.world->find("C")->surface->part(0).temperature_K, 350.0);
+  // A world is a snapshot: later changes do not reach it.
+  EXPECT_EQ(first_world->find("C")->surface->part(0).temperature_K, 350.0);
+  EXPECT_EQ(e->world("Sensor")->find("C")->surface->part(0).temperature_K, 310.0);
 }
 
 // Review defect: a point source hidden behind another object was drawn (no

@@ -13,6 +13,7 @@ import os
 import numpy as np
 
 GRID_ID = "eoir-grid-1"
+_trapz = getattr(np, "trapezoid", None) or np.trapz  # numpy 2 renamed trapz
 
 
 def common_grid():
@@ -129,4 +130,4 @@ def planck_um(wl_um, temperature_k):
 
 
 def band_mean(grid, values, weight):
-    return float(np.trapz(values * weight, grid) / np.trapz(weight, grid))
+    return float(_trapz(values * weight, grid) / _trapz(weight, grid))

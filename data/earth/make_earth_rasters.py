@@ -243,7 +243,8 @@ def main():
                     wr.close()
         rule = ("GSHHG land/water at the cell centre" if lvl == "L2" else
                 "majority of the 30-arcsec cells of the block (land if >= 1/2 land)")
-        level_entry = {"level": lvl, "cell_deg": cell, "cell_km_equator": round(cell * 111.32, 3)}
+        level_entry = {"level": lvl, "cell_deg": cell, "cells_per_degree": per_deg,
+                       "cell_km_equator": round(cell * 111.32, 3), "encoding": enc}
         for kind, classes, src in (
                 ("landmask", MASK_CLASSES, src_mask + "; " + rule),
                 ("landcover", {str(k): v for k, v in IGBP.items()}, src_cover + "; land/water: " + rule)):

@@ -21,7 +21,7 @@ TEST(StellarPhotometry, BallesterosTemperatureFromBV) {
   EXPECT_NEAR(r::temperature_from_b_v(0.65), 5778.4, 0.1);
   EXPECT_NEAR(r::temperature_from_b_v(0.0), 10125.3, 0.1);
   EXPECT_NEAR(r::temperature_from_b_v(1.0), 4742.7, 0.1);   // Pollux-like K0 III
-  EXPECT_NEAR(r::temperature_from_b_v(1.5), 3902.0, 1.0);
+  EXPECT_NEAR(r::temperature_from_b_v(1.5), 3793.5, 0.1);   // M0-like
   // The closed-form inverse of eq. 14 (the quadratic in B-V) recovers B-V.
   for (double bv = -0.3; bv <= 1.95; bv += 0.05) {
     const double d = r::temperature_from_b_v(bv) / 4600.0;
@@ -63,7 +63,7 @@ TEST(StellarPhotometry, VZeroGivesTheBesselZeroPoint) {
 
 TEST(StellarPhotometry, BessellVResponse) {
   EXPECT_DOUBLE_EQ(r::bessell_v_response(0.53), 1.0);
-  EXPECT_DOUBLE_EQ(r::bessell_v_response(0.50), 0.458);
+  EXPECT_NEAR(r::bessell_v_response(0.50), 0.458, 1e-12);
   EXPECT_NEAR(r::bessell_v_response(0.505), 0.5 * (0.458 + 0.780), 1e-12);
   EXPECT_DOUBLE_EQ(r::bessell_v_response(0.46), 0.0);
   EXPECT_DOUBLE_EQ(r::bessell_v_response(0.71), 0.0);

@@ -20,7 +20,7 @@
 //    Bessell (1990, PASP 102, 1181, Table 2) V response S (energy-weighted,
 //    <f> = int f S dl / int S dl, as BCP98 define synthetic magnitudes) equals
 //    3.631e-12 * 10^(-0.4 V). For a 10125 K (B-V = 0) star this puts
-//    E(0.55 um) 1-2 % below 3.631e-12 (a blackbody is not Vega); for cool
+//    E(0.55 um) 0.6 % below 3.631e-12 (3.611e-12; a blackbody is not Vega); for cool
 //    stars it is the better choice because the effective wavelength of V
 //    moves redwards.
 #pragma once

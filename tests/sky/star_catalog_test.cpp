@@ -1,0 +1,176 @@
+// Star catalogue: the converted Hipparcos/Tycho catalogue (data/stars), the
+// user CSV catalogue and its validation, selection by limiting magnitude.
+#include "universe/star_catalog.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace u = eoir::universe;
+
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+std::string write_file(const std::string& name, const std::string& text) {
+  const std::string path = "sky_test_" + name + ".csv";
+  std::ofstream(path) << text;
+  return path;
+}
+
+const std::string kHeader = "id,ra_deg,dec_deg,pm_ra_mas_yr,pm_dec_mas_yr,parallax_mas,v_mag,b_v\n";
+
+// Loads a CSV that must fail; returns the message after checking the status.
+std::string failure_of(const std::string& name, const std::string& text) {
+  const std::string path = write_file(name, text);
+  try {
+    u::StarCatalog::load_csv(path);
+  } catch (const eoir::Error& e) {
+    EXPECT_EQ(e.status(), eoir::Status::corrupt_file) << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << name << ": no error";
+  return {};
+}
+
+bool have_binary_catalogue() { return std::ifstream(EOIR_STAR_CATALOGUE_PATH).good(); }
+
+}  // namespace
+
+TEST(StarCatalogBinary, HipparcosTychoFromKStars) {
+  if (!have_binary_catalogue()) GTEST_SKIP() << EOIR_STAR_CATALOGUE_PATH << " not built (kstars-data missing)";
+  const auto catalogue = u::StarCatalog::load_binary(EOIR_STAR_CATALOGUE_PATH);
+  EXPECT_EQ(catalogue.size(), 125982u);
+  EXPECT_DOUBLE_EQ(catalogue.epoch_julian_year(), 2000.0);
+  EXPECT_NEAR(catalogue.brightest_v_mag(), -1.44, 1e-6);  // Sirius (Hipparcos V)
+  EXPECT_NEAR(catalogue.faintest_v_mag(), 8.99, 1e-6);
+  EXPECT_NE(catalogue.source().find("kstars-data"), std::string::npos);
+  EXPECT_NE(catalogue.source().find("stars.dat"), std::string::npos);
+  // Pollux: 07 45 18.95 +28 01 34.3 (J2000), pm -625.7 / -46.0 mas/yr, plx 96.7 mas, V 1.16, B-V 0.99.
+  const u::CatalogStar* pollux = nullptr;
+  for (const auto& s : catalogue.stars())
+    if (s.name == "bet Gem|Pollux") pollux = &s;
+  ASSERT_NE(pollux, nullptr);
+  EXPECT_NEAR(pollux->ra_rad, (7.0 + 45.0 / 60.0 + 18.95 / 3600.0) * 15.0 * kDeg, 1e-9);
+  EXPECT_NEAR(pollux->dec_rad, (28.0 + 1.0 / 60.0 + 34.3 / 3600.0) * kDeg, 1e-9);
+  EXPECT_NEAR(pollux->pm_ra_cosdec_mas_per_yr, -625.7, 1e-3);
+  EXPECT_NEAR(pollux->pm_dec_mas_per_yr, -46.0, 1e-3);
+  EXPECT_NEAR(pollux->parallax_mas, 96.7, 1e-3);
+  EXPECT_NEAR(pollux->v_mag, 1.16, 1e-6);
+  EXPECT_NEAR(pollux->b_v_mag, 0.99, 1e-6);
+  EXPECT_EQ(catalogue.stars().front().id, "HT1");
+}
+
+TEST(StarCatalogBinary, LoadsInUnder50Milliseconds) {
+  if (!have_binary_catalogue()) GTEST_SKIP() << "catalogue not built";
+  double best_ms = 1e9;
+  for (int i = 0; i < 3; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto catalogue = u::StarCatalog::load_binary(EOIR_STAR_CATALOGUE_PATH);
+    const auto t1 = std::chrono::steady_clock::now();
+    ASSERT_EQ(catalogue.size(), 125982u);
+    best_ms = std::min(best_ms, std::chrono::duration<double, std::milli>(t1 - t0).count());
+  }
+  RecordProperty("load_ms", std::to_string(best_ms));
+  std::printf("binary catalogue load: %.1f ms (best of 3)\n", best_ms);
+  EXPECT_LT(best_ms, 50.0);
+}
+
+TEST(StarCatalogBinary, SelectionBeyondTheFaintestStarIsReported) {
+  if (!have_binary_catalogue()) GTEST_SKIP() << "catalogue not built";
+  const auto catalogue = u::StarCatalog::load_binary(EOIR_STAR_CATALOGUE_PATH);
+  const auto bright = catalogue.select_brighter_than(2.0);
+  EXPECT_FALSE(bright.limit_beyond_catalogue);
+  EXPECT_TRUE(bright.warning.empty());
+  for (auto i : bright.indices) EXPECT_LE(catalogue.stars()[i].v_mag, 2.0);
+  EXPECT_GT(bright.indices.size(), 40u);
+  EXPECT_LT(bright.indices.size(), 60u);
+  const auto deep = catalogue.select_brighter_than(12.0);
+  EXPECT_TRUE(deep.limit_beyond_catalogue);
+  EXPECT_EQ(deep.indices.size(), catalogue.size());
+  EXPECT_NE(deep.warning.find("fainter than the faintest star"), std::string::npos) << deep.warning;
+}
+
+TEST(StarCatalogBinary, CorruptFilesNameTheField) {
+  auto expect_status = [](const std::string& name, const std::string& bytes, eoir::Status status,
+                          const std::string& field) {
+    const std::string path = "sky_test_" + name + ".eoirstars";
+    std::ofstream(path, std::ios::binary) << bytes;
+    try {
+      u::StarCatalog::load_binary(path);
+      ADD_FAILURE() << name << ": no error";
+    } catch (const eoir::Error& e) {
+      EXPECT_EQ(e.status(), status) << e.what();
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  expect_status("short", "EOIRST", eoir::Status::corrupt_file, "header");
+  expect_status("magic", std::string(64, 'x'), eoir::Status::corrupt_file, "magic");
+  std::string header(56, '\0');
+  header.replace(0, 8, "EOIRSTAR");
+  header[8] = 2;  // format_version 2
+  expect_status("version", header, eoir::Status::file_version, "format_version");
+  EXPECT_THROW(u::StarCatalog::load_binary("no/such/file.eoirstars"), eoir::Error);
+  if (have_binary_catalogue()) {
+    std::ifstream in(EOIR_STAR_CATALOGUE_PATH, std::ios::binary);
+    std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    expect_status("truncated", all.substr(0, all.size() - 100), eoir::Status::corrupt_file, "star_count");
+  }
+}
+
+TEST(StarCatalogCsv, LoadsAUserCatalogue) {
+  const std::string path = write_file("good", "# a comment\n" + kHeader +
+                                                  "barnard,269.452076,4.693364,-798.58,10328.12,548.31,9.54,1.57\n"
+                                                  "\n"
+                                                  "vega, 279.234735, 38.783689, 200.94, 286.23, 130.23, 0.03, 0.00\n");
+  const auto catalogue = u::StarCatalog::load_csv(path);
+  ASSERT_EQ(catalogue.size(), 2u);
+  EXPECT_EQ(catalogue.stars()[1].id, "vega");
+  EXPECT_NEAR(catalogue.stars()[0].ra_rad, 269.452076 * kDeg, 1e-15);
+  EXPECT_DOUBLE_EQ(catalogue.stars()[0].pm_dec_mas_per_yr, 10328.12);
+  EXPECT_DOUBLE_EQ(catalogue.brightest_v_mag(), 0.03);
+  EXPECT_DOUBLE_EQ(catalogue.faintest_v_mag(), 9.54);
+  // Unsorted catalogue: selection scans.
+  const auto sel = catalogue.select_brighter_than(1.0);
+  ASSERT_EQ(sel.indices.size(), 1u);
+  EXPECT_EQ(sel.indices[0], 1u);
+  // Columns in another order, extra columns ignored.
+  const auto reordered = u::StarCatalog::load_csv(
+      write_file("reordered", "name,v_mag,b_v,id,parallax_mas,pm_dec_mas_yr,pm_ra_mas_yr,dec_deg,ra_deg\n"
+                              "Vega,0.03,0.0,HIP91262,130.23,286.23,200.94,38.783689,279.234735\n"));
+  EXPECT_EQ(reordered.stars()[0].id, "HIP91262");
+  EXPECT_DOUBLE_EQ(reordered.stars()[0].pm_ra_cosdec_mas_per_yr, 200.94);
+}
+
+TEST(StarCatalogCsv, BadInputNamesFileLineAndField) {
+  auto check = [](const std::string& name, const std::string& text, const std::string& where_field) {
+    const std::string message = failure_of(name, text);
+    EXPECT_NE(message.find("sky_test_" + name + ".csv:" + where_field), std::string::npos) << message;
+  };
+  check("missing_column", "id,ra_deg,dec_deg,pm_ra_mas_yr,pm_dec_mas_yr,v_mag,b_v\n", "1: parallax_mas: missing");
+  check("nan", kHeader + "a,10,10,0,0,1,NaN,0.5\n", "2: v_mag: 'NaN' is not a finite number");
+  check("inf", kHeader + "a,10,10,0,0,inf,5,0.5\n", "2: parallax_mas: 'inf' is not a finite number");
+  check("unparsable", kHeader + "a,10,10,0,0,1,5,0.5\nb,12.5x,10,0,0,1,5,0.5\n", "3: ra_deg: '12.5x' is not a number");
+  check("empty_field", kHeader + "a,10,,0,0,1,5,0.5\n", "2: dec_deg: empty");
+  check("mag_range", kHeader + "a,10,10,0,0,1,31,0.5\n", "2: v_mag: 31 outside [-30, 30]");
+  check("bv_range", kHeader + "a,10,10,0,0,1,5,7\n", "2: b_v: 7 outside [-1, 6]");
+  check("dec_range", kHeader + "a,10,91,0,0,1,5,0.5\n", "2: dec_deg: 91 outside");
+  check("ra_360", kHeader + "a,360,10,0,0,1,5,0.5\n", "2: ra_deg: must be < 360");
+  check("negative_parallax", kHeader + "a,10,10,0,0,-1,5,0.5\n", "2: parallax_mas: -1 outside");
+  check("duplicate", kHeader + "a,10,10,0,0,1,5,0.5\n# x\na,11,10,0,0,1,5,0.5\n", "4: id: 'a' duplicates line 2");
+  check("field_count", kHeader + "a,10,10,0,0,1,5\n", "2: line: 7 fields, the header has 8");
+  check("no_header", "# nothing\n", "1: header");
+  try {
+    u::StarCatalog::load_csv("no/such/catalogue.csv");
+    ADD_FAILURE();
+  } catch (const eoir::Error& e) {
+    EXPECT_EQ(e.status(), eoir::Status::io);
+  }
+  EXPECT_THROW(u::StarCatalog::load_csv(write_file("ok1", kHeader)).select_brighter_than(std::nan("")), eoir::Error);
+}

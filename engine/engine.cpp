@@ -5,7 +5,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/data_dir.hpp"
 #include "core/error.hpp"
+#include "universe/composite.hpp"
 #include "sensor/display.hpp"
 #include "universe/object_motion.hpp"
 #include "universe/object_properties.hpp"
@@ -78,7 +80,55 @@ void Engine::restore_state(const std::string& name, const universe::PushedState&
 }
 
 void Engine::set_property(const std::string& object, const std::string& property, const Value& value) {
-  universe::set_property(universe_.get(object, "object"), property, value);
+  universe::Object& o = universe_.get(object, "object");
+  // Names the universe cannot check alone: materials and spectra.
+  if (property == "material" && std::holds_alternative<std::string>(value))
+    library().materials.get(std::get<std::string>(value), "material");
+  if (property == "spectrum" && std::holds_alternative<std::string>(value)) {
+    const std::string& name = std::get<std::string>(value);
+    if (!name.empty() && !library().spectra.find(name))
+      throw Error(Status::unknown_name, "spectrum: no spectrum named '" + name + "' in the spectrum table");
+  }
+  if (property == "composite" && std::holds_alternative<std::string>(value)) {
+    const auto parts = universe::parse_composite(std::get<std::string>(value), "composite");
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      if (parts[i].material)
+        library().materials.get(*parts[i].material, "composite[" + std::to_string(i) + "].material");
+  }
+  universe::set_property(o, property, value);
+  changed();
+}
+
+const universe::Library& Engine::library() {
+  if (!library_) {
+    auto lib = std::make_shared<universe::Library>(universe::Library::load(resolve_data_dir(options_.data_dir)));
+    for (const auto& m : user_materials_) lib->materials.add(m);
+    for (const auto& sp : user_spectra_) lib->spectra.add(sp);
+    library_ = lib;
+  }
+  return *library_;
+}
+
+void Engine::add_material(const universe::Material& material) {
+  universe::validate(material.brdf, material.name + ".brdf");
+  auto lib = std::make_shared<universe::Library>(library());
+  lib->materials.add(material);
+  library_ = lib;
+  user_materials_.erase(std::remove_if(user_materials_.begin(), user_materials_.end(),
+                                       [&](const universe::Material& m) { return m.name == material.name; }),
+                        user_materials_.end());
+  user_materials_.push_back(material);
+  changed();
+}
+
+void Engine::add_spectrum(const universe::NamedSpectrum& spectrum) {
+  auto lib = std::make_shared<universe::Library>(library());
+  lib->spectra.add(spectrum);
+  library_ = lib;
+  user_spectra_.erase(std::remove_if(user_spectra_.begin(), user_spectra_.end(),
+                                     [&](const universe::NamedSpectrum& x) { return x.name == spectrum.name; }),
+                      user_spectra_.end());
+  user_spectra_.push_back(spectrum);
   changed();
 }
 
@@ -104,7 +154,7 @@ std::shared_ptr<const scene::World> Engine::world(const std::string& sensor) {
   const auto model = sensor_model(sensor);
   auto it = worlds_.find(sensor);
   if (it != worlds_.end() && it->second.revision == revision_ && it->second.time == time_) return it->second.world;
-  auto w = scene::build_world(universe_, time_, universe_.sensor(sensor),
+  auto w = scene::build_world(universe_, library(), time_, universe_.sensor(sensor),
                               scene::ViewDefinition{model->grid, model->spectral, model->fidelity()});
   ++world_builds_;
   worlds_[sensor] = CachedWorld{revision_, time_, w};

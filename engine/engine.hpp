@@ -17,6 +17,7 @@
 #include "frame.hpp"
 #include "metrics/provider_groups.hpp"
 #include "scene/pick.hpp"
+#include "universe/library.hpp"
 #include "universe/universe.hpp"
 
 namespace eoir {
@@ -24,6 +25,7 @@ namespace eoir {
 struct EngineOptions {
   std::uint32_t threads = 0;  // 0 = all cores
   std::uint64_t seed = 1;
+  std::string data_dir;       // the data folder; "" = core/data_dir.hpp's search
   // Called between the stages of long work with its completed fraction in
   // [0, 1]; returning false cancels it (Error(Status::cancelled)). May be empty.
   std::function<bool(double fraction, const std::string& what)> progress;
@@ -54,6 +56,15 @@ class Engine {
   void restore_state(const std::string& name, const universe::PushedState& state);
   void set_property(const std::string& object, const std::string& property, const Value& value);
   void set_sensor_parameters(const std::string& sensor, const universe::SensorParameters& parameters);
+  // The user's materials and tabulated spectra (added to or replacing the
+  // data folder's; saved with the state).
+  void add_material(const universe::Material& material);
+  void add_spectrum(const universe::NamedSpectrum& spectrum);
+  const std::vector<universe::Material>& user_materials() const { return user_materials_; }
+  const std::vector<universe::NamedSpectrum>& user_spectra() const { return user_spectra_; }
+  // The materials and spectra (loaded from the data folder on first use;
+  // throws io naming the folder if it is missing).
+  const universe::Library& library();
   void set_noise_rng(const std::mt19937_64& rng) { noise_rng_ = rng; }
 
   // ---- derived results, cached until what they depend on changes
@@ -111,6 +122,9 @@ class Engine {
   std::map<std::string, CachedWorld> worlds_;
   std::map<std::pair<std::string, std::string>, metrics::TargetMetrics> target_cache_;  // at revision_ and time_
   std::map<std::string, std::shared_ptr<const Frame>> frames_;
+  std::shared_ptr<universe::Library> library_;  // loaded on first use
+  std::vector<universe::Material> user_materials_;
+  std::vector<universe::NamedSpectrum> user_spectra_;
 };
 
 }  // namespace eoir

@@ -46,6 +46,11 @@ const std::vector<Spec>& fidelity_properties() {
     t.push_back(integer_property<F>("temperature_table_size", "count",
                                     "Entries of the L(T) table of smooth shading where the temperature varies",
                                     [](F& f) -> auto& { return f.temperature_table_size; }, Range{2, 1 << 20}, true));
+    t.push_back(number_property<F>("area_source_solid_angle_sr", "sr",
+                                   "Illuminating objects looking larger than this from a surface are summed over "
+                                   "their tessellation (eq. 8), smaller ones are Lambertian spheres with the phase "
+                                   "law (eq. 7); 7.5e-5 sr is the Moon at perigee seen from the Earth (spec 4.1.5.3)",
+                                   [](F& f) -> auto& { return f.area_source_solid_angle_sr; }, Range{0, 12.57}, true));
     t.push_back(enum_property<F, BandIntegration>(
         "band_integration",
         "Band integration (eq. 48): grid (the spec 5.3 intervals) or exact (series integral of Planck terms, "

@@ -43,6 +43,10 @@ struct Fidelity {
   double central_body_patch_size_m = 785.0e3;  // at the Earth's equatorial radius
   double object_patch_divisions = 8.0;
   std::int64_t temperature_table_size = 4096;  // L(T) table of smooth shading of varying surfaces
+  // Illumination (spec 4.1.5.3): sources looking larger than this from a
+  // surface are summed over their tessellation (eq. 8), smaller ones are
+  // Lambertian spheres (eq. 7): the Moon at perigee seen from the Earth.
+  double area_source_solid_angle_sr = 7.5e-5;
   // Spectral (spec 5.3, eq. 48).
   BandIntegration band_integration = BandIntegration::grid;
   SpectralQuadrature spectral_quadrature = SpectralQuadrature::interval_midpoint;

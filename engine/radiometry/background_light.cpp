@@ -23,28 +23,6 @@ double evaluate(const SpectrumFunction& f, double wavelength_um, const char* fie
 
 }  // namespace
 
-TabulatedSpectrum::TabulatedSpectrum(std::vector<double> wavelength_um, std::vector<double> value)
-    : wavelength_um_(std::move(wavelength_um)), value_(std::move(value)) {
-  if (wavelength_um_.size() != value_.size() || wavelength_um_.size() < 2)
-    throw Error(Status::out_of_range, "spectrum: need >= 2 points and as many values as wavelengths");
-  for (std::size_t i = 0; i < wavelength_um_.size(); ++i) {
-    require_finite(wavelength_um_[i], "spectrum.wavelength_um");
-    require_finite(value_[i], "spectrum.value");
-    if (i > 0 && !(wavelength_um_[i] > wavelength_um_[i - 1]))
-      throw Error(Status::out_of_range, "spectrum.wavelength_um: not strictly increasing at index " +
-                                            std::to_string(i));
-  }
-}
-
-double TabulatedSpectrum::operator()(double wavelength_um) const {
-  if (!(wavelength_um >= wavelength_um_.front()) || wavelength_um > wavelength_um_.back()) return 0.0;
-  const auto it = std::upper_bound(wavelength_um_.begin(), wavelength_um_.end(), wavelength_um);
-  const std::size_t i = it == wavelength_um_.end() ? wavelength_um_.size() - 1 : static_cast<std::size_t>(it - wavelength_um_.begin());
-  if (i == 0) return value_.front();
-  const double f = (wavelength_um - wavelength_um_[i - 1]) / (wavelength_um_[i] - wavelength_um_[i - 1]);
-  return value_[i - 1] + f * (value_[i] - value_[i - 1]);
-}
-
 void BackgroundLightParameters::validate() const {
   require_positive(zodiacal_visible_anchor_um, "background.zodiacal_visible_anchor_um");
   require_non_negative(zodiacal_visible_radiance_W_m2_sr_um, "background.zodiacal_visible_radiance_W_m2_sr_um");

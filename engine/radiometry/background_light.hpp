@@ -50,23 +50,13 @@
 #include <vector>
 
 #include "radiometry/band_integral.hpp"
+#include "core/tabulated_function.hpp"
 
 namespace eoir::radiometry {
 
 // A spectrum as a function of wavelength [um].
 using SpectrumFunction = std::function<double(double wavelength_um)>;
-
-// A tabulated spectrum, linear between points, 0 outside (wavelengths
-// strictly increasing; validated).
-class TabulatedSpectrum {
- public:
-  TabulatedSpectrum(std::vector<double> wavelength_um, std::vector<double> value);
-  double operator()(double wavelength_um) const;
-
- private:
-  std::vector<double> wavelength_um_;
-  std::vector<double> value_;
-};
+using TabulatedSpectrum = TabulatedFunction;
 
 // Leinert et al. (1998) Table 19: zodiacal light at 90 deg elongation in the
 // ecliptic [W m^-2 sr^-1 um^-1].

@@ -34,9 +34,12 @@ Pick pick_sample(const World& world, const SceneImage& scene, std::int64_t c, st
   pick.range_m = hit.range_m;
   const Vec3 normal_body = o.placed.body_to_frame.transpose() * hit.normal_frame;
   pick.patch = geometry::patch_at_facing(o.tessellation(), o.placed.parts, hit.part, hit.point_body_m, normal_body);
-  const Vec3 shading = o.shading_normal(hit.part, hit.point_body_m);
-  pick.temperature_K = o.surface->temperature_K(hit.part, shading);
-  pick.spectral_radiance_W_cm2_sr_um = o.surface->spectral_radiance(hit.part, shading);
+  // The same surface point, normal and direction the image's sample used.
+  Vec3 point_body, shading_normal;
+  o.shading_point(hit.part, hit.point_body_m, point_body, shading_normal);
+  pick.temperature_K = o.surface->temperature_K(hit.part, shading_normal);
+  pick.spectral_radiance_W_cm2_sr_um =
+      o.spectral_radiance(hit.part, point_body, shading_normal, -o.to_frame(point_body).normalized());
   if (o.central_body) {
     // Geodetic latitude/longitude on the body's ellipsoid (GeographicLib):
     // WGS84 on the Earth-fixed Earth; other bodies' axes are J2000-aligned.

@@ -41,7 +41,7 @@ SceneImage generate_scene(const World& world, unsigned threads) {
         out.hits[i] = SampleHit{object, part};
         if (object < 0) return;
         const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];
-        if (!o.surface->varying()) {
+        if (o.surface->plain()) {
           out.image.radiance_W_cm2_sr[i] = o.surface->part_radiance(part);
           return;
         }

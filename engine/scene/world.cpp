@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "core/frames.hpp"
 #include "geometry/projected_area.hpp"
@@ -36,11 +37,88 @@ double patch_size_m(const universe::Object& o, const std::vector<geometry::Shape
   return std::max(size, 1e-6) / f.object_patch_divisions;
 }
 
+// Volume of a simple shape (m^3); a plate has none.
+double shape_volume_m3(const geometry::ShapeGeom& g) {
+  const double pi = constants::pi;
+  switch (g.kind) {
+    case universe::ShapeKind::sphere:
+    case universe::ShapeKind::oblate: return 4.0 / 3.0 * pi * g.a_m * g.a_m * g.c_m;
+    case universe::ShapeKind::box: return g.x_m * g.y_m * g.z_m;
+    case universe::ShapeKind::cylinder:
+    case universe::ShapeKind::cone:
+    case universe::ShapeKind::coupler: {
+      const double r1 = g.r_bottom_m, r2 = g.r_top_m;
+      return pi * g.length_m * (r1 * r1 + r1 * r2 + r2 * r2) / 3.0;
+    }
+    default: return 0.0;
+  }
+}
+
+// Eq. 7's sphere of the object's true shape: its volumetric mean radius; for
+// objects without volume (plates) the sphere of equal surface area.
+double volumetric_radius_m(const std::vector<geometry::ShapePart>& parts) {
+  double volume = 0, area = 0;
+  for (const auto& p : parts) {
+    volume += shape_volume_m3(p.geom);
+    area += geometry::shape_surface_area_m2(p.geom);
+  }
+  if (volume > 0) return std::cbrt(3.0 * volume / (4.0 * constants::pi));
+  return std::sqrt(area / (4.0 * constants::pi));
+}
+
+// Whether an occulter can shade any point of a receiving sphere from a light
+// sphere: it must cross the cone that joins them (a conservative test that
+// keeps the per-point eclipse tests short).
+bool can_shade(const Vec3& receiver, double receiver_radius, const Vec3& light, double light_radius,
+               const geometry::Occulter& o) {
+  const double r_o = std::max(o.equatorial_radius_m, o.polar_radius_m);
+  const Vec3 to_light = light - receiver;
+  const double D = to_light.norm();
+  if (!(D > 0)) return false;
+  const Vec3 u = to_light / D;
+  const Vec3 rel = o.centre_m - receiver;
+  const double s = rel.dot(u);
+  if (s < -(r_o + receiver_radius) || s > D + r_o) return false;
+  const double h = (rel - s * u).norm();
+  const double cone = receiver_radius + std::max(0.0, light_radius - receiver_radius) * std::clamp(s / D, 0.0, 1.0);
+  return h < r_o + cone;
+}
+
+class WorldBuilder {
+ public:
+  WorldBuilder(World& world, const universe::Library& library) : world_(world), library_(library) {}
+
+  // The world's view of a material (shared by every part made of it).
+  const SurfaceSpectrum* spectrum(const std::string& material, double gray_reflectance, const std::string& field) {
+    const universe::Material& m = library_.materials.get(material, field);
+    const auto key = std::make_pair(m.name, m.gray_body ? gray_reflectance : 0.0);
+    auto it = index_.find(key);
+    if (it != index_.end()) return world_.spectra[it->second].get();
+    world_.spectra.push_back(std::make_unique<SurfaceSpectrum>(m, gray_reflectance, world_.view.spectral));
+    index_[key] = world_.spectra.size() - 1;
+    return world_.spectra.back().get();
+  }
+
+  std::vector<double> self_radiance(const std::string& name, const std::string& field) const {
+    if (name.empty()) return {};
+    const universe::NamedSpectrum* s = library_.spectra.find(name);
+    if (!s) throw Error(Status::unknown_name, field + ": no spectrum named '" + name + "' in the spectrum table");
+    const radiometry::SpectralBand& b = world_.view.spectral.band;
+    return s->radiance_W_cm2_sr_um.interval_means(b.low_um, b.interval_um(), b.intervals);
+  }
+
+ private:
+  World& world_;
+  const universe::Library& library_;
+  std::map<std::pair<std::string, double>, std::size_t> index_;
+};
+
 // Places one object relative to the observer; nullptr for objects that image
 // nothing (sensors, the star field, shape none, an empty composite) or that
-// the host has not placed yet.
+// the host has not placed yet. The surface model comes later (it needs the
+// eclipse geometry of every object).
 std::unique_ptr<WorldObject> place(const universe::Universe& universe, const universe::Object& o, const EngineTime& t,
-                                   const World& world, const Vec3& sun_geocentric_m) {
+                                   const World& world) {
   if (o.kind == ObjectKind::sensor || o.kind == ObjectKind::star_field) return nullptr;
   if (o.kind != ObjectKind::central_body && !o.state.valid) return nullptr;
   const std::vector<universe::ShapePart> shape = universe::shape_parts(o.body);
@@ -51,16 +129,14 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
   w->kind = o.kind;
   w->central_body = o.kind == ObjectKind::central_body;
   geometry::PlacedObject& po = w->placed;
-  std::vector<PartSurface> surfaces;
   for (std::size_t i = 0; i < shape.size(); ++i) {
     const std::string field = o.body.shape == universe::ShapeKind::composite
                                   ? o.name + ".composite[" + std::to_string(i) + "]"
                                   : o.name + ".shape";
     po.parts.push_back(geometry::make_part(shape[i], field));
-    surfaces.push_back(PartSurface{shape[i].temperature_K.value_or(o.body.temperature_K),
-                                   shape[i].reflectance.value_or(o.body.reflectance)});
   }
   po.position_m = k.position_m - world.observer.position_m;
+  w->geocentric_position_m = k.position_m;
   if (w->central_body) {
     const universe::CentralBodyInfo& info = universe::central_body_info(o.central_body);
     po.body_to_frame = info.axes == universe::BodyAxes::earth_fixed ? Mat3(frames::j2000_to_earth_fixed(t).transpose())
@@ -70,22 +146,22 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
   } else {
     po.body_to_frame = k.attitude.toRotationMatrix();
   }
-  ThermalField thermal;
-  if (o.body.thermal_model == universe::ThermalModel::subsolar) {
-    thermal.subsolar = true;
-    thermal.subsolar_K = o.body.subsolar_temperature_K;
-    thermal.night_K = o.body.night_temperature_K;
-    thermal.sun_body = (po.body_to_frame.transpose() * (sun_geocentric_m - k.position_m)).normalized();
-  }
-  const Fidelity& f = world.view.fidelity;
-  w->surface = std::make_unique<SurfaceModel>(std::move(surfaces), thermal, world.view.spectral,
-                                              f.scene_mode == SceneMode::smooth ? f.temperature_table_size : 0);
   w->range_m = po.position_m.norm();
   for (const auto& part : po.parts)
     w->bounding_radius_m =
         std::max(w->bounding_radius_m, part.offset_m.norm() + geometry::shape_bounding_radius_m(part.geom));
-  w->patch_size_m = patch_size_m(o, po.parts, f);
+  w->volumetric_radius_m = volumetric_radius_m(po.parts);
+  w->patch_size_m = patch_size_m(o, po.parts, world.view.fidelity);
+  const universe::PointSourceModel model = o.body.point_source_model;
+  w->detailed_point_source =
+      model == universe::PointSourceModel::detailed || (model == universe::PointSourceModel::automatic && !w->central_body);
   return w;
+}
+
+geometry::Occulter occulter_of(const WorldObject& w) {
+  if (w.central_body)
+    return geometry::Occulter{w.placed.position_m, w.equatorial_radius_m, w.polar_radius_m, w.placed.body_to_frame.col(2)};
+  return geometry::Occulter{w.placed.position_m, w.bounding_radius_m, w.bounding_radius_m, Vec3::UnitZ()};
 }
 }  // namespace
 
@@ -110,28 +186,137 @@ Vec3 WorldObject::toward_observer_body() const {
   return -(placed.body_to_frame.transpose() * placed.position_m).normalized();
 }
 
+double WorldObject::sun_fraction(const Vec3& point_frame_m) const {
+  const SunLight& sun = world_->sun;
+  return geometry::solar_disk_visible_fraction(point_frame_m, sun.position_m, sun.radius_m, occulters_[0]);
+}
+
+void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const Vec3& toward,
+                                           const radiometry::Brdf& brdf, bool sun_only, std::vector<double>& out) const {
+  const World& w = *world_;
+  const std::size_t count = out.size();
+  // The Sun (eq. 6): E = L_tab dOmega_sun, times the visible fraction of its disc.
+  if (w.sun.object != id) {
+    const Vec3 to_sun = w.sun.position_m - p;
+    const double d = to_sun.norm();
+    const Vec3 I = to_sun / d;
+    const double cos_i = I.dot(n);
+    if (cos_i > 0) {
+      const double f = sun_fraction(p);
+      if (f > 0) {
+        const double g = f * universe::sun_projected_solid_angle_sr(d) * cos_i * brdf.value(I, toward, n);
+        for (std::size_t i = 0; i < count; ++i) out[i] += g * w.sun.radiance[i];
+      }
+    }
+  }
+  if (sun_only) return;
+  // Every other object: a Lambertian sphere (eq. 7) or its tessellation (eq. 8).
+  for (std::size_t k = 0; k < w.lights.size(); ++k) {
+    const ObjectLight& src = w.lights[k];
+    if (src.object == id) continue;
+    const Vec3 to_src = src.position_m - p;
+    const double d = to_src.norm();
+    if (!(d > src.radius_m)) continue;
+    const Vec3 I = to_src / d;
+    const double omega = constants::pi * (src.radius_m / d) * (src.radius_m / d);
+    if (src.area_source && omega > w.view.fidelity.area_source_solid_angle_sr) {
+      for (const AreaSourcePatch& a : area_source(k)) {
+        const double c = a.direction.dot(n);
+        if (c <= 0) continue;
+        const double g = a.solid_angle_sr * c * brdf.value(a.direction, toward, n);
+        for (std::size_t i = 0; i < count; ++i) out[i] += g * a.radiance[i];
+      }
+      continue;
+    }
+    const double cos_i = I.dot(n);
+    if (cos_i <= 0) continue;
+    const double visible = geometry::solar_disk_visible_fraction(p, src.position_m, src.radius_m, occulters_[k + 1]);
+    if (visible <= 0) continue;
+    const Vec3 to_sun = (w.sun.position_m - src.position_m).normalized();
+    const double phase = lambertian_sphere_phase(std::acos(std::clamp(-to_sun.dot(I), -1.0, 1.0)));
+    const double g = omega * visible * cos_i * brdf.value(I, toward, n);
+    for (std::size_t i = 0; i < count; ++i) out[i] += g * (src.reflected[i] * phase + src.emitted[i]);
+  }
+}
+
+const std::vector<WorldObject::AreaSourcePatch>& WorldObject::area_source(std::size_t light) const {
+  std::lock_guard<std::mutex> lock(area_mutex_);
+  auto it = area_sources_.find(light);
+  if (it != area_sources_.end()) return it->second;
+  const WorldObject& s = *world_->objects[static_cast<std::size_t>(world_->lights[light].object)];
+  const Vec3 receiver = placed.position_m;
+  std::vector<AreaSourcePatch> patches;
+  for (const geometry::Patch& q : s.tessellation().patches) {
+    const Vec3 centre = s.to_frame(q.centre_body_m);
+    const Vec3 normal = s.placed.body_to_frame * q.normal_body;
+    const Vec3 d = receiver - centre;
+    const double dist = d.norm(), facing = normal.dot(d);
+    if (facing <= 0 || !(dist > 0)) continue;
+    const Vec3 toward_receiver = d / dist;
+    patches.push_back(AreaSourcePatch{-toward_receiver, q.area_m2 * (facing / dist) / (dist * dist),
+                                      s.spectral_radiance(q.part, q.centre_body_m, q.normal_body, toward_receiver, true)});
+  }
+  return area_sources_.emplace(light, std::move(patches)).first->second;
+}
+
+std::vector<double> WorldObject::spectral_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
+                                                   const Vec3& toward, bool sun_only) const {
+  std::vector<double> out(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
+  if (surface->reflects(part)) {
+    std::vector<double> E(out.size(), 0.0);
+    const SurfaceSpectrum& s = *surface->part(part).spectrum;
+    add_reflected_irradiance(to_frame(point_body_m), placed.body_to_frame * normal_body, toward, s.brdf(), sun_only, E);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = E[i] * s.srf()[i];
+  }
+  surface->add_emission(part, normal_body, out);
+  return out;
+}
+
+double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
+                                       bool interpolated) const {
+  if (surface->plain()) return surface->part_radiance(part);
+  double L = interpolated ? surface->emission_radiance_interpolated(part, normal_body)
+                          : surface->emission_radiance(part, normal_body);
+  if (surface->reflects(part)) {
+    const Vec3 p = to_frame(point_body_m);
+    std::vector<double> E(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
+    const SurfaceSpectrum& s = *surface->part(part).spectrum;
+    add_reflected_irradiance(p, placed.body_to_frame * normal_body, -p.normalized(), s.brdf(), false, E);
+    for (std::size_t i = 0; i < E.size(); ++i) E[i] *= s.srf()[i];
+    L += world_->view.spectral.integrate(E);
+  }
+  return L;
+}
+
 double WorldObject::patch_radiance(std::int32_t patch) const {
   const geometry::Patch& p = tessellation().patches[static_cast<std::size_t>(patch)];
-  if (!surface->varying()) return surface->part_radiance(p.part);
+  if (surface->plain()) return surface->part_radiance(p.part);
   std::atomic<double>& cached = patch_cache_[static_cast<std::size_t>(patch)];
   double L = cached.load(std::memory_order_relaxed);
   if (std::isnan(L)) {  // two threads may both compute it: the same value
-    L = surface->effective_radiance(p.part, p.normal_body);
+    L = effective_radiance(p.part, p.centre_body_m, p.normal_body);
     cached.store(L, std::memory_order_relaxed);
   }
   return L;
 }
 
-Vec3 WorldObject::shading_normal(std::int32_t part, const Vec3& point_body_m) const {
-  if (world_->view.fidelity.scene_mode == SceneMode::smooth) return normal_at(part, point_body_m);
+void WorldObject::shading_point(std::int32_t part, const Vec3& point_body_m, Vec3& shade_point_body,
+                                Vec3& normal_body) const {
+  if (world_->view.fidelity.scene_mode == SceneMode::smooth) {
+    shade_point_body = point_body_m;
+    normal_body = normal_at(part, point_body_m);
+    return;
+  }
   const std::int32_t k = geometry::patch_at(tessellation(), placed.parts, part, point_body_m);
-  return tessellation().patches[static_cast<std::size_t>(k)].normal_body;
+  const geometry::Patch& p = tessellation().patches[static_cast<std::size_t>(k)];
+  shade_point_body = p.centre_body_m;
+  normal_body = p.normal_body;
 }
 
 double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m) const {
-  if (!surface->varying()) return surface->part_radiance(part);
+  if (surface->plain()) return surface->part_radiance(part);
   if (world_->view.fidelity.scene_mode == SceneMode::smooth)
-    return surface->effective_radiance_interpolated(part, normal_at(part, point_body_m));
+    return effective_radiance(part, point_body_m, normal_at(part, point_body_m), true);
   return patch_radiance(geometry::patch_at(tessellation(), placed.parts, part, point_body_m));
 }
 
@@ -146,16 +331,49 @@ double WorldObject::projected_area_m2() const {
 
 double WorldObject::point_irradiance_W_cm2() const {
   const double r2 = range_m * range_m;
-  if (placed.parts.size() == 1 && !surface->varying()) return surface->part_radiance(0) * (projected_area_m2() / r2);
-  // Varying surfaces and composites: the sum over visible patches of L dOmega.
+  if (!detailed_point_source) return world_->view.spectral.integrate(point_spectral_irradiance());
+  if (placed.parts.size() == 1 && surface->plain()) return surface->part_radiance(0) * (projected_area_m2() / r2);
+  // The sum over visible patches of L dOmega (ERRATA eq. 11).
   const Vec3 v = toward_observer_body();
   const geometry::Tessellation& t = tessellation();
   double irradiance = 0;
   for (std::size_t k = 0; k < t.patches.size(); ++k) {
     const geometry::Patch& patch = t.patches[k];
-    irradiance += patch_radiance(static_cast<std::int32_t>(k)) * std::max(0.0, patch.normal_body.dot(v)) * patch.area_m2;
+    const double facing = patch.normal_body.dot(v);
+    if (facing > 0) irradiance += patch_radiance(static_cast<std::int32_t>(k)) * facing * patch.area_m2;
   }
   return irradiance / r2;
+}
+
+std::vector<double> WorldObject::point_spectral_irradiance() const {
+  const World& w = *world_;
+  std::vector<double> E(w.view.spectral.sample_wavelengths_um.size(), 0.0);
+  const double r2 = range_m * range_m;
+  if (!detailed_point_source && light_ >= 0) {
+    // Eq. 7 toward the observer: [E_sun SRF 2/(3 pi) Phase(psi) + eps B(T)] dOmega.
+    const ObjectLight& self = w.lights[static_cast<std::size_t>(light_)];
+    const double omega = constants::pi * volumetric_radius_m * volumetric_radius_m / r2;
+    const Vec3 to_sun = (w.sun.position_m - placed.position_m).normalized();
+    const Vec3 to_observer = -placed.position_m / range_m;
+    const double phase = lambertian_sphere_phase(std::acos(std::clamp(to_sun.dot(to_observer), -1.0, 1.0)));
+    for (std::size_t i = 0; i < E.size(); ++i) E[i] = (self.reflected[i] * phase + self.emitted[i]) * omega;
+    return E;
+  }
+  const Vec3 v = toward_observer_body();
+  const Vec3 toward = placed.body_to_frame * v;
+  const geometry::Tessellation& t = tessellation();
+  for (const geometry::Patch& patch : t.patches) {
+    const double facing = patch.normal_body.dot(v);
+    if (facing <= 0) continue;
+    const std::vector<double> L = spectral_radiance(patch.part, patch.centre_body_m, patch.normal_body, toward);
+    const double omega = facing * patch.area_m2 / r2;
+    for (std::size_t i = 0; i < E.size(); ++i) E[i] += L[i] * omega;
+  }
+  return E;
+}
+
+double lambertian_sphere_phase(double psi) {
+  return (std::sin(psi) + (constants::pi - psi) * std::cos(psi)) / constants::pi;
 }
 
 const WorldObject* World::find(const std::string& name) const {
@@ -164,8 +382,9 @@ const WorldObject* World::find(const std::string& name) const {
   return nullptr;
 }
 
-std::shared_ptr<const World> build_world(const universe::Universe& universe, const EngineTime& t,
-                                         const universe::Object& sensor, const ViewDefinition& view) {
+std::shared_ptr<const World> build_world(const universe::Universe& universe, const universe::Library& library,
+                                         const EngineTime& t, const universe::Object& sensor,
+                                         const ViewDefinition& view) {
   auto world = std::make_shared<World>();
   world->time = t;
   world->sensor_name = sensor.name;
@@ -174,19 +393,25 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   world->observer = Observer{k.position_m, k.velocity_m_s, k.attitude.toRotationMatrix()};
   frames::Vec3 sun_r, sun_v;
   universe::central_body_state_j2000(universe::central_body_info(universe::CentralBody::sun), t, sun_r, sun_v);
-  world->sun_position_m = sun_r - world->observer.position_m;
+  const radiometry::SpectralBand& band = world->view.spectral.band;
+  world->sun.position_m = sun_r - world->observer.position_m;
+  world->sun.radius_m = universe::sun_radius_m;
+  world->sun.radiance =
+      library.spectra.sun().radiance_W_cm2_sr_um.interval_means(band.low_um, band.interval_um(), band.intervals);
   const Mat3 j2000_to_body = world->observer.body_to_j2000.transpose();
   const geometry::SampleGrid& grid = world->view.grid;
   const double sample_angle_rad = grid.sample_angle_rad();
-  std::vector<const geometry::PlacedObject*> cast_against;
+  const Fidelity& f = world->view.fidelity;
+
+  // 1. Place and classify (DESIGN section 1, step 2).
+  std::vector<const universe::Object*> sources;
   for (const universe::Object& o : universe.objects()) {
     if (o.name == sensor.parent) continue;  // a sensor never images its parent (4.1.5.1)
-    std::unique_ptr<WorldObject> w = place(universe, o, t, *world, sun_r);
+    std::unique_ptr<WorldObject> w = place(universe, o, t, *world);
     if (!w) continue;
     w->id = static_cast<std::int32_t>(world->objects.size());
     w->world_ = world.get();
     w->placed.object_id = w->id;
-    // Classified once (DESIGN section 1, step 2).
     const double range = w->range_m, radius = w->bounding_radius_m;
     if (outside_view(j2000_to_body * w->placed.position_m, radius, grid))
       w->imaging = Imaging::outside;
@@ -195,8 +420,109 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     else
       w->imaging = Imaging::extended;
     w->placed.ray_mask = w->imaging == Imaging::extended ? geometry::ray_mask_extended : geometry::ray_mask_other;
+    if (o.kind == ObjectKind::central_body && o.central_body == universe::CentralBody::sun) world->sun.object = w->id;
     world->objects.push_back(std::move(w));
+    sources.push_back(&o);
   }
+
+  // 2. What may shade what: every other body, for the Sun and each source.
+  std::vector<geometry::Occulter> occulters;
+  for (const auto& w : world->objects) occulters.push_back(occulter_of(*w));
+  auto candidates = [&](const WorldObject& receiver, const Vec3& light, double light_radius, std::int32_t light_object) {
+    std::vector<geometry::Occulter> out;
+    for (const auto& w : world->objects)
+      if (w->id != receiver.id && w->id != light_object &&
+          can_shade(receiver.placed.position_m, receiver.bounding_radius_m, light, light_radius,
+                    occulters[static_cast<std::size_t>(w->id)]))
+        out.push_back(occulters[static_cast<std::size_t>(w->id)]);
+    return out;
+  };
+  for (const auto& w : world->objects)
+    w->occulters_.push_back(candidates(*w, world->sun.position_m, world->sun.radius_m, world->sun.object));
+
+  // 3. Surfaces: materials through the view, temperatures (spec 4.3.1.3).
+  WorldBuilder builder(*world, library);
+  for (std::size_t i = 0; i < world->objects.size(); ++i) {
+    WorldObject& w = *world->objects[i];
+    const universe::Object& o = *sources[i];
+    const std::vector<universe::ShapePart> shape = universe::shape_parts(o.body);
+    ThermalField thermal;
+    if (o.body.thermal_model == universe::ThermalModel::subsolar) {
+      thermal.subsolar = true;
+      thermal.subsolar_K = o.body.subsolar_temperature_K;
+      thermal.night_K = o.body.night_temperature_K;
+      thermal.sun_body = (w.placed.body_to_frame.transpose() * (sun_r - w.geocentric_position_m)).normalized();
+    }
+    // Thermal model eclipse: radiative equilibrium with the visible fraction
+    // f of the solar disc, T^4 = T_e^4 + f (T_sunlit^4 - T_e^4) (memoryless).
+    const bool eclipse = o.body.thermal_model == universe::ThermalModel::eclipse;
+    const double fraction = eclipse ? w.sun_fraction(w.placed.position_m) : 1.0;
+    const double te4 = std::pow(o.body.eclipse_temperature_K, 4.0);
+    std::vector<PartSurface> parts;
+    for (std::size_t p = 0; p < shape.size(); ++p) {
+      const std::string field = o.body.shape == universe::ShapeKind::composite
+                                    ? o.name + ".composite[" + std::to_string(p) + "].material"
+                                    : o.name + ".material";
+      double T = shape[p].temperature_K.value_or(o.body.temperature_K);
+      if (eclipse) T = std::pow(te4 + fraction * (std::pow(T, 4.0) - te4), 0.25);
+      parts.push_back(PartSurface{builder.spectrum(shape[p].material.value_or(o.body.material),
+                                                   shape[p].reflectance.value_or(o.body.reflectance), field),
+                                  T});
+    }
+    w.surface = std::make_unique<SurfaceModel>(std::move(parts), thermal,
+                                               builder.self_radiance(o.body.spectrum, o.name + ".spectrum"),
+                                               world->view.spectral,
+                                               f.scene_mode == SceneMode::smooth ? f.temperature_table_size : 0);
+  }
+
+  // 4. Every object but the Sun as a light source (eq. 7; eq. 8 where large).
+  const std::size_t n = static_cast<std::size_t>(band.intervals);
+  for (const auto& wp : world->objects) {
+    WorldObject& w = *wp;
+    if (w.id == world->sun.object) continue;
+    ObjectLight light;
+    light.object = w.id;
+    light.position_m = w.placed.position_m;
+    light.radius_m = w.volumetric_radius_m;
+    light.bounding_radius_m = w.bounding_radius_m;
+    light.area_source = true;
+    // Overall (area-weighted) SRF and emission: per patch where the
+    // temperature varies, per part otherwise.
+    std::vector<double> srf(n, 0.0), emitted(n, 0.0);
+    double total_area = 0;
+    auto add = [&](std::int32_t part, const Vec3& normal_body, double area) {
+      const SurfaceSpectrum& s = *w.surface->part(part).spectrum;
+      for (std::size_t i = 0; i < n; ++i) srf[i] += area * (w.surface->reflects(part) ? s.srf()[i] : 0.0);
+      std::vector<double> e(n, 0.0);
+      w.surface->add_emission(part, normal_body, e);
+      for (std::size_t i = 0; i < n; ++i) emitted[i] += area * e[i];
+      total_area += area;
+    };
+    if (w.surface->varying_temperature()) {
+      for (const geometry::Patch& p : w.tessellation().patches) add(p.part, p.normal_body, p.area_m2);
+    } else {
+      for (std::size_t p = 0; p < w.placed.parts.size(); ++p)
+        add(static_cast<std::int32_t>(p), Vec3::UnitZ(), geometry::shape_surface_area_m2(w.placed.parts[p].geom));
+    }
+    if (total_area > 0)
+      for (std::size_t i = 0; i < n; ++i) {
+        srf[i] /= total_area;
+        emitted[i] /= total_area;
+      }
+    const double fraction = w.sun_fraction(w.placed.position_m);
+    const double sun_omega = universe::sun_projected_solid_angle_sr((world->sun.position_m - w.placed.position_m).norm());
+    light.reflected.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      light.reflected[i] = world->sun.radiance[i] * sun_omega * fraction * srf[i] * 2.0 / (3.0 * constants::pi);
+    light.emitted = std::move(emitted);
+    w.light_ = static_cast<std::int32_t>(world->lights.size());
+    world->lights.push_back(std::move(light));
+  }
+  for (const auto& w : world->objects)
+    for (const ObjectLight& light : world->lights)
+      w->occulters_.push_back(candidates(*w, light.position_m, light.radius_m, light.object));
+
+  std::vector<const geometry::PlacedObject*> cast_against;
   for (const auto& w : world->objects) cast_against.push_back(&w->placed);
   world->caster.build(cast_against);
   return world;

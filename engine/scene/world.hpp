@@ -4,14 +4,16 @@
 // classified once (outside the view, imaged as an extended area source, or
 // a distant area source smaller than a sample, spec 4.1.6.1); its shape
 // parts, its tessellation (made on first use) and its surface model; the
-// light sources; and one committed ray caster. Everything that looks at the
-// universe at that instant -- the image, target metrics, per-frame truth,
-// picks -- reads this world and builds no other. It copies what it needs, so
-// it stays valid after the universe changes.
+// light sources (the Sun and every object, spec 4.1.5.3); and one committed
+// ray caster. Everything that looks at the universe at that instant -- the
+// image, target metrics, per-frame truth, picks -- reads this world and
+// builds no other. It copies what it needs, so it stays valid after the
+// universe changes.
 #pragma once
 #include <Eigen/Core>
 #include <atomic>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -19,10 +21,13 @@
 
 #include "core/fidelity.hpp"
 #include "core/time.hpp"
+#include "geometry/eclipse.hpp"
 #include "geometry/sample_grid.hpp"
 #include "geometry/scene_geometry.hpp"
 #include "radiometry/spectral_view.hpp"
+#include "scene/light_environment.hpp"
 #include "scene/surface_model.hpp"
+#include "universe/library.hpp"
 #include "universe/universe.hpp"
 
 namespace eoir::scene {
@@ -50,9 +55,13 @@ struct Observer {
   Mat3 body_to_j2000 = Mat3::Identity();
 };
 
-// A light source that can illuminate a surface (eq. 4). Empty until
-// sunlight arrives.
-struct LightSource {};
+// The Sun as the light of eq. 6.
+struct SunLight {
+  Vec3 position_m = Vec3::Zero();  // relative to the observer, J2000 axes
+  double radius_m = 0.0;
+  std::vector<double> radiance;    // L_tab as interval means on the view (W cm^-2 sr^-1 um^-1)
+  std::int32_t object = -1;        // the Sun's world object, if it is in the world
+};
 
 class World;
 
@@ -62,11 +71,14 @@ class WorldObject {
   std::string name;
   universe::ObjectKind kind = universe::ObjectKind::satellite;
   bool central_body = false;  // a background, not a target (per-frame truth)
-  double equatorial_radius_m = 0, polar_radius_m = 0;  // central bodies: for latitude/longitude
+  double equatorial_radius_m = 0, polar_radius_m = 0;  // central bodies: for latitude/longitude and eclipses
   geometry::PlacedObject placed;  // parts, position relative to the observer (J2000 axes), body frame
+  Vec3 geocentric_position_m = Vec3::Zero();  // J2000
   double range_m = 0;             // observer to body origin
   double bounding_radius_m = 0;   // sphere about the body origin enclosing every part
+  double volumetric_radius_m = 0; // the sphere of equal volume (eq. 7; plates: of equal area)
   Imaging imaging = Imaging::outside;
+  bool detailed_point_source = true;  // spec 4.1.6.1: detailed or simple
   double patch_size_m = 0;        // target edge of the tessellation's patches
   std::unique_ptr<SurfaceModel> surface;
 
@@ -74,33 +86,67 @@ class WorldObject {
   const geometry::Tessellation& tessellation() const;
   // Outward unit normal (body frame) of `part` at a surface point.
   Vec3 normal_at(std::int32_t part, const Vec3& point_body_m) const;
+  Vec3 to_frame(const Vec3& point_body_m) const { return placed.position_m + placed.body_to_frame * point_body_m; }
   // Unit vector from the object toward the observer, body frame.
   Vec3 toward_observer_body() const;
-  // The effective radiance (eq. 48) a sample ending at point_body_m on `part`
-  // sees, as the scene mode says (spec 4.2): a part's value for uniform
-  // surfaces; the value at the centre of the point's patch in coarse mode
-  // (computed once per patch); the point's own in smooth mode.
+
+  // The spectral radiance (eq. 4, W cm^-2 sr^-1 um^-1 at the view's
+  // wavelengths) leaving the point of `part` with outward normal normal_body
+  // toward the unit direction `toward` (observer frame). sun_only: lit by the
+  // Sun alone (the single bounce of light that other objects reflect).
+  std::vector<double> spectral_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
+                                        const Vec3& toward, bool sun_only = false) const;
+  // Its band integral (eq. 48) toward the observer; emission through the
+  // L(T) table when `interpolated`.
+  double effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
+                            bool interpolated = false) const;
+  // The effective radiance a sample ending at point_body_m on `part` sees, as
+  // the scene mode says (spec 4.2): a part's value for plain surfaces; the
+  // value at the centre of the point's patch in coarse mode (computed once per
+  // patch); the point's own in smooth mode.
   double radiance_at(std::int32_t part, const Vec3& point_body_m) const;
-  // The normal at which that radiance is evaluated (patch or point normal).
-  Vec3 shading_normal(std::int32_t part, const Vec3& point_body_m) const;
-  // The radiance of patch k at its centre (cached).
+  // The point and normal at which that radiance is evaluated (the patch
+  // centre in coarse mode, the point itself in smooth mode).
+  void shading_point(std::int32_t part, const Vec3& point_body_m, Vec3& shade_point_body, Vec3& normal_body) const;
+  // The radiance of patch k at its centre toward the observer (cached).
   double patch_radiance(std::int32_t patch) const;
   // Projected area A*_T facing the observer (eq. 58, m^2): exact for a single
   // sphere, oblate, box, plate or cylinder, else the sum over patches.
   double projected_area_m2() const;
   // Band-integrated irradiance at the observer of the object seen as a point
-  // (spec 4.1.6.1, ERRATA eq. 11: the sum of L dOmega over the visible
-  // patches): L A* / R^2 for a single uniform shape, the patch sum otherwise.
+  // (spec 4.1.6.1): detailed, the sum over visible patches of L dOmega (ERRATA
+  // eq. 11; L A* / R^2 for a single plain shape); simple, eq. 7 toward the
+  // observer.
   double point_irradiance_W_cm2() const;
+  // Its spectral vector (W cm^-2 um^-1).
+  std::vector<double> point_spectral_irradiance() const;
+
+  // Visible fraction of the Sun's disc at a point of this object (umbra 0,
+  // penumbra between, sunlight 1) against every other body.
+  double sun_fraction(const Vec3& point_frame_m) const;
 
  private:
   friend class World;
-  friend std::shared_ptr<const World> build_world(const universe::Universe&, const EngineTime&,
-                                                  const universe::Object&, const ViewDefinition&);
+  friend std::shared_ptr<const World> build_world(const universe::Universe&, const universe::Library&,
+                                                  const EngineTime&, const universe::Object&, const ViewDefinition&);
+  struct AreaSourcePatch {
+    Vec3 direction;              // from the receiver toward the patch, observer frame
+    double solid_angle_sr = 0;   // projected solid angle at the receiver
+    std::vector<double> radiance;  // toward the receiver, lit by the Sun
+  };
+  // Eq. 8 sums of source `light` as seen from this object's centre.
+  const std::vector<AreaSourcePatch>& area_source(std::size_t light) const;
+  // Adds sum_i E_i (I_i . N) BRDF(I_i, N, O) at a point (eq. 4's bracket).
+  void add_reflected_irradiance(const Vec3& point_frame, const Vec3& normal_frame, const Vec3& toward,
+                                const radiometry::Brdf& brdf, bool sun_only, std::vector<double>& out) const;
   const World* world_ = nullptr;
+  std::int32_t light_ = -1;  // index in World::lights, -1 if not a source
+  std::vector<std::vector<geometry::Occulter>> occulters_;  // per light (0 the Sun, 1 + k lights[k]): may shade it
   mutable std::once_flag tessellated_;
   mutable geometry::Tessellation tessellation_;
   mutable std::unique_ptr<std::atomic<double>[]> patch_cache_;  // NaN until computed
+  mutable std::mutex area_mutex_;
+  mutable std::map<std::size_t, std::vector<AreaSourcePatch>> area_sources_;
 };
 
 class World {
@@ -113,9 +159,10 @@ class World {
   std::string sensor_name;
   Observer observer;
   ViewDefinition view;
-  Vec3 sun_position_m = Vec3::Zero();  // relative to the observer, J2000 axes
+  SunLight sun;
   std::vector<std::unique_ptr<WorldObject>> objects;  // indexed by id
-  std::vector<LightSource> lights;
+  std::vector<ObjectLight> lights;                     // every object but the Sun, as eq. 7 sources
+  std::vector<std::unique_ptr<SurfaceSpectrum>> spectra;  // the materials in use, through the view
   geometry::RayCaster caster;  // every placed object; ray masks tell how each is imaged
 
   const geometry::SampleGrid& grid() const { return view.grid; }
@@ -130,9 +177,11 @@ class World {
   const WorldObject* find(const std::string& name) const;
 };
 
-// Builds the world of `sensor` at t. Throws eoir::Error (no_state for a
-// sensor whose parent has no state).
-std::shared_ptr<const World> build_world(const universe::Universe& universe, const EngineTime& t,
-                                         const universe::Object& sensor, const ViewDefinition& view);
+// Builds the world of `sensor` at t with the library's materials and spectra.
+// Throws eoir::Error (no_state for a sensor whose parent has no state,
+// unknown_name for an unknown material or spectrum).
+std::shared_ptr<const World> build_world(const universe::Universe& universe, const universe::Library& library,
+                                         const EngineTime& t, const universe::Object& sensor,
+                                         const ViewDefinition& view);
 
 }  // namespace eoir::scene

@@ -27,7 +27,7 @@ std::vector<double> numbers(const json& j, const std::string& where, std::size_t
 
 void flatten(const json& parts, const std::string& where, const Eigen::Vector3d& offset,
              const Eigen::Quaterniond& orientation, std::optional<double> temperature, std::optional<double> reflectance,
-             int depth, std::vector<ShapePart>& out) {
+             std::optional<std::string> material, int depth, std::vector<ShapePart>& out) {
   if (depth > max_composite_depth)
     throw Error(Status::limit_exceeded, where + ": composites nest at most " + std::to_string(max_composite_depth) + " deep");
   if (!parts.is_array()) bad(where, "expected an array of parts");
@@ -38,7 +38,7 @@ void flatten(const json& parts, const std::string& where, const Eigen::Vector3d&
     if (!p.is_object()) bad(at, "expected an object");
     for (auto it = p.begin(); it != p.end(); ++it) {
       static const char* known[] = {"shape", "dimensions_m", "offset_m", "orientation_wxyz", "temperature_K",
-                                    "reflectance", "parts"};
+                                    "reflectance", "material", "parts"};
       bool ok = false;
       for (const char* k : known) ok = ok || it.key() == k;
       if (!ok) throw Error(Status::unknown_name, at + "." + it.key() + ": unknown field of a composite part");
@@ -56,6 +56,12 @@ void flatten(const json& parts, const std::string& where, const Eigen::Vector3d&
       local = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
     }
     std::optional<double> t = temperature, r = reflectance;
+    std::optional<std::string> mat = material;
+    if (p.contains("material")) {
+      if (!p["material"].is_string() || p["material"].get<std::string>().empty())
+        bad(at + ".material", "expected a material name");
+      mat = p["material"].get<std::string>();
+    }
     if (p.contains("temperature_K")) {
       if (!p["temperature_K"].is_number()) bad(at + ".temperature_K", "expected a number");
       t = p["temperature_K"].get<double>();
@@ -72,7 +78,7 @@ void flatten(const json& parts, const std::string& where, const Eigen::Vector3d&
     const Eigen::Quaterniond body_orientation = orientation * local;
     if (p.contains("parts")) {
       if (p.contains("shape") || p.contains("dimensions_m")) bad(at, "a nested composite has parts, not a shape");
-      flatten(p["parts"], at + ".parts", body_offset, body_orientation, t, r, depth + 1, out);
+      flatten(p["parts"], at + ".parts", body_offset, body_orientation, t, r, mat, depth + 1, out);
       continue;
     }
     if (!p.contains("shape") || !p["shape"].is_string()) bad(at + ".shape", "missing (or give nested parts)");
@@ -83,7 +89,7 @@ void flatten(const json& parts, const std::string& where, const Eigen::Vector3d&
     check_dimensions(kind, dims, at + ".dimensions_m");
     if (out.size() >= max_composite_parts)
       throw Error(Status::limit_exceeded, at + ": at most " + std::to_string(max_composite_parts) + " parts per object");
-    out.push_back(ShapePart{kind, dims, body_offset, body_orientation, t, r});
+    out.push_back(ShapePart{kind, dims, body_offset, body_orientation, t, r, mat});
   }
 }
 }  // namespace
@@ -96,7 +102,8 @@ std::vector<ShapePart> parse_composite(const std::string& text, const std::strin
     bad(field, std::string("not valid JSON: ") + e.what());
   }
   std::vector<ShapePart> out;
-  flatten(doc, field, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity(), std::nullopt, std::nullopt, 1, out);
+  flatten(doc, field, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity(), std::nullopt, std::nullopt, std::nullopt, 1,
+          out);
   return out;
 }
 

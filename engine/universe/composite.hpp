@@ -2,10 +2,11 @@
 // given offsets and orientations. A composite object carries its parts as a
 // JSON array in its `composite` property:
 //   [{"shape": "box", "dimensions_m": [1, 1, 2], "offset_m": [0, 0, 0],
-//     "orientation_wxyz": [1, 0, 0, 0], "temperature_K": 290, "reflectance": 0.1},
+//     "orientation_wxyz": [1, 0, 0, 0], "temperature_K": 290, "reflectance": 0.1,
+//     "material": "gold_mli"},
 //    {"parts": [ ...nested parts... ], "offset_m": [0, 3, 0]}]
 // offset_m and orientation_wxyz (part -> parent) default to zero and
-// identity; temperature_K and reflectance default to the parent's. An empty
+// identity; temperature_K, reflectance and material default to the parent's. An empty
 // top-level array (the default) makes a composite that images nothing. The
 // text is parsed once, when the property is set.
 #pragma once

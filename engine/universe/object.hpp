@@ -42,10 +42,20 @@ struct PushedState {
 };
 
 // How an object's surface temperature varies (spec 4.3.1.3): uniform
-// (temperature_K everywhere) or subsolar (eq. 12: T_ss cos^(1/4) of the angle
-// from the subsolar point on the day side, a constant night temperature).
-enum class ThermalModel : int { uniform = 0, subsolar = 1 };
+// (temperature_K everywhere); subsolar (eq. 12: T_ss cos^(1/4) of the angle
+// from the subsolar point on the day side, the night side cooling toward
+// night_temperature_K); eclipse (satellites: temperature_K in sunlight,
+// eclipse_temperature_K in the Earth's shadow, radiative equilibrium in the
+// penumbra).
+enum class ThermalModel : int { uniform = 0, subsolar = 1, eclipse = 2 };
 const std::vector<std::string>& thermal_model_names();
+
+// How a distant area source smaller than a sample is imaged (spec 4.1.6.1):
+// detailed (the sum over its visible tessellations, each with its SRF and
+// BRDF) or simple (a Lambertian sphere of equal volume with the phase law);
+// automatic is detailed for satellites and missiles, simple otherwise.
+enum class PointSourceModel : int { automatic = 0, detailed = 1, simple = 2 };
+const std::vector<std::string>& point_source_model_names();
 
 // Physical properties of a body-like object (satellites, vehicles, missiles;
 // central bodies have fixed shapes).
@@ -63,6 +73,9 @@ struct BodyProperties {
   ThermalModel thermal_model = ThermalModel::uniform;
   double subsolar_temperature_K = 390.0;  // the Moon's (Lawson and Jakosky)
   double night_temperature_K = 95.0;
+  double eclipse_temperature_K = 200.0;   // thermal model eclipse: in full shadow
+  PointSourceModel point_source_model = PointSourceModel::automatic;
+  std::string spectrum;  // a tabulated self-radiance (universe/spectrum_table.hpp) instead of eps B(T); "" none
 };
 
 // The shape parts of a body in its body frame: the composite's parts, one part

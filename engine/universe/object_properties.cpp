@@ -5,7 +5,6 @@
 #include "core/error.hpp"
 #include "core/limits.hpp"
 #include "universe/composite.hpp"
-#include "universe/materials.hpp"
 #include "universe/sensor_properties.hpp"
 
 namespace eoir::universe {
@@ -26,12 +25,6 @@ void refuse_central_body(const Object& o, const char* field) {
 std::vector<std::string> shape_names() {
   std::vector<std::string> names;
   for (const auto& s : shapes()) names.push_back(s.name);
-  return names;
-}
-
-std::vector<std::string> material_choices() {
-  std::vector<std::string> names;
-  for (const char* m : material_names()) names.push_back(m);
   return names;
 }
 
@@ -64,14 +57,15 @@ std::vector<Spec> body_properties(bool missile) {
                      o.body.dimensions_m = a;
                    },
                    Range{0, max_length_m, true}});
-  t.push_back(Spec{"material", ValueType::string, "", "Surface material (spec 4.3.3-4.3.5)",
+  t.push_back(Spec{"material", ValueType::string, "",
+                   "Surface material (spec 4.1.4.1, 4.3.3-4.3.5, Appendix A): gray_body (flat SRF = reflectance, "
+                   "Lambertian) or a material of the data folder or the user's (eoir_material_add)",
                    [](const Object& o) { return Value(o.body.material); },
                    [](Object& o, const Value& v) {
                      const std::string& m = string_of(v, "material");
-                     check_material(m, "material");
-                     o.body.material = m;
-                   },
-                   Range{}, material_choices()});
+                     if (m.empty()) throw Error(Status::unknown_name, "material: must not be empty");
+                     o.body.material = m;  // the engine checks the name against its materials
+                   }});
   t.push_back(number_property<Object>("temperature_K", "K", "Surface temperature (uniform thermal model)",
                                       [](Object& o) -> auto& { return o.body.temperature_K; },
                                       Range{0, max_temperature_K}));
@@ -91,8 +85,9 @@ std::vector<Spec> body_properties(bool missile) {
                    }});
   t.push_back(enum_property<Object, ThermalModel>(
       "thermal_model",
-      "uniform (temperature_K everywhere) or subsolar (spec 4.3.1.3 eq. 12: T_ss cos^(1/4) of the angle from the "
-      "subsolar point by day, night_temperature_K by night)",
+      "uniform (temperature_K everywhere), subsolar (spec 4.3.1.3 eq. 12: T_ss cos^(1/4) of the angle from the "
+      "subsolar point by day, night_temperature_K by night) or eclipse (temperature_K in sunlight, "
+      "eclipse_temperature_K in shadow)",
       [](Object& o) -> auto& { return o.body.thermal_model; }, thermal_model_names()));
   t.push_back(number_property<Object>("subsolar_temperature_K", "K", "T_ss of the subsolar thermal model (eq. 12)",
                                       [](Object& o) -> auto& { return o.body.subsolar_temperature_K; },
@@ -101,6 +96,21 @@ std::vector<Spec> body_properties(bool missile) {
                                       "Night-side temperature of the subsolar thermal model",
                                       [](Object& o) -> auto& { return o.body.night_temperature_K; },
                                       Range{0, max_temperature_K}));
+  t.push_back(number_property<Object>("eclipse_temperature_K", "K",
+                                      "Thermal model eclipse: the temperature in full shadow (radiative equilibrium "
+                                      "T^4 = T_e^4 + f (T^4 - T_e^4) with the visible fraction f of the solar disc)",
+                                      [](Object& o) -> auto& { return o.body.eclipse_temperature_K; },
+                                      Range{0, max_temperature_K}));
+  t.push_back(enum_property<Object, PointSourceModel>(
+      "point_source_model",
+      "Imaged smaller than a sample (spec 4.1.6.1): detailed (sum over the visible tessellations), simple "
+      "(Lambertian sphere with the phase law) or automatic (detailed for satellites and missiles)",
+      [](Object& o) -> auto& { return o.body.point_source_model; }, point_source_model_names()));
+  t.push_back(Spec{"spectrum", ValueType::string, "",
+                   "Tabulated self-radiance (spec 4.1.4): the name of an entry of the engine's spectrum table "
+                   "(\"sun\", or one added with eoir_spectrum_add) used instead of eps B(T); \"\" for none",
+                   [](const Object& o) { return Value(o.body.spectrum); },
+                   [](Object& o, const Value& v) { o.body.spectrum = string_of(v, "spectrum"); }});
   t.push_back(number_property<Object>(
       "patch_size_m", "m",
       "Edge of the patches dA the surface is divided into (spec 4.1.5.2); 0 = automatic (the imaging sensor's "
@@ -140,7 +150,12 @@ std::vector<Spec> sensor_object_properties() {
 }  // namespace
 
 const std::vector<std::string>& thermal_model_names() {
-  static const std::vector<std::string> names{"uniform", "subsolar"};
+  static const std::vector<std::string> names{"uniform", "subsolar", "eclipse"};
+  return names;
+}
+
+const std::vector<std::string>& point_source_model_names() {
+  static const std::vector<std::string> names{"automatic", "detailed", "simple"};
   return names;
 }
 

@@ -35,6 +35,7 @@ struct ShapePart {
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // part -> body
   std::optional<double> temperature_K;  // else the object's
   std::optional<double> reflectance;    // else the object's
+  std::optional<std::string> material;  // else the object's
 };
 
 }  // namespace eoir::universe

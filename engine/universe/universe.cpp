@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "core/limits.hpp"
 #include "universe/central_bodies.hpp"
+#include "universe/spectrum_table.hpp"
 
 namespace eoir::universe {
 namespace {
@@ -64,6 +65,7 @@ Object& Universe::add(ObjectKind kind, const std::string& name, const std::strin
                                               "' is not a central body (Sun, Mercury, Venus, Earth, Mars, Jupiter, "
                                               "Saturn, Uranus, Neptune, Moon)");
       o.central_body = body->id;
+      if (body->id == CentralBody::sun) o.body.spectrum = sun_spectrum;  // its measured radiance (spec 4.1.4)
       o.body.shape = ShapeKind::oblate;
       o.body.dimensions_m = {body->equatorial_radius_m, body->polar_radius_m};
       break;

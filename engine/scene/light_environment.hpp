@@ -1,0 +1,38 @@
+// The light that can reach a surface of the world (spec 4.1.5.3, eq. 4): the
+// Sun (eq. 6, E = L_tab dOmega_sun, times the visible fraction of its disc),
+// and every other object as a source: reduced to a Lambertian sphere of equal
+// volume with the phase law (eq. 7) or, when it looks larger than the Sun or
+// the Moon from the Earth, summed over its tessellation (eq. 8). The
+// background term E_bkg / pi joins here with the sky's background light.
+// Single bounce: the light a source reflects is the Sun's only (4.1.6.1).
+#pragma once
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/eclipse.hpp"
+#include "radiometry/brdf.hpp"
+
+namespace eoir::scene {
+
+using Vec3 = Eigen::Vector3d;
+
+// An object as a source of eq. 7.
+struct ObjectLight {
+  std::int32_t object = -1;           // world id
+  Vec3 position_m = Vec3::Zero();     // observer-relative
+  double radius_m = 0.0;              // volumetric mean radius of its true shape
+  double bounding_radius_m = 0.0;
+  // E_sun(lambda) SRF(lambda) 2 / (3 pi) at the source, times its visible
+  // fraction of the Sun: multiply by Phase(psi) dOmega (W cm^-2 sr^-1 um^-1).
+  std::vector<double> reflected;
+  // Overall emittance times B(T_eff): multiply by dOmega.
+  std::vector<double> emitted;
+  bool area_source = false;           // its tessellation can serve eq. 8 (resolved objects)
+};
+
+// The phase function of a Lambertian sphere, eq. 7: (sin psi + (pi - psi)
+// cos psi) / pi, psi the Sun-source-observer angle.
+double lambertian_sphere_phase(double psi_rad);
+
+}  // namespace eoir::scene

@@ -1,0 +1,47 @@
+#include "scene/surface_spectrum.hpp"
+
+#include <algorithm>
+
+#include "radiometry/planck.hpp"
+
+namespace eoir::scene {
+namespace {
+radiometry::Brdf brdf_of(const universe::Material& m) {
+  return m.gray_body ? radiometry::Brdf(universe::BrdfParameters{}) : radiometry::Brdf(m.brdf);
+}
+}  // namespace
+
+SurfaceSpectrum::SurfaceSpectrum(const universe::Material& material, double gray_reflectance,
+                                 const radiometry::SpectralView& view)
+    : view_(&view), gray_(material.gray_body), gray_reflectance_(gray_reflectance), brdf_(brdf_of(material)) {
+  const radiometry::SpectralBand& b = view.band;
+  srf_ = gray_ ? std::vector<double>(static_cast<std::size_t>(b.intervals), gray_reflectance)
+               : material.reflectance.interval_means(b.low_um, b.interval_um(), b.intervals);
+  reflects_ = std::any_of(srf_.begin(), srf_.end(), [](double r) { return r > 0.0; });
+}
+
+void SurfaceSpectrum::add_emission(double temperature_K, std::vector<double>& out) const {
+  if (gray_) {
+    const std::vector<double> e = view_->gray_body_spectrum(temperature_K, gray_reflectance_);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] += e[i];
+    return;
+  }
+  const radiometry::SpectralBand& b = view_->band;
+  const bool exact = view_->integration == BandIntegration::exact;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const double B = exact ? radiometry::planck_band_radiance(temperature_K, b.grid_wavelength_um(static_cast<std::int64_t>(i)),
+                                                              b.grid_wavelength_um(static_cast<std::int64_t>(i)) + b.interval_um()) /
+                                 b.interval_um()
+                           : radiometry::planck_radiance(view_->sample_wavelengths_um[i], temperature_K);
+    out[i] += (1.0 - srf_[i]) * B;
+  }
+}
+
+double SurfaceSpectrum::emission_radiance(double temperature_K) const {
+  if (gray_) return view_->gray_body_radiance(temperature_K, gray_reflectance_);
+  std::vector<double> e(srf_.size(), 0.0);
+  add_emission(temperature_K, e);
+  return view_->integrate(e);
+}
+
+}  // namespace eoir::scene

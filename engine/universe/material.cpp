@@ -1,0 +1,164 @@
+#include "universe/material.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace eoir::universe {
+namespace {
+using nlohmann::json;
+
+[[noreturn]] void corrupt(const std::string& where, const std::string& what) {
+  throw Error(Status::corrupt_file, where + ": " + what);
+}
+
+double number(const json& j, const std::string& key, const std::string& where) {
+  if (!j.contains(key)) corrupt(where + "." + key, "missing");
+  if (!j.at(key).is_number()) corrupt(where + "." + key, "expected a number");
+  const double v = j.at(key).get<double>();
+  if (!std::isfinite(v)) corrupt(where + "." + key, "not finite");
+  return v;
+}
+
+std::vector<double> numbers(const json& j, const std::string& key, const std::string& where) {
+  if (!j.contains(key) || !j.at(key).is_array()) corrupt(where + "." + key, "expected an array of numbers");
+  std::vector<double> out;
+  for (std::size_t i = 0; i < j.at(key).size(); ++i) {
+    const json& x = j.at(key)[i];
+    const std::string at = where + "." + key + "[" + std::to_string(i) + "]";
+    if (!x.is_number()) corrupt(at, "expected a number");
+    out.push_back(x.get<double>());
+    if (!std::isfinite(out.back())) corrupt(at, "not finite");
+  }
+  return out;
+}
+}  // namespace
+
+void validate(const BrdfParameters& b, const std::string& field) {
+  const struct {
+    const char* name;
+    double value, max;
+  } checks[] = {{"k0", b.k0, 1.0}, {"k1", b.k1, 1.0}, {"alpha", b.alpha, BrdfParameters::max_sharpness},
+                {"beta", b.beta, BrdfParameters::max_sharpness}};
+  for (const auto& c : checks)
+    if (!std::isfinite(c.value) || c.value < 0 || c.value > c.max)
+      throw Error(Status::out_of_range, field + "." + c.name + ": must be in [0, " + std::to_string(c.max) +
+                                            "], got " + std::to_string(c.value));
+}
+
+Material material_from_json(const json& doc, const std::string& origin) {
+  if (!doc.is_object()) corrupt(origin, "expected a JSON object");
+  static const char* known[] = {"format", "version", "name", "description", "sources", "brdf", "wavelength_um",
+                                "reflectance", "grid", "extension", "composition"};
+  for (auto it = doc.begin(); it != doc.end(); ++it) {
+    bool ok = false;
+    for (const char* k : known) ok = ok || it.key() == k;
+    if (!ok) corrupt(origin + ": " + it.key(), "unknown field");
+  }
+  if (doc.value("format", std::string()) != "eoir-material") corrupt(origin + ": format", "must be \"eoir-material\"");
+  if (!doc.contains("version") || !doc["version"].is_number_integer() || doc["version"].get<int>() != 1)
+    throw Error(Status::file_version, origin + ": version: this engine reads material format version 1");
+  Material m;
+  if (!doc.contains("name") || !doc["name"].is_string() || doc["name"].get<std::string>().empty())
+    corrupt(origin + ": name", "expected a non-empty string");
+  m.name = doc["name"].get<std::string>();
+  if (m.name == gray_body_material) corrupt(origin + ": name", "gray_body is built in");
+  m.description = doc.value("description", std::string());
+  if (doc.contains("sources") && doc["sources"].is_array())
+    for (const auto& s : doc["sources"])
+      if (s.is_string()) m.sources.push_back(s.get<std::string>());
+  if (m.sources.empty()) corrupt(origin + ": sources", "name where the data come from");
+  if (!doc.contains("brdf") || !doc["brdf"].is_object()) corrupt(origin + ": brdf", "missing");
+  const json& b = doc["brdf"];
+  const std::string where = origin + ": brdf";
+  m.brdf = BrdfParameters{number(b, "k0", where), number(b, "k1", where), number(b, "alpha", where),
+                          number(b, "beta", where)};
+  try {
+    validate(m.brdf, where);
+  } catch (const Error& e) {
+    corrupt(origin, e.what());
+  }
+  const std::vector<double> wl = numbers(doc, "wavelength_um", origin + ":");
+  const std::vector<double> r = numbers(doc, "reflectance", origin + ":");
+  if (wl.size() != r.size())
+    corrupt(origin + ": reflectance", "has " + std::to_string(r.size()) + " values for " + std::to_string(wl.size()) +
+                                          " wavelengths");
+  for (std::size_t i = 0; i < r.size(); ++i)
+    if (r[i] < 0 || r[i] > 1)
+      corrupt(origin + ": reflectance[" + std::to_string(i) + "]", "must be in [0, 1], got " + std::to_string(r[i]));
+  for (std::size_t i = 0; i < wl.size(); ++i)
+    if (!(wl[i] > 0) || (i > 0 && !(wl[i] > wl[i - 1])))
+      corrupt(origin + ": wavelength_um[" + std::to_string(i) + "]", "wavelengths must be positive and increase");
+  try {
+    m.reflectance = TabulatedFunction(wl, r, origin + ": reflectance");
+  } catch (const Error& e) {
+    corrupt(origin, e.what());
+  }
+  return m;
+}
+
+Material load_material(const std::string& path) {
+  constexpr std::uintmax_t max_bytes = 16u << 20;
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error(Status::io, "material: cannot read '" + path + "': " + ec.message());
+  if (size > max_bytes) throw Error(Status::corrupt_file, path + ": larger than 16 MiB, not a material file");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  json doc;
+  try {
+    doc = json::parse(text.str());
+  } catch (const json::exception& e) {
+    corrupt(path, std::string("not valid JSON: ") + e.what());
+  }
+  return material_from_json(doc, path);
+}
+
+MaterialLibrary::MaterialLibrary() {
+  Material gray;
+  gray.name = gray_body_material;
+  gray.description = "Gray body: spectrally flat SRF from the object's reflectance property, Lambertian";
+  gray.sources = {"built in (spec 7.3 \"Gray Body\")"};
+  gray.gray_body = true;
+  materials_[gray.name] = std::make_shared<const Material>(gray);
+}
+
+void MaterialLibrary::load_directory(const std::string& dir) {
+  std::error_code ec;
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  if (ec) throw Error(Status::io, "materials: cannot list '" + dir + "': " + ec.message());
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) add(load_material(f));
+}
+
+void MaterialLibrary::add(const Material& material) {
+  materials_[material.name] = std::make_shared<const Material>(material);
+}
+
+const Material* MaterialLibrary::find(const std::string& name) const {
+  auto it = materials_.find(name);
+  return it == materials_.end() ? nullptr : it->second.get();
+}
+
+const Material& MaterialLibrary::get(const std::string& name, const std::string& field) const {
+  if (const Material* m = find(name)) return *m;
+  std::string list;
+  for (const auto& [n, m] : materials_) list += (list.empty() ? "" : ", ") + n;
+  throw Error(Status::unknown_name, field + ": unknown material '" + name + "' (known: " + list + ")");
+}
+
+std::vector<std::string> MaterialLibrary::names() const {
+  std::vector<std::string> out;
+  for (const auto& [n, m] : materials_) out.push_back(n);
+  return out;
+}
+
+}  // namespace eoir::universe

@@ -1,4 +1,5 @@
 // Engine lifetime, time, object registration and states.
+#include <cstddef>
 #include <cstring>
 
 #include "capi_internal.hpp"
@@ -31,12 +32,14 @@ EOIR_API eoir_status eoir_engine_create(const eoir_engine_desc* desc, eoir_engin
     *engine_out = nullptr;
     EngineOptions options;
     if (desc) {
-      need_size(desc->struct_size, sizeof(eoir_engine_desc), "desc");
+      need_size(desc->struct_size, offsetof(eoir_engine_desc, data_dir), "desc");
       if (desc->threads > 1024)
         throw Error(Status::out_of_range, "desc.threads: at most 1024 worker threads, got " +
                                               std::to_string(desc->threads));
       options.threads = desc->threads;
       options.seed = desc->seed;
+      if (desc->struct_size >= offsetof(eoir_engine_desc, data_dir) + sizeof desc->data_dir && desc->data_dir)
+        options.data_dir = desc->data_dir;
     }
     capi::attach_host_services(options);
     auto handle = std::make_unique<eoir_engine_s>();

@@ -59,6 +59,9 @@ const eoir_api_v1 api_v1 = {
     eoir_truth_count,
     eoir_truth_get,
     eoir_provider_series,
+    eoir_material_load,
+    eoir_spectrum_add,
+    eoir_target_spectrum_get,
 };
 }  // namespace
 

@@ -1,4 +1,5 @@
 // The SNR access constraint and the per-frame truth (spec 5.13, 7.8).
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -22,6 +23,24 @@ EOIR_API eoir_status eoir_snr_constraint(eoir_engine engine, const char* sensor,
       e.set_time(EngineTime::from(JulianDate{static_cast<TimeScale>(time->scale), time->jd1, time->jd2}));
     }
     *snr_out = e.target_metrics(s, t).snr;
+  });
+}
+
+EOIR_API eoir_status eoir_target_spectrum_get(eoir_engine engine, const char* sensor, const char* target,
+                                              double* wavelengths_um, double* irradiance_W_cm2_um, size_t capacity,
+                                              size_t* count_out) {
+  return with_engine(engine, [&](Engine& e) {
+    need(count_out, "count_out");
+    const std::string s = str(sensor, "sensor");
+    const auto w = e.world(s);
+    const std::vector<double> E = metrics::find_target(*w, e.universe(), str(target, "target")).point_spectral_irradiance();
+    *count_out = E.size();
+    if (!wavelengths_um || !irradiance_W_cm2_um) return;
+    if (capacity < E.size())
+      throw Error(Status::buffer_too_small, "capacity: " + std::to_string(E.size()) + " values needed");
+    const auto& wl = w->spectral().sample_wavelengths_um;
+    std::copy(wl.begin(), wl.end(), wavelengths_um);
+    std::copy(E.begin(), E.end(), irradiance_W_cm2_um);
   });
 }
 

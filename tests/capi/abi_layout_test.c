@@ -32,6 +32,7 @@ int main(void) {
   CHECK_SIZE(eoir_engine_desc, 16);
   CHECK_LAYOUT(eoir_engine_desc, threads, 4);
   CHECK_LAYOUT(eoir_engine_desc, seed, 8);
+  CHECK_LAYOUT(eoir_engine_desc, data_dir, 16); /* 1.3 */
   CHECK_SIZE(eoir_time, 24);
   CHECK_LAYOUT(eoir_time, jd1, 8);
   CHECK_LAYOUT(eoir_time, jd2, 16);
@@ -45,6 +46,7 @@ int main(void) {
   CHECK_LAYOUT(eoir_property_info, type, 16);
   CHECK_LAYOUT(eoir_property_info, unit, 24);
   CHECK_LAYOUT(eoir_property_info, description, 32);
+  CHECK_LAYOUT(eoir_property_info, flags, 40); /* 1.3 */
   CHECK_SIZE(eoir_element_info, 40);
   CHECK_LAYOUT(eoir_element_info, name, 8);
   CHECK_LAYOUT(eoir_element_info, type, 16);

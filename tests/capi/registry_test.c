@@ -11,10 +11,22 @@ static void version(void) {
 
 static void lifetime(void) {
   eoir_engine e = NULL;
-  eoir_engine_desc bad = {0, 0, 1};
+  eoir_engine_desc bad, v1;
+  memset(&bad, 0, sizeof bad);
   FAILS(eoir_engine_create(NULL, NULL), EOIR_ERR_NULL_ARGUMENT, "engine_out");
   FAILS(eoir_engine_create(&bad, &e), EOIR_ERR_STRUCT_SIZE, "desc.struct_size");
   CHECK(e == NULL);
+  /* A host compiled against ABI 1.0 passes the 16-byte struct: accepted. */
+  memset(&v1, 0, sizeof v1);
+  v1.struct_size = 16;
+  v1.seed = 7;
+  OK(eoir_engine_create(&v1, &e));
+  eoir_engine_destroy(e);
+  e = NULL;
+  /* threads are bounded */
+  v1.threads = 1000000000u;
+  FAILS(eoir_engine_create(&v1, &e), EOIR_ERR_OUT_OF_RANGE, "desc.threads");
+  v1.threads = 0;
   OK(eoir_engine_create(NULL, &e));
   eoir_engine_destroy(e);
   eoir_engine_destroy(NULL); /* accepted */

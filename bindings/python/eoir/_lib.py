@@ -90,7 +90,8 @@ eoir_engine = c_void_p
 class eoir_engine_desc(Structure):
     _fields_ = [("struct_size", c_uint32),
                 ("threads", c_uint32),
-                ("seed", c_uint64)]
+                ("seed", c_uint64),
+                ("data_dir", c_char_p)]  # appended in 1.3
 
 
 class eoir_time(Structure):
@@ -231,6 +232,9 @@ _SIGNATURES = {
     "eoir_truth_get": (eoir_status, [eoir_engine, _c_str, c_size_t, POINTER(eoir_truth)]),
     "eoir_provider_series": (eoir_status, [eoir_engine, _c_str, _c_str, _c_str, _c_str, POINTER(eoir_time),
                                            c_size_t, _c_dblp]),
+    "eoir_material_load": (eoir_status, [eoir_engine, _c_str]),
+    "eoir_spectrum_add": (eoir_status, [eoir_engine, _c_str, _c_dblp, _c_dblp, c_size_t]),
+    "eoir_target_spectrum_get": (eoir_status, [eoir_engine, _c_str, _c_str, _c_dblp, _c_dblp, c_size_t, _c_sizep]),
     "eoir_plugin_entry": (eoir_status, [c_uint32, POINTER(eoir_host_api), POINTER(c_void_p)]),
 }
 
@@ -291,7 +295,10 @@ class eoir_api_v1(Structure):
                 ("truth_count", _fn("eoir_truth_count")),
                 ("truth_get", _fn("eoir_truth_get")),
                 # appended in 1.3
-                ("provider_series", _fn("eoir_provider_series"))]
+                ("provider_series", _fn("eoir_provider_series")),
+                ("material_load", _fn("eoir_material_load")),
+                ("spectrum_add", _fn("eoir_spectrum_add")),
+                ("target_spectrum_get", _fn("eoir_target_spectrum_get"))]
 
 
 # ------------------------------------------------------------------- loading

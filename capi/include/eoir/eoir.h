@@ -100,8 +100,11 @@ typedef struct eoir_engine_s* eoir_engine;
 
 typedef struct eoir_engine_desc {
   uint32_t struct_size; /* sizeof(eoir_engine_desc) */
-  uint32_t threads;     /* worker threads, 0 = all cores */
+  uint32_t threads;     /* worker threads, 0 = all cores, at most 1024 */
   uint64_t seed;        /* seed of the noise generator (saved in the state) */
+  /* appended in 1.3; read only when struct_size covers it */
+  const char* data_dir; /* the data folder (solar spectrum, materials, Earth maps, stars); NULL: $EOIR_DATA_DIR,
+                           else share/eoir/data beside the library, else the build tree's */
 } eoir_engine_desc;
 
 /* desc may be NULL for defaults (all cores, seed 1). The new engine holds the
@@ -269,6 +272,20 @@ EOIR_API eoir_status eoir_provider_series(eoir_engine engine, const char* group,
                                           const char* sensor, const char* target, const eoir_time* times,
                                           size_t count, double* values_out);
 
+/* ------------------------------------------------------ materials, spectra */
+/* Materials (spec 4.1.4.1): the data folder's (see `eoir properties`), gray_body,
+ * and the user's. Adds or replaces the material a file defines (format
+ * schemas/material.schema.json: SRF on 0.28-28 um, emissivity 1 - SRF, BRDF
+ * parameters of eq. 1); EOIR_ERR_CORRUPT_FILE names the field and file. Objects
+ * then take its name in their `material` property. Saved with the state. */
+EOIR_API eoir_status eoir_material_load(eoir_engine engine, const char* path);
+/* Adds or replaces a tabulated spectral radiance (spec 4.1.4: the table whose
+ * entry 0 is the Sun): count >= 2 points, wavelengths strictly increasing,
+ * radiances >= 0 in W/(cm^2 sr um). Objects take its name in their `spectrum`
+ * property (self-radiance instead of eps B(T)). Saved with the state. */
+EOIR_API eoir_status eoir_spectrum_add(eoir_engine engine, const char* name, const double* wavelength_um,
+                                       const double* radiance_W_cm2_sr_um, size_t count);
+
 /* ------------------------------------------------------------ save, restore */
 /* The whole engine state (objects, properties, sensors, time, noise seeds) as
  * a versioned JSON .scd file (schemas/scd.schema.json). Written to a
@@ -365,6 +382,15 @@ EOIR_API eoir_status eoir_pick_get(eoir_engine engine, const char* sensor, int32
 EOIR_API eoir_status eoir_snr_constraint(eoir_engine engine, const char* sensor, const char* target,
                                          const eoir_time* time, double* snr_out);
 
+/* The spectral irradiance at the aperture of `target` seen by `sensor` as a
+ * point (spec 4.1.6.1: its detailed or simple model, eq. 7 or the sum over
+ * its tessellations) at the engine time, on the sensor's spectral grid:
+ * wavelengths_um and irradiance (W/(cm^2 um)) may be NULL to ask for
+ * *count_out. (1.3) */
+EOIR_API eoir_status eoir_target_spectrum_get(eoir_engine engine, const char* sensor, const char* target,
+                                              double* wavelengths_um, double* irradiance_W_cm2_um, size_t capacity,
+                                              size_t* count_out);
+
 /* Per-frame truth: each object in the field of the last frame of `sensor`. */
 typedef struct eoir_truth {
   uint32_t struct_size;
@@ -453,6 +479,9 @@ typedef struct eoir_api_v1 {
   /* appended in 1.3 */
   eoir_status (*provider_series)(eoir_engine, const char*, const char*, const char*, const char*, const eoir_time*,
                                  size_t, double*);
+  eoir_status (*material_load)(eoir_engine, const char*);
+  eoir_status (*spectrum_add)(eoir_engine, const char*, const double*, const double*, size_t);
+  eoir_status (*target_spectrum_get)(eoir_engine, const char*, const char*, double*, double*, size_t, size_t*);
 } eoir_api_v1;
 
 /* The plugin's one entry point (resolved by name with dlsym). Returns, in

@@ -19,7 +19,7 @@ namespace eoir::universe {
 // Eq. 1: k0 Lambertian fraction; k1 backscatter fraction of the rest;
 // alpha, beta sharpness of the forward (specular) and backscatter lobes.
 struct BrdfParameters {
-  double k0 = 1.0, k1 = 0.0, alpha = 1.0, beta = 1.0;
+  double k0 = 1.0, k1 = 0.0, alpha = 0.0, beta = 0.0;  // Lambertian
   static constexpr double max_sharpness = 1000.0;
 };
 // Throws out_of_range naming `field` (e.g. "burnished_aluminum.json: brdf.k0").

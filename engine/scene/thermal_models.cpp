@@ -1,0 +1,294 @@
+#include "scene/thermal_models.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/constants.hpp"
+#include "core/error.hpp"
+
+namespace eoir::scene {
+namespace {
+
+using constants::deg_per_rad;
+using constants::pi;
+using constants::rad_per_deg;
+
+constexpr double kHoursPerDay = 24.0;
+
+void require_range(double value, double lo, double hi, const std::string& field) {
+  require_finite(value, field);
+  if (value < lo || value > hi)
+    throw Error(Status::out_of_range, field + ": " + std::to_string(value) + " outside [" + std::to_string(lo) + ", " +
+                                          std::to_string(hi) + "]");
+}
+
+// x wrapped into [0, period).
+double wrap(double x, double period) {
+  double r = std::fmod(x, period);
+  if (r < 0.0) r += period;
+  return r >= period ? 0.0 : r;
+}
+
+// Hour angle wrapped into (-180, 180] deg.
+double wrap_hour_angle_deg(double h) {
+  double r = wrap(h, 360.0);
+  return r > 180.0 ? r - 360.0 : r;
+}
+
+void check_body(const AirlessThermal& body) {
+  require_positive(body.subsolar_K, "subsolar_temperature_K");
+  require_positive(body.night_min_K, "night_temperature_K");
+  require_positive(body.solar_day_s, "solar_day_s");
+  require_range(body.dusk_elevation_deg, 1e-6, 90.0, "dusk_elevation_deg");
+}
+
+}  // namespace
+
+// ---- The Sun seen from the Earth --------------------------------------------
+
+double solar_declination_deg(double day_of_year) {
+  require_finite(day_of_year, "day_of_year");
+  const double g = 2.0 * pi * (day_of_year - 1.0) / 365.0;  // Spencer's day angle
+  const double rad = 0.006918 - 0.399912 * std::cos(g) + 0.070257 * std::sin(g) - 0.006758 * std::cos(2 * g) +
+                     0.000907 * std::sin(2 * g) - 0.002697 * std::cos(3 * g) + 0.001480 * std::sin(3 * g);
+  return rad * deg_per_rad;
+}
+
+double equation_of_time_min(double day_of_year) {
+  require_finite(day_of_year, "day_of_year");
+  const double g = 2.0 * pi * (day_of_year - 1.0) / 365.0;
+  return 229.18 * (0.000075 + 0.001868 * std::cos(g) - 0.032077 * std::sin(g) - 0.014615 * std::cos(2 * g) -
+                   0.040849 * std::sin(2 * g));
+}
+
+CalendarInstant calendar_instant(const EngineTime& time) {
+  const JulianDate utc = time.to(TimeScale::utc);
+  // Whole days Z and fraction F of JD + 0.5, kept apart for precision.
+  const double a = utc.jd1 + 0.5;
+  double z = std::floor(a) + std::floor(utc.jd2);
+  double f = (a - std::floor(a)) + (utc.jd2 - std::floor(utc.jd2));
+  if (f >= 1.0) {
+    f -= 1.0;
+    z += 1.0;
+  }
+  // Gregorian calendar date (Meeus 1998, Astronomical Algorithms, ch. 7).
+  double big_a = z;
+  if (z >= 2299161.0) {
+    const double alpha = std::floor((z - 1867216.25) / 36524.25);
+    big_a = z + 1.0 + alpha - std::floor(alpha / 4.0);
+  }
+  const double b = big_a + 1524.0;
+  const double c = std::floor((b - 122.1) / 365.25);
+  const double d = std::floor(365.25 * c);
+  const double e = std::floor((b - d) / 30.6001);
+  const double day = b - d - std::floor(30.6001 * e);
+  const double month = e < 14.0 ? e - 1.0 : e - 13.0;
+  const long year = static_cast<long>(month > 2.0 ? c - 4716.0 : c - 4715.0);
+  const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+  const double k = leap ? 1.0 : 2.0;
+  const double n = std::floor(275.0 * month / 9.0) - k * std::floor((month + 9.0) / 12.0) + day - 30.0;
+  return {n + f, kHoursPerDay * f};
+}
+
+double local_solar_time_h(double utc_hours, double longitude_deg, double day_of_year) {
+  require_finite(utc_hours, "utc_hours");
+  require_finite(longitude_deg, "longitude_deg");
+  return wrap(utc_hours + longitude_deg / 15.0 + equation_of_time_min(day_of_year) / 60.0, kHoursPerDay);
+}
+
+double local_solar_time_h(const EngineTime& time, double longitude_deg) {
+  const CalendarInstant c = calendar_instant(time);
+  return local_solar_time_h(c.utc_hours, longitude_deg, c.day_of_year);
+}
+
+SunriseSunset sunrise_sunset(double latitude_deg, double declination_deg, double horizon_elevation_deg) {
+  require_range(latitude_deg, -90.0, 90.0, "latitude_deg");
+  require_range(declination_deg, -90.0, 90.0, "declination_deg");
+  require_range(horizon_elevation_deg, -90.0, 90.0, "horizon_elevation_deg");
+  const double lat = latitude_deg * rad_per_deg, dec = declination_deg * rad_per_deg;
+  const double a = std::sin(lat) * std::sin(dec), b = std::cos(lat) * std::cos(dec);
+  const double sin_e0 = std::sin(horizon_elevation_deg * rad_per_deg);
+  // Elevation over the day: sin e = a + b cos h.
+  if (b <= 1e-12 || (sin_e0 - a) / b <= -1.0)
+    return a + b > sin_e0 ? SunriseSunset{0.0, 24.0} : SunriseSunset{12.0, 12.0};
+  const double c = (sin_e0 - a) / b;
+  if (c >= 1.0) return {12.0, 12.0};
+  const double h0_h = std::acos(c) * deg_per_rad / 15.0;
+  return {12.0 - h0_h, 12.0 + h0_h};
+}
+
+// ---- 1. Earth land and water ------------------------------------------------
+
+DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
+                           const DiurnalShape& shape)
+    : t_min_K_(t_min_K), t_max_K_(t_max_K) {
+  require_finite(t_min_K, "t_min_K");
+  require_finite(t_max_K, "t_max_K");
+  if (t_min_K > t_max_K)
+    throw Error(Status::out_of_range,
+                "t_min_K: " + std::to_string(t_min_K) + " above t_max_K " + std::to_string(t_max_K));
+  require_range(shape.max_lag_h, 0.0, 3.0, "max_lag_h");
+  require_range(shape.min_day_length_h, 1e-3, 12.0, "min_day_length_h");
+
+  const double day_h = std::clamp(sunrise_sunset(latitude_deg, declination_deg, shape.horizon_elevation_deg).length_h(),
+                                  shape.min_day_length_h, kHoursPerDay);
+  sunrise_h_ = 12.0 - 0.5 * day_h;
+  sunset_h_ = 12.0 + 0.5 * day_h;
+  const double lag_h = shape.max_lag_h * std::sin(pi * day_h / kHoursPerDay);
+  time_of_max_h_ = 12.0 + lag_h;
+  half_period_h_ = 2.0 * (time_of_max_h_ - sunrise_h_);  // cos = 0 at sunrise: T(t_sr) = t_min
+
+  const double range_K = t_max_K - t_min_K;
+  const double theta_s = pi * (sunset_h_ - time_of_max_h_) / half_period_h_;  // in (0, pi/2) for a day < 24 h
+  sunset_K_ = t_min_K + range_K * std::cos(theta_s);
+  asymptote_K_ = t_min_K;
+  decay_h_ = 0.0;
+  const double night_h = kHoursPerDay - day_h;
+  const double slope_K_h = range_K * pi / half_period_h_ * std::sin(theta_s);  // -dT/dt at sunset
+  const double drop_K = sunset_K_ - t_min_K;
+  if (night_h <= 0.0 || drop_K <= 0.0 || slope_K_h <= 0.0) return;  // no night, or a flat one at t_min
+  // k (1 - exp(-n/k)) = q: increasing in k from 0 to n, so a root exists iff q < n.
+  const double q_h = drop_K / slope_K_h;
+  if (q_h >= night_h) {
+    linear_night_ = true;
+    decay_h_ = std::numeric_limits<double>::infinity();
+    return;
+  }
+  double lo = q_h, hi = night_h * night_h / (night_h - q_h);  // g(lo) <= q < g(hi)
+  for (int i = 0; i < 200 && hi - lo > 1e-13 * hi; ++i) {
+    const double k = 0.5 * (lo + hi);
+    if (k * -std::expm1(-night_h / k) < q_h) {
+      lo = k;
+    } else {
+      hi = k;
+    }
+  }
+  decay_h_ = 0.5 * (lo + hi);
+  asymptote_K_ = sunset_K_ - decay_h_ * slope_K_h;
+}
+
+double DiurnalCycle::temperature_K(double local_solar_time_h) const {
+  require_finite(local_solar_time_h, "local_solar_time_h");
+  const double range_K = t_max_K_ - t_min_K_;
+  if (range_K <= 0.0) return t_min_K_;
+  const double u = sunrise_h_ + wrap(local_solar_time_h - sunrise_h_, kHoursPerDay);  // [t_sr, t_sr + 24)
+  if (u <= sunset_h_) return t_min_K_ + range_K * std::cos(pi * (u - time_of_max_h_) / half_period_h_);
+  const double since_sunset_h = u - sunset_h_;
+  if (linear_night_) {
+    const double night_h = kHoursPerDay - (sunset_h_ - sunrise_h_);
+    return sunset_K_ - (sunset_K_ - t_min_K_) * std::min(since_sunset_h / night_h, 1.0);
+  }
+  if (decay_h_ <= 0.0) return t_min_K_;
+  return asymptote_K_ + (sunset_K_ - asymptote_K_) * std::exp(-since_sunset_h / decay_h_);
+}
+
+double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
+                             double latitude_deg, double day_of_year, double local_solar_time_h,
+                             const DiurnalShape& shape) {
+  const universe::DailyExtremes x = climatology.table(kind).at(latitude_deg, day_of_year);
+  return DiurnalCycle(x.t_min_K, x.t_max_K, latitude_deg, solar_declination_deg(day_of_year), shape)
+      .temperature_K(local_solar_time_h);
+}
+
+double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
+                             double latitude_deg, double longitude_deg, const EngineTime& time,
+                             const DiurnalShape& shape) {
+  const CalendarInstant c = calendar_instant(time);
+  return surface_temperature_K(climatology, kind, latitude_deg, c.day_of_year,
+                               local_solar_time_h(c.utc_hours, longitude_deg, c.day_of_year), shape);
+}
+
+// ---- 2. Airless central bodies ----------------------------------------------
+
+double subsolar_temperature_K(double subsolar_K, double cos_phi) {
+  require_non_negative(subsolar_K, "subsolar_temperature_K");
+  require_finite(cos_phi, "cos_phi");
+  return cos_phi > 0.0 ? subsolar_K * std::pow(std::min(cos_phi, 1.0), 0.25) : 0.0;  // eq. 12
+}
+
+double dusk_temperature_K(const AirlessThermal& body) {
+  check_body(body);
+  return std::max(subsolar_temperature_K(body.subsolar_K, std::sin(body.dusk_elevation_deg * rad_per_deg)),
+                  body.night_min_K);
+}
+
+double night_surface_temperature_K(double time_since_dusk_s, double night_length_s, double dusk_K, double dawn_K) {
+  require_finite(time_since_dusk_s, "time_since_dusk_s");
+  require_positive(night_length_s, "night_length_s");
+  require_positive(dawn_K, "dawn_temperature_K");
+  require_finite(dusk_K, "dusk_temperature_K");
+  if (dusk_K < dawn_K)
+    throw Error(Status::out_of_range,
+                "dusk_temperature_K: " + std::to_string(dusk_K) + " below the dawn minimum " + std::to_string(dawn_K));
+  const double x = std::clamp(time_since_dusk_s / night_length_s, 0.0, 1.0);  // t / t_night
+  const double r = std::pow(dusk_K / dawn_K, 4) - 1.0;                        // t_night / tau
+  return dusk_K * std::pow(1.0 + r * x, -0.25);
+}
+
+AirlessPoint airless_surface_point(const AirlessThermal& body, double latitude_deg, double hour_angle_deg,
+                                   double subsolar_latitude_deg) {
+  check_body(body);
+  require_range(latitude_deg, -90.0, 90.0, "latitude_deg");
+  require_range(subsolar_latitude_deg, -90.0, 90.0, "subsolar_latitude_deg");
+  require_finite(hour_angle_deg, "hour_angle_deg");
+  const double h = wrap_hour_angle_deg(hour_angle_deg);
+  const double lat = latitude_deg * rad_per_deg, dec = subsolar_latitude_deg * rad_per_deg;
+  const double a = std::sin(lat) * std::sin(dec), b = std::cos(lat) * std::cos(dec);
+  auto sin_elevation = [&](double h_deg) { return std::clamp(a + b * std::cos(h_deg * rad_per_deg), -1.0, 1.0); };
+  // Eq. 12 by day, not below the reported minimum (cos phi = sin e).
+  auto day_K = [&](double sin_e) { return std::max(subsolar_temperature_K(body.subsolar_K, sin_e), body.night_min_K); };
+
+  AirlessPoint p;
+  const double sin_e = sin_elevation(h);
+  p.sun_elevation_deg = std::asin(sin_e) * deg_per_rad;
+  p.temperature_K = day_K(sin_e);
+  if (b <= 1e-12) return p;  // a pole, or the Sun over a pole: no diurnal motion
+  const double cos_dusk = (std::sin(body.dusk_elevation_deg * rad_per_deg) - a) / b;
+  if (cos_dusk <= -1.0 || cos_dusk >= 1.0) return p;        // the Sun never crosses the dusk elevation
+  const double dusk_h = std::acos(cos_dusk) * deg_per_rad;  // (0, 180)
+  const double cos_rise = -a / b;
+  double rise_h = -180.0, dawn_K = day_K(sin_elevation(180.0));  // the Sun never sets: ends at midnight
+  if (cos_rise > -1.0) {
+    rise_h = -std::acos(std::min(cos_rise, 1.0)) * deg_per_rad;
+    dawn_K = body.night_min_K;
+  }
+  if (h < dusk_h && h > rise_h) return p;
+
+  p.night = true;
+  p.time_since_dusk_s = wrap(h - dusk_h, 360.0) / 360.0 * body.solar_day_s;
+  p.night_length_s = wrap(rise_h - dusk_h, 360.0) / 360.0 * body.solar_day_s;
+  p.temperature_K =
+      night_surface_temperature_K(p.time_since_dusk_s, p.night_length_s, dusk_temperature_K(body), dawn_K);
+  return p;
+}
+
+double airless_surface_temperature_K(const AirlessThermal& body, const Eigen::Vector3d& normal_body,
+                                     const Eigen::Vector3d& sun_body, const Eigen::Vector3d& spin_axis_body) {
+  if (!normal_body.allFinite() || !sun_body.allFinite() || !spin_axis_body.allFinite())
+    throw Error(Status::out_of_range, "airless_surface_temperature_K: vectors must be finite");
+  if (normal_body.norm() == 0.0 || sun_body.norm() == 0.0 || spin_axis_body.norm() == 0.0)
+    throw Error(Status::out_of_range, "airless_surface_temperature_K: vectors must be non-zero");
+  const Eigen::Vector3d w = spin_axis_body.normalized(), n = normal_body.normalized(), s = sun_body.normalized();
+  const double lat_deg = std::asin(std::clamp(n.dot(w), -1.0, 1.0)) * deg_per_rad;
+  const double dec_deg = std::asin(std::clamp(s.dot(w), -1.0, 1.0)) * deg_per_rad;
+  // Hour angle: from the Sun's meridian to the point's, in the sense of rotation.
+  const Eigen::Vector3d n_eq = n - n.dot(w) * w, s_eq = s - s.dot(w) * w;
+  const double hour_deg = std::atan2(s_eq.cross(n_eq).dot(w), s_eq.dot(n_eq)) * deg_per_rad;
+  return airless_surface_point(body, lat_deg, hour_deg, dec_deg).temperature_K;
+}
+
+// ---- 3. Satellites in eclipse -----------------------------------------------
+
+double eclipse_temperature_K(double sunlit_K, double eclipse_K, double sun_fraction) {
+  require_non_negative(sunlit_K, "sunlit_temperature_K");
+  require_non_negative(eclipse_K, "eclipse_temperature_K");
+  require_finite(sun_fraction, "sun_fraction");
+  const double f = std::clamp(sun_fraction, 0.0, 1.0);
+  const double e4 = std::pow(eclipse_K, 4);
+  return std::pow(e4 + f * (std::pow(sunlit_K, 4) - e4), 0.25);
+}
+
+}  // namespace eoir::scene

@@ -452,6 +452,17 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       thermal.subsolar_K = o.body.subsolar_temperature_K;
       thermal.night_K = o.body.night_temperature_K;
       thermal.sun_body = (w.placed.body_to_frame.transpose() * (sun_r - w.geocentric_position_m)).normalized();
+      if (w.central_body) {
+        // Spin axes: the Earth's own; the others' near the ecliptic pole (no
+        // rotation models yet: the Moon's axis is 1.5 deg from it).
+        const universe::CentralBodyInfo& info = universe::central_body_info(o.central_body);
+        const double obliquity = 23.4392911 * constants::rad_per_deg;  // IAU 1980, J2000
+        thermal.airless_night = true;
+        thermal.solar_day_s = info.solar_day_s;
+        thermal.spin_axis_body = info.axes == universe::BodyAxes::earth_fixed
+                                     ? Vec3::UnitZ()
+                                     : Vec3(0, -std::sin(obliquity), std::cos(obliquity));
+      }
     }
     // Thermal model eclipse: radiative equilibrium with the visible fraction
     // f of the solar disc, T^4 = T_e^4 + f (T_sunlit^4 - T_e^4) (memoryless).

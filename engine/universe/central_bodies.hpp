@@ -23,6 +23,7 @@ struct CentralBodyInfo {
   double polar_radius_m;
   int erfa_planet;  // eraPlan94 index (1 Mercury .. 8 Neptune), 0 for Sun, Earth, Moon
   BodyAxes axes;
+  double solar_day_s;  // mean solar day (NASA NSSDC planetary fact sheets; the Moon's synodic month)
 };
 
 // Sun, Mercury..Neptune, Moon, in CentralBody order. Radii: IAU WG on

@@ -42,7 +42,7 @@ Pick pick_sample(const World& world, const SceneImage& scene, std::int64_t c, st
       o.spectral_radiance(hit.part, point_body, shading_normal, -o.to_frame(point_body).normalized());
   if (o.central_body) {
     // Geodetic latitude/longitude on the body's ellipsoid (GeographicLib):
-    // WGS84 on the Earth-fixed Earth; other bodies' axes are J2000-aligned.
+    // WGS84 on the Earth-fixed Earth; planetocentric on the others (IAU axes).
     const double a = o.equatorial_radius_m, flattening = (a - o.polar_radius_m) / a;
     double h = 0;
     GeographicLib::Geocentric(a, flattening)

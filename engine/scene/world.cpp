@@ -9,6 +9,7 @@
 #include "core/frames.hpp"
 #include "geometry/projected_area.hpp"
 #include "universe/object_motion.hpp"
+#include "universe/rotation_models.hpp"
 
 namespace eoir::scene {
 namespace {
@@ -140,7 +141,7 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
   if (w->central_body) {
     const universe::CentralBodyInfo& info = universe::central_body_info(o.central_body);
     po.body_to_frame = info.axes == universe::BodyAxes::earth_fixed ? Mat3(frames::j2000_to_earth_fixed(t).transpose())
-                                                                     : Mat3(Mat3::Identity());
+                                                                     : universe::body_to_j2000(o.central_body, t);
     w->equatorial_radius_m = o.body.dimensions_m[0];
     w->polar_radius_m = o.body.dimensions_m[1];
   } else {
@@ -452,16 +453,10 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       thermal.subsolar_K = o.body.subsolar_temperature_K;
       thermal.night_K = o.body.night_temperature_K;
       thermal.sun_body = (w.placed.body_to_frame.transpose() * (sun_r - w.geocentric_position_m)).normalized();
-      if (w.central_body) {
-        // Spin axes: the Earth's own; the others' near the ecliptic pole (no
-        // rotation models yet: the Moon's axis is 1.5 deg from it).
-        const universe::CentralBodyInfo& info = universe::central_body_info(o.central_body);
-        const double obliquity = 23.4392911 * constants::rad_per_deg;  // IAU 1980, J2000
+      if (w.central_body) {  // spin axis: the body frame's z (the IAU pole)
         thermal.airless_night = true;
-        thermal.solar_day_s = info.solar_day_s;
-        thermal.spin_axis_body = info.axes == universe::BodyAxes::earth_fixed
-                                     ? Vec3::UnitZ()
-                                     : Vec3(0, -std::sin(obliquity), std::cos(obliquity));
+        thermal.solar_day_s = universe::central_body_info(o.central_body).solar_day_s;
+        thermal.spin_axis_body = Vec3::UnitZ();
       }
     }
     // Thermal model eclipse: radiative equilibrium with the visible fraction

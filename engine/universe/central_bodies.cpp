@@ -8,16 +8,16 @@ namespace eoir::universe {
 
 const std::vector<CentralBodyInfo>& central_bodies() {
   static const std::vector<CentralBodyInfo> table = {
-      {CentralBody::sun, "Sun", 695700.0e3, 695700.0e3, 0, BodyAxes::j2000, 25.38 * 86400.0},
-      {CentralBody::mercury, "Mercury", 2440.53e3, 2438.26e3, 1, BodyAxes::j2000, 4222.6 * 3600.0},
-      {CentralBody::venus, "Venus", 6051.8e3, 6051.8e3, 2, BodyAxes::j2000, 2802.0 * 3600.0},
+      {CentralBody::sun, "Sun", 695700.0e3, 695700.0e3, 0, BodyAxes::iau, 25.38 * 86400.0},
+      {CentralBody::mercury, "Mercury", 2440.53e3, 2438.26e3, 1, BodyAxes::iau, 4222.6 * 3600.0},
+      {CentralBody::venus, "Venus", 6051.8e3, 6051.8e3, 2, BodyAxes::iau, 2802.0 * 3600.0},
       {CentralBody::earth, "Earth", 6378137.0, 6356752.314245, 0, BodyAxes::earth_fixed, 86400.0},
-      {CentralBody::mars, "Mars", 3396.19e3, 3376.20e3, 4, BodyAxes::j2000, 88775.244},
-      {CentralBody::jupiter, "Jupiter", 71492.0e3, 66854.0e3, 5, BodyAxes::j2000, 9.9259 * 3600.0},
-      {CentralBody::saturn, "Saturn", 60268.0e3, 54364.0e3, 6, BodyAxes::j2000, 10.656 * 3600.0},
-      {CentralBody::uranus, "Uranus", 25559.0e3, 24973.0e3, 7, BodyAxes::j2000, 17.24 * 3600.0},
-      {CentralBody::neptune, "Neptune", 24764.0e3, 24341.0e3, 8, BodyAxes::j2000, 16.11 * 3600.0},
-      {CentralBody::moon, "Moon", 1737.4e3, 1737.4e3, 0, BodyAxes::j2000, 29.530589 * 86400.0},
+      {CentralBody::mars, "Mars", 3396.19e3, 3376.20e3, 4, BodyAxes::iau, 88775.244},
+      {CentralBody::jupiter, "Jupiter", 71492.0e3, 66854.0e3, 5, BodyAxes::iau, 9.9259 * 3600.0},
+      {CentralBody::saturn, "Saturn", 60268.0e3, 54364.0e3, 6, BodyAxes::iau, 10.656 * 3600.0},
+      {CentralBody::uranus, "Uranus", 25559.0e3, 24973.0e3, 7, BodyAxes::iau, 17.24 * 3600.0},
+      {CentralBody::neptune, "Neptune", 24764.0e3, 24341.0e3, 8, BodyAxes::iau, 16.11 * 3600.0},
+      {CentralBody::moon, "Moon", 1737.4e3, 1737.4e3, 0, BodyAxes::iau, 29.530589 * 86400.0},
   };
   return table;
 }

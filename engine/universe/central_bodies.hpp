@@ -11,10 +11,9 @@ namespace eoir::universe {
 
 enum class CentralBody : int { sun, mercury, venus, earth, mars, jupiter, saturn, uranus, neptune, moon };
 
-// The axes of a central body's body frame: Earth-fixed (ITRS) for the Earth,
-// whose rotation is modeled; J2000-aligned for the others (no rotation
-// models yet).
-enum class BodyAxes : int { j2000, earth_fixed };
+// The axes of a central body's body frame: Earth-fixed (ITRS, ERFA) for the
+// Earth; the IAU rotational elements for the others (rotation_models.hpp).
+enum class BodyAxes : int { iau, earth_fixed };
 
 struct CentralBodyInfo {
   CentralBody id;

@@ -43,8 +43,8 @@ Vec unit_difference(const Vec& a, const Vec& b) {
 
 // Smooth mode: each sample's temperature is T_ss cos^(1/4) of its own angle
 // from the subsolar point (eq. 12) on the day side, computed here from the
-// pick's latitude/longitude on the Moon (J2000-aligned axes) and the Sun's
-// direction (within 0.05 K); with exact band integration its radiance equals
+// pick's surface point (the sensor's position plus the range along the
+// sample's RA/Dec) and the Sun's direction (within 0.05 K); with exact band integration its radiance equals
 // the band integral of that temperature within 0.1 % (the L(T) table). On
 // the night side (the Sun below 0.7 deg, where the night branch starts) the
 // surface cools from the dusk value 390 sin^(1/4)(0.7 deg) = 129.7 K toward
@@ -52,20 +52,24 @@ Vec unit_difference(const Vec& a, const Vec& b) {
 // tested in tests/scene_units).
 TEST(Thermal_4_3_1_3, SmoothModeFollowsEquation12) {
   auto host = moon_view("smooth", "exact");
-  const Vec sun = unit_difference(position(*host, "Sun"), position(*host, "Moon"));
+  const Vec moon = position(*host, "Moon"), sensor = position(*host, "Sensor1");
+  const Vec sun = unit_difference(position(*host, "Sun"), moon);
   int checked = 0;
   for (int y = 16; y < 512; y += 32)
     for (int x = 16; x < 512; x += 32) {
       const auto p = host->pick(x, y);
       if (p.object != "Moon") continue;
-      const double lat = p.lat_deg * M_PI / 180, lon = p.lon_deg * M_PI / 180;
-      // Outward normal of the sphere (the Moon's ellipsoid is a sphere).
-      const Vec n{std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)};
-      const double c = n[0] * sun[0] + n[1] * sun[1] + n[2] * sun[2];
       eoir_pick full{};
       full.struct_size = sizeof full;
       size_t count = 0;
       ASSERT_EQ(host->api().pick_get(host->handle(), "Sensor1", 0, x, y, &full, nullptr, nullptr, 0, &count), EOIR_OK);
+      // Outward normal of the sphere (the Moon's ellipsoid is a sphere) at
+      // the surface point the sample ends on.
+      const double ra = full.right_ascension_deg * M_PI / 180, dec = full.declination_deg * M_PI / 180;
+      const Vec point{sensor[0] + full.range_m * std::cos(dec) * std::cos(ra),
+                      sensor[1] + full.range_m * std::cos(dec) * std::sin(ra), sensor[2] + full.range_m * std::sin(dec)};
+      const Vec n = unit_difference(point, moon);
+      const double c = n[0] * sun[0] + n[1] * sun[1] + n[2] * sun[2];
       if (c < std::sin(0.7 * M_PI / 180)) {  // night
         EXPECT_GE(full.temperature_K, 95.0 - 1e-9) << x << "," << y;
         EXPECT_LE(full.temperature_K, 129.8) << x << "," << y;

@@ -12,7 +12,7 @@ bool power_of_two(std::int64_t n) { return n > 0 && (n & (n - 1)) == 0; }
 }  // namespace
 
 const std::vector<std::string>& scene_mode_names() {
-  static const std::vector<std::string> names{"coarse", "smooth"};
+  static const std::vector<std::string> names{"coarse", "smooth", "bitmap"};
   return names;
 }
 const std::vector<std::string>& band_integration_names() {
@@ -29,8 +29,8 @@ const std::vector<Spec>& fidelity_properties() {
     std::vector<Spec> t;
     t.push_back(enum_property<F, SceneMode>(
         "scene_mode",
-        "Scene generation mode (spec 4.2): coarse (one radiance per patch dA) or smooth (radiance evaluated at "
-        "each sample's own surface point)",
+        "Scene generation mode (spec 4.2): coarse (one radiance per patch dA), smooth (radiance evaluated at "
+        "each sample's own surface point) or bitmap (the same with the material of the body's surface map)",
         [](F& f) -> auto& { return f.scene_mode; }, scene_mode_names(), true));
     t.push_back(integer_property<F>("samples_per_pixel", "count",
                                     "Scene samples per pixel along each axis (spec 4.1.3: 4)",

@@ -14,8 +14,9 @@ namespace eoir {
 
 // Scene generation mode (spec 4.2): coarse gives each sample the radiance of
 // the centre of its patch dA (4.2.1); smooth evaluates each sample's own
-// surface point (4.2.2).
-enum class SceneMode : int { coarse = 0, smooth = 1 };
+// surface point (4.2.2); bitmap does the same with the material (and, on the
+// Earth, land or water) that the body's surface map holds there (4.2.3).
+enum class SceneMode : int { coarse = 0, smooth = 1, bitmap = 2 };
 // Band integration of eq. 48: on the spectral grid of spec 5.3, or exactly
 // (series integral of Planck terms, independent of the interval count).
 enum class BandIntegration : int { grid = 0, exact = 1 };

@@ -1,19 +1,46 @@
 #include "scene/surface_model.hpp"
 
+#include <GeographicLib/Geocentric.hpp>
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.hpp"
+#include "scene/thermal_models.hpp"
+
 namespace eoir::scene {
 
+void Geography::latitude_longitude_deg(const Vec3& p, double& latitude_deg, double& longitude_deg) const {
+  if (geodetic) {
+    double h = 0;
+    const double a = equatorial_radius_m, f = (a - polar_radius_m) / a;
+    GeographicLib::Geocentric(a, f).Reverse(p.x(), p.y(), p.z(), latitude_deg, longitude_deg, h);
+    return;
+  }
+  latitude_deg = std::atan2(p.z(), std::hypot(p.x(), p.y())) * constants::deg_per_rad;
+  longitude_deg = std::atan2(p.y(), p.x()) * constants::deg_per_rad;
+}
+
 SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal, std::vector<double> self_radiance,
-                           const radiometry::SpectralView& view, std::int64_t temperature_table_size)
-    : parts_(std::move(parts)), thermal_(thermal), self_radiance_(std::move(self_radiance)), view_(&view) {
-  if (!self_radiance_.empty()) thermal_.subsolar = false;  // a tabulated radiance has no temperature
-  for (std::size_t p = 0; p < parts_.size(); ++p) reflects_ = reflects_ || reflects(static_cast<std::int32_t>(p));
+                           Geography geography, const radiometry::SpectralView& view,
+                           std::int64_t temperature_table_size)
+    : parts_(std::move(parts)),
+      thermal_(thermal),
+      self_radiance_(std::move(self_radiance)),
+      geography_(std::move(geography)),
+      view_(&view) {
+  if (!self_radiance_.empty()) {  // a tabulated radiance has no temperature and reflects nothing
+    thermal_.subsolar = false;
+    geography_ = Geography{};
+  }
+  if (self_radiance_.empty()) {
+    for (const PartSurface& s : parts_) reflects_ = reflects_ || s.spectrum->reflects();
+    for (const auto* s : geography_.class_spectra) reflects_ = reflects_ || (s && s->reflects());
+    for (const auto* s : geography_.albedo_spectra) reflects_ = reflects_ || (s && s->reflects());
+  }
   for (const PartSurface& s : parts_)
     part_radiance_.push_back(self_radiance_.empty() ? s.spectrum->emission_radiance(s.temperature_K)
                                                     : view.integrate(self_radiance_));
-  if (!varying_temperature() || temperature_table_size <= 0) return;
+  if (!thermal_.subsolar || temperature_table_size <= 0) return;
   const auto n = temperature_table_size;
   table_T0_ = std::min(thermal_.night_K, thermal_.subsolar_K);
   table_dT_ = std::max(std::fabs(thermal_.subsolar_K - thermal_.night_K), 1e-9) / static_cast<double>(n - 1);
@@ -25,28 +52,52 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
   }
 }
 
-double SurfaceModel::temperature_K(std::int32_t part, const Vec3& normal_body) const {
-  return thermal_.at(normal_body, parts_[index(part)].temperature_K);
+const SurfaceSpectrum& SurfaceModel::spectrum(const SurfaceSite& site) const {
+  const Geography& g = geography_;
+  if (g.bitmap()) {
+    double lat = 0, lon = 0;
+    g.latitude_longitude_deg(site.point_body_m, lat, lon);
+    if (g.land_cover) {
+      const std::uint8_t c = g.land_cover->at(lat, lon);
+      if (c < g.class_spectra.size() && g.class_spectra[c]) return *g.class_spectra[c];
+    } else {
+      const SurfaceSpectrum* s = g.albedo_spectra[g.albedo->at(lat, lon)];
+      if (s) return *s;
+    }
+  }
+  return *parts_[index(site.part)].spectrum;
 }
 
-void SurfaceModel::add_emission(std::int32_t part, const Vec3& normal_body, std::vector<double>& out) const {
+double SurfaceModel::temperature_K(const SurfaceSite& site) const {
+  const Geography& g = geography_;
+  if (g.climatology && g.land_mask) {
+    double lat = 0, lon = 0;
+    g.latitude_longitude_deg(site.point_body_m, lat, lon);
+    const auto kind = g.land_mask->at(lat, lon) ? universe::SurfaceKind::land : universe::SurfaceKind::water;
+    return surface_temperature_K(*g.climatology, kind, lat, lon, g.time);
+  }
+  return thermal_.at(site.normal_body, parts_[index(site.part)].temperature_K);
+}
+
+void SurfaceModel::add_emission(const SurfaceSite& site, std::vector<double>& out) const {
   if (!self_radiance_.empty()) {
     for (std::size_t i = 0; i < out.size(); ++i) out[i] += self_radiance_[i];
     return;
   }
-  parts_[index(part)].spectrum->add_emission(temperature_K(part, normal_body), out);
+  spectrum(site).add_emission(temperature_K(site), out);
 }
 
-double SurfaceModel::emission_radiance(std::int32_t part, const Vec3& normal_body) const {
-  if (!varying_temperature()) return part_radiance(part);
-  return parts_[index(part)].spectrum->emission_radiance(temperature_K(part, normal_body));
+double SurfaceModel::emission_radiance(const SurfaceSite& site) const {
+  if (!varying()) return part_radiance(site.part);
+  return spectrum(site).emission_radiance(temperature_K(site));
 }
 
-double SurfaceModel::emission_radiance_interpolated(std::int32_t part, const Vec3& normal_body) const {
-  if (!varying_temperature() || table_.empty()) return emission_radiance(part, normal_body);
-  const auto& row = table_[index(part)];
+double SurfaceModel::emission_radiance_interpolated(const SurfaceSite& site) const {
+  if (!thermal_.subsolar || table_.empty() || geography_.bitmap() || geography_.climatology)
+    return emission_radiance(site);
+  const auto& row = table_[index(site.part)];
   const double last = static_cast<double>(row.size() - 1);
-  const double u = std::clamp((temperature_K(part, normal_body) - table_T0_) / table_dT_, 0.0, last);
+  const double u = std::clamp((temperature_K(site) - table_T0_) / table_dT_, 0.0, last);
   const auto k = std::min(static_cast<std::size_t>(u), row.size() - 2);
   return row[k] + (u - static_cast<double>(k)) * (row[k + 1] - row[k]);
 }

@@ -1,16 +1,21 @@
 // What one object's surface is made of and how hot it is (spec 4.1.4.1,
 // 4.3.1.3): per shape part its material as the view sees it and its
-// temperature, the thermal field that varies it, or a tabulated
-// self-radiance (spec 4.1.4) in place of eps B(T). The world combines it with
-// the light that reaches a point (eq. 4).
+// temperature, the thermal field that varies it, a tabulated self-radiance
+// (spec 4.1.4) in place of eps B(T), and on central bodies the geography
+// that maps, in bitmap mode, give each point its own material (spec 4.2.3)
+// and, with the climatology thermal model, land or water temperatures. The
+// world combines it with the light that reaches a point (eq. 4).
 #pragma once
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
 
+#include "core/time.hpp"
 #include "radiometry/spectral_view.hpp"
 #include "scene/surface_spectrum.hpp"
 #include "scene/thermal_field.hpp"
+#include "universe/surface_climatology.hpp"
+#include "universe/surface_map.hpp"
 
 namespace eoir::scene {
 
@@ -21,38 +26,69 @@ struct PartSurface {
   double temperature_K = 0.0;                 // the uniform thermal model's (or the eclipse model's result)
 };
 
+// A point of the surface: its part, position and outward normal (body frame).
+struct SurfaceSite {
+  std::int32_t part = 0;
+  Vec3 point_body_m = Vec3::Zero();
+  Vec3 normal_body = Vec3::UnitZ();
+};
+
+// A central body's coordinates and the maps read at a point.
+struct Geography {
+  double equatorial_radius_m = 0, polar_radius_m = 0;
+  bool geodetic = false;  // the Earth: WGS84 geodetic latitude; others planetocentric
+  // Bitmap mode: the material of each land-cover class (index 1..18), or of
+  // each albedo value (index 0..255).
+  const universe::RasterLevel* land_cover = nullptr;
+  std::vector<const SurfaceSpectrum*> class_spectra;
+  const universe::RasterLevel* albedo = nullptr;
+  std::vector<const SurfaceSpectrum*> albedo_spectra;
+  // Thermal model climatology: land or water from the mask, then the tables.
+  const universe::RasterLevel* land_mask = nullptr;
+  const universe::SurfaceClimatology* climatology = nullptr;
+  EngineTime time;
+  void latitude_longitude_deg(const Vec3& point_body_m, double& latitude_deg, double& longitude_deg) const;
+  bool bitmap() const { return land_cover || albedo; }
+};
+
 class SurfaceModel {
  public:
   // self_radiance: the tabulated spectral radiance at the view's wavelengths
   // (interval means), or empty. temperature_table_size > 0 builds the L(T)
-  // table of interpolated emission (smooth mode) where the temperature varies.
+  // table of interpolated emission (smooth mode) where the temperature varies
+  // over a part. `geography` may be empty.
   SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal, std::vector<double> self_radiance,
-               const radiometry::SpectralView& view, std::int64_t temperature_table_size);
+               Geography geography, const radiometry::SpectralView& view, std::int64_t temperature_table_size);
   const PartSurface& part(std::int32_t i) const { return parts_[index(i)]; }
   std::size_t part_count() const { return parts_.size(); }
-  // Some part reflects light in the band (SRF > 0 somewhere).
+  // The material at a site (the map's in bitmap mode).
+  const SurfaceSpectrum& spectrum(const SurfaceSite& site) const;
+  // Some part (or map class) reflects light in the band.
   bool reflects() const { return reflects_; }
-  bool reflects(std::int32_t part) const { return self_radiance_.empty() && parts_[index(part)].spectrum->reflects(); }
-  // The temperature varies over a part (the subsolar model).
-  bool varying_temperature() const { return thermal_.subsolar; }
+  bool reflects(const SurfaceSite& site) const { return self_radiance_.empty() && spectrum(site).reflects(); }
+  // The temperature or the material varies over a part.
+  bool varying() const { return thermal_.subsolar || geography_.bitmap() || geography_.climatology; }
   // One radiance per part, whatever the point and the light.
-  bool plain() const { return !reflects_ && !varying_temperature(); }
+  bool plain() const { return !reflects_ && !varying(); }
+  bool bitmap() const { return geography_.bitmap(); }
 
-  double temperature_K(std::int32_t part, const Vec3& normal_body) const;
+  double temperature_K(const SurfaceSite& site) const;
   // Self-emission eps B(T) (or the tabulated radiance) at the view's
-  // wavelengths added to `out`, and its band integral (eq. 48; exact where
-  // the view says), and the same through the L(T) table.
-  void add_emission(std::int32_t part, const Vec3& normal_body, std::vector<double>& out) const;
-  double emission_radiance(std::int32_t part, const Vec3& normal_body) const;
-  double emission_radiance_interpolated(std::int32_t part, const Vec3& normal_body) const;
+  // wavelengths added to `out`, its band integral (eq. 48; exact where the
+  // view says), and the same through the L(T) table.
+  void add_emission(const SurfaceSite& site, std::vector<double>& out) const;
+  double emission_radiance(const SurfaceSite& site) const;
+  double emission_radiance_interpolated(const SurfaceSite& site) const;
   // plain(): the effective radiance of a whole part.
   double part_radiance(std::int32_t part) const { return part_radiance_[index(part)]; }
+  const Geography& geography() const { return geography_; }
 
  private:
   static std::size_t index(std::int32_t part) { return static_cast<std::size_t>(part < 0 ? 0 : part); }
   std::vector<PartSurface> parts_;
   ThermalField thermal_;
   std::vector<double> self_radiance_;
+  Geography geography_;
   const radiometry::SpectralView* view_;
   bool reflects_ = false;
   std::vector<double> part_radiance_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "core/constants.hpp"
@@ -263,25 +264,26 @@ const std::vector<WorldObject::AreaSourcePatch>& WorldObject::area_source(std::s
 std::vector<double> WorldObject::spectral_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
                                                    const Vec3& toward, bool sun_only) const {
   std::vector<double> out(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
-  if (surface->reflects(part)) {
+  const SurfaceSite site{part, point_body_m, normal_body};
+  if (surface->reflects(site)) {
     std::vector<double> E(out.size(), 0.0);
-    const SurfaceSpectrum& s = *surface->part(part).spectrum;
+    const SurfaceSpectrum& s = surface->spectrum(site);
     add_reflected_irradiance(to_frame(point_body_m), placed.body_to_frame * normal_body, toward, s.brdf(), sun_only, E);
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = E[i] * s.srf()[i];
   }
-  surface->add_emission(part, normal_body, out);
+  surface->add_emission(site, out);
   return out;
 }
 
 double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
                                        bool interpolated) const {
   if (surface->plain()) return surface->part_radiance(part);
-  double L = interpolated ? surface->emission_radiance_interpolated(part, normal_body)
-                          : surface->emission_radiance(part, normal_body);
-  if (surface->reflects(part)) {
+  const SurfaceSite site{part, point_body_m, normal_body};
+  double L = interpolated ? surface->emission_radiance_interpolated(site) : surface->emission_radiance(site);
+  if (surface->reflects(site)) {
     const Vec3 p = to_frame(point_body_m);
     std::vector<double> E(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
-    const SurfaceSpectrum& s = *surface->part(part).spectrum;
+    const SurfaceSpectrum& s = surface->spectrum(site);
     add_reflected_irradiance(p, placed.body_to_frame * normal_body, -p.normalized(), s.brdf(), false, E);
     for (std::size_t i = 0; i < E.size(); ++i) E[i] *= s.srf()[i];
     L += world_->view.spectral.integrate(E);
@@ -303,7 +305,7 @@ double WorldObject::patch_radiance(std::int32_t patch) const {
 
 void WorldObject::shading_point(std::int32_t part, const Vec3& point_body_m, Vec3& shade_point_body,
                                 Vec3& normal_body) const {
-  if (world_->view.fidelity.scene_mode == SceneMode::smooth) {
+  if (world_->view.fidelity.scene_mode != SceneMode::coarse) {
     shade_point_body = point_body_m;
     normal_body = normal_at(part, point_body_m);
     return;
@@ -316,7 +318,7 @@ void WorldObject::shading_point(std::int32_t part, const Vec3& point_body_m, Vec
 
 double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m) const {
   if (surface->plain()) return surface->part_radiance(part);
-  if (world_->view.fidelity.scene_mode == SceneMode::smooth)
+  if (world_->view.fidelity.scene_mode != SceneMode::coarse)
     return effective_radiance(part, point_body_m, normal_at(part, point_body_m), true);
   return patch_radiance(geometry::patch_at(tessellation(), placed.parts, part, point_body_m));
 }
@@ -475,9 +477,45 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
                                                    shape[p].reflectance.value_or(o.body.reflectance), field),
                                   T});
     }
+    Geography geography;
+    if (w.central_body) {
+      geography.equatorial_radius_m = w.equatorial_radius_m;
+      geography.polar_radius_m = w.polar_radius_m;
+      geography.geodetic = o.central_body == universe::CentralBody::earth;
+      geography.time = t;
+      // Maps at the level the ground sample distance asks for (spec 4.2.3).
+      const double gsd_m = std::max(w.range_m - w.equatorial_radius_m, 1.0) * sample_angle_rad;
+      if (const universe::BodyMaps* maps = library.maps_of(o.central_body)) {
+        if (f.scene_mode == SceneMode::bitmap && maps->land_cover) {
+          geography.land_cover = &maps->land_cover->level_for(gsd_m, w.equatorial_radius_m);
+          geography.class_spectra.assign(19, nullptr);
+          for (int c = 1; c <= 18; ++c) {
+            char prefix[16];
+            std::snprintf(prefix, sizeof prefix, "igbp_%02d_", c);
+            for (const std::string& name : library.materials.names())
+              if (name.rfind(prefix, 0) == 0)
+                geography.class_spectra[static_cast<std::size_t>(c)] = builder.spectrum(name, 0.0, o.name + ".bitmap");
+          }
+        }
+        if (f.scene_mode == SceneMode::bitmap && maps->albedo) {
+          const universe::RasterLevel& level = maps->albedo->level_for(gsd_m, w.equatorial_radius_m);
+          geography.albedo = &level;
+          for (int v = 0; v < 256; ++v)
+            geography.albedo_spectra.push_back(builder.spectrum(
+                universe::gray_body_material,
+                std::clamp(level.value_offset() + level.value_scale() * v, 0.0, 1.0), o.name + ".bitmap"));
+        }
+        if (o.body.thermal_model == universe::ThermalModel::climatology && maps->land_mask) {
+          geography.land_mask = &maps->land_mask->level_for(gsd_m, w.equatorial_radius_m);
+          geography.climatology = library.climatology.get();
+        }
+      }
+      if (o.body.thermal_model == universe::ThermalModel::climatology && !geography.climatology)
+        throw Error(Status::not_allowed, o.name + ".thermal_model: climatology is the Earth's (land and water tables)");
+    }
     w.surface = std::make_unique<SurfaceModel>(std::move(parts), thermal,
                                                builder.self_radiance(o.body.spectrum, o.name + ".spectrum"),
-                                               world->view.spectral,
+                                               std::move(geography), world->view.spectral,
                                                f.scene_mode == SceneMode::smooth ? f.temperature_table_size : 0);
   }
 
@@ -496,19 +534,22 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     // temperature varies, per part otherwise.
     std::vector<double> srf(n, 0.0), emitted(n, 0.0);
     double total_area = 0;
-    auto add = [&](std::int32_t part, const Vec3& normal_body, double area) {
-      const SurfaceSpectrum& s = *w.surface->part(part).spectrum;
-      for (std::size_t i = 0; i < n; ++i) srf[i] += area * (w.surface->reflects(part) ? s.srf()[i] : 0.0);
+    auto add = [&](const SurfaceSite& site, double area) {
+      const SurfaceSpectrum& s = w.surface->spectrum(site);
+      if (w.surface->reflects(site))
+        for (std::size_t i = 0; i < n; ++i) srf[i] += area * s.srf()[i];
       std::vector<double> e(n, 0.0);
-      w.surface->add_emission(part, normal_body, e);
+      w.surface->add_emission(site, e);
       for (std::size_t i = 0; i < n; ++i) emitted[i] += area * e[i];
       total_area += area;
     };
-    if (w.surface->varying_temperature()) {
-      for (const geometry::Patch& p : w.tessellation().patches) add(p.part, p.normal_body, p.area_m2);
+    if (w.surface->varying()) {
+      for (const geometry::Patch& p : w.tessellation().patches)
+        add(SurfaceSite{p.part, p.centre_body_m, p.normal_body}, p.area_m2);
     } else {
       for (std::size_t p = 0; p < w.placed.parts.size(); ++p)
-        add(static_cast<std::int32_t>(p), Vec3::UnitZ(), geometry::shape_surface_area_m2(w.placed.parts[p].geom));
+        add(SurfaceSite{static_cast<std::int32_t>(p), Vec3::Zero(), Vec3::UnitZ()},
+            geometry::shape_surface_area_m2(w.placed.parts[p].geom));
     }
     if (total_area > 0)
       for (std::size_t i = 0; i < n; ++i) {

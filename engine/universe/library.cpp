@@ -15,7 +15,20 @@ Library Library::load(const std::string& data_dir) {
   if (!std::filesystem::is_directory(materials, ec))
     throw Error(Status::io, "data: no materials folder '" + materials + "' (build the data folder: .ci/setup)");
   lib.materials.load_directory(materials);
+  const std::string earth = data_dir + "/earth/", moon = data_dir + "/moon/";
+  BodyMaps& e = lib.maps[CentralBody::earth];
+  e.land_mask = SurfaceMap::load({earth + "landmask_L0.json", earth + "landmask_L1.json", earth + "landmask_L2.json"});
+  e.land_cover =
+      SurfaceMap::load({earth + "landcover_L0.json", earth + "landcover_L1.json", earth + "landcover_L2.json"});
+  lib.maps[CentralBody::moon].albedo = SurfaceMap::load({moon + "moon_albedo_L0.json", moon + "moon_albedo_L1.json"});
+  lib.maps[CentralBody::mars].albedo = SurfaceMap::load({moon + "mars_albedo_L0.json"});
+  lib.climatology = std::make_shared<const SurfaceClimatology>(SurfaceClimatology::load(data_dir));
   return lib;
+}
+
+const BodyMaps* Library::maps_of(CentralBody body) const {
+  auto it = maps.find(body);
+  return it == maps.end() ? nullptr : &it->second;
 }
 
 }  // namespace eoir::universe

@@ -1,12 +1,18 @@
 // What an engine reads from its data folder (data/README.md) and what the
-// user adds to it: materials (spec 4.1.4.1, Appendix A) and the table of
-// tabulated spectral radiances (4.1.4, the Sun first). Loaded once, when a
+// user adds to it: materials (spec 4.1.4.1, Appendix A), the table of
+// tabulated spectral radiances (4.1.4, the Sun first), the central bodies'
+// surface maps (4.2.3) and the Earth's surface climatology (4.3.1.3). Loaded once, when a
 // world first needs it; shared read-only by every world built from it.
 #pragma once
+#include <map>
+#include <memory>
 #include <string>
 
+#include "universe/central_bodies.hpp"
 #include "universe/material.hpp"
 #include "universe/spectrum_table.hpp"
+#include "universe/surface_climatology.hpp"
+#include "universe/surface_map.hpp"
 
 namespace eoir::universe {
 
@@ -14,9 +20,13 @@ struct Library {
   std::string data_dir;
   MaterialLibrary materials;
   SpectrumTable spectra;
-  // Reads data_dir/materials/*.json and data_dir/solar/e490.txt (throws io
-  // or corrupt_file naming the file).
+  std::map<CentralBody, BodyMaps> maps;
+  std::shared_ptr<const SurfaceClimatology> climatology;
+  // Reads data_dir/materials/*.json, solar/e490.txt, the map pyramids of
+  // earth/ and moon/ (their sidecars and row tables; rows on first use) and
+  // the climatology tables (throws io or corrupt_file naming the file).
   static Library load(const std::string& data_dir);
+  const BodyMaps* maps_of(CentralBody body) const;
 };
 
 }  // namespace eoir::universe

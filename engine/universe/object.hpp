@@ -47,7 +47,9 @@ struct PushedState {
 // night_temperature_K); eclipse (satellites: temperature_K in sunlight,
 // eclipse_temperature_K in the Earth's shadow, radiative equilibrium in the
 // penumbra).
-enum class ThermalModel : int { uniform = 0, subsolar = 1, eclipse = 2 };
+// climatology (the Earth: the diurnal cycle between the monthly mean daily
+// minimum and maximum of its latitude, land or water by the land mask).
+enum class ThermalModel : int { uniform = 0, subsolar = 1, eclipse = 2, climatology = 3 };
 const std::vector<std::string>& thermal_model_names();
 
 // How a distant area source smaller than a sample is imaged (spec 4.1.6.1):

@@ -86,8 +86,9 @@ std::vector<Spec> body_properties(bool missile) {
   t.push_back(enum_property<Object, ThermalModel>(
       "thermal_model",
       "uniform (temperature_K everywhere), subsolar (spec 4.3.1.3 eq. 12: T_ss cos^(1/4) of the angle from the "
-      "subsolar point by day, night_temperature_K by night) or eclipse (temperature_K in sunlight, "
-      "eclipse_temperature_K in shadow)",
+      "subsolar point by day, cooling toward night_temperature_K by night), eclipse (temperature_K in "
+      "sunlight, eclipse_temperature_K in shadow) or climatology (the Earth: diurnal cycle of the monthly "
+      "minimum and maximum of its latitude, land or water; spec 4.3.1.3)",
       [](Object& o) -> auto& { return o.body.thermal_model; }, thermal_model_names()));
   t.push_back(number_property<Object>("subsolar_temperature_K", "K", "T_ss of the subsolar thermal model (eq. 12)",
                                       [](Object& o) -> auto& { return o.body.subsolar_temperature_K; },
@@ -150,7 +151,7 @@ std::vector<Spec> sensor_object_properties() {
 }  // namespace
 
 const std::vector<std::string>& thermal_model_names() {
-  static const std::vector<std::string> names{"uniform", "subsolar", "eclipse"};
+  static const std::vector<std::string> names{"uniform", "subsolar", "eclipse", "climatology"};
   return names;
 }
 

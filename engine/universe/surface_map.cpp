@@ -1,0 +1,133 @@
+#include "universe/surface_map.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace eoir::universe {
+namespace {
+using nlohmann::json;
+
+[[noreturn]] void corrupt(const std::string& where, const std::string& what) {
+  throw Error(Status::corrupt_file, where + ": " + what);
+}
+
+json read_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(Status::io, "map: cannot read '" + path + "'");
+  try {
+    return json::parse(in);
+  } catch (const json::exception& e) {
+    corrupt(path, std::string("not valid JSON: ") + e.what());
+  }
+}
+}  // namespace
+
+RasterLevel::~RasterLevel() {
+  if (!rows_) return;
+  for (std::int64_t i = 0; i < height_; ++i) delete rows_[static_cast<std::size_t>(i)].load();
+}
+
+std::unique_ptr<RasterLevel> RasterLevel::load(const std::string& sidecar) {
+  const json j = read_json(sidecar);
+  std::unique_ptr<RasterLevel> r(new RasterLevel);
+  try {
+    if (j.at("format").get<std::string>() != "eoir-raster") corrupt(sidecar + ": format", "must be eoir-raster");
+    if (j.at("registration").get<std::string>() != "cell") corrupt(sidecar + ": registration", "must be cell");
+    r->width_ = j.at("width").get<std::int64_t>();
+    r->height_ = j.at("height").get<std::int64_t>();
+    r->lon_west_deg_ = j.at("lon_west_deg").get<double>();
+    r->lat_north_deg_ = j.at("lat_north_deg").get<double>();
+    r->cell_deg_ = j.at("cell_deg").get<double>();
+    r->cells_per_degree_ = j.value("cells_per_degree", std::int64_t{0});
+    r->value_scale_ = j.value("value_scale", 1.0);
+    r->value_offset_ = j.value("value_offset", 0.0);
+    const std::string encoding = j.at("encoding").get<std::string>();
+    if (encoding != "uint8" && encoding != "uint8-rle") corrupt(sidecar + ": encoding", "must be uint8 or uint8-rle");
+    r->rle_ = encoding == "uint8-rle";
+    r->data_path_ = (std::filesystem::path(sidecar).parent_path() / j.at("file").get<std::string>()).string();
+  } catch (const json::exception& e) {
+    corrupt(sidecar, std::string("missing or mistyped field: ") + e.what());
+  }
+  if (r->width_ <= 0 || r->height_ <= 0 || r->width_ > 1000000 || r->height_ > 1000000 || !(r->cell_deg_ > 0))
+    corrupt(sidecar, "width, height and cell_deg must be positive");
+  std::ifstream data(r->data_path_, std::ios::binary);
+  if (!data) throw Error(Status::io, "map: cannot read '" + r->data_path_ + "'");
+  data.seekg(0, std::ios::end);
+  const auto size = static_cast<std::uint64_t>(data.tellg());
+  if (r->rle_) {
+    char magic[8];
+    std::uint32_t dims[2];
+    data.seekg(0);
+    data.read(magic, 8);
+    data.read(reinterpret_cast<char*>(dims), 8);
+    if (!data || std::memcmp(magic, "EOIRRLE1", 8) != 0 || dims[0] != r->width_ || dims[1] != r->height_)
+      corrupt(r->data_path_, "not an EOIRRLE1 file of the sidecar's size");
+    r->offsets_.resize(static_cast<std::size_t>(r->height_ + 1));
+    data.read(reinterpret_cast<char*>(r->offsets_.data()), static_cast<std::streamsize>(8 * r->offsets_.size()));
+    if (!data || r->offsets_.back() != size) corrupt(r->data_path_, "truncated row table");
+  } else if (size != static_cast<std::uint64_t>(r->width_ * r->height_)) {
+    corrupt(r->data_path_, "size is not width x height bytes");
+  }
+  r->rows_ = std::make_unique<std::atomic<const std::vector<std::uint8_t>*>[]>(static_cast<std::size_t>(r->height_));
+  for (std::int64_t i = 0; i < r->height_; ++i) r->rows_[static_cast<std::size_t>(i)].store(nullptr);
+  return r;
+}
+
+const std::vector<std::uint8_t>& RasterLevel::row(std::int64_t i) const {
+  std::atomic<const std::vector<std::uint8_t>*>& slot = rows_[static_cast<std::size_t>(i)];
+  if (const auto* cached = slot.load(std::memory_order_acquire)) return *cached;
+  auto decoded = std::make_unique<std::vector<std::uint8_t>>(static_cast<std::size_t>(width_), 0);
+  std::ifstream f(data_path_, std::ios::binary);
+  if (rle_) {
+    const auto begin = offsets_[static_cast<std::size_t>(i)], end = offsets_[static_cast<std::size_t>(i + 1)];
+    std::vector<std::uint8_t> runs(end - begin);
+    f.seekg(static_cast<std::streamoff>(begin));
+    f.read(reinterpret_cast<char*>(runs.data()), static_cast<std::streamsize>(runs.size()));
+    std::size_t x = 0;
+    for (std::size_t k = 0; k + 2 < runs.size() && x < decoded->size(); k += 3) {
+      const std::size_t n = std::min<std::size_t>(runs[k + 1] | (runs[k + 2] << 8), decoded->size() - x);
+      std::fill_n(decoded->begin() + static_cast<std::ptrdiff_t>(x), n, runs[k]);
+      x += n;
+    }
+  } else {
+    f.seekg(static_cast<std::streamoff>(i * width_));
+    f.read(reinterpret_cast<char*>(decoded->data()), static_cast<std::streamsize>(width_));
+  }
+  const std::vector<std::uint8_t>* expected = nullptr;
+  if (slot.compare_exchange_strong(expected, decoded.get(), std::memory_order_acq_rel)) return *decoded.release();
+  return *expected;  // another thread decoded it first
+}
+
+std::uint8_t RasterLevel::at(double latitude_deg, double longitude_deg) const {
+  // Integer cells per degree where the map has them (exact registration).
+  const double per_degree = cells_per_degree_ > 0 ? static_cast<double>(cells_per_degree_) : 1.0 / cell_deg_;
+  auto i = static_cast<std::int64_t>(std::floor((lat_north_deg_ - latitude_deg) * per_degree));
+  i = std::clamp<std::int64_t>(i, 0, height_ - 1);
+  double lon = std::fmod(longitude_deg - lon_west_deg_, 360.0);
+  if (lon < 0) lon += 360.0;
+  auto j = static_cast<std::int64_t>(std::floor(lon * per_degree));
+  j = std::clamp<std::int64_t>(j, 0, width_ - 1);
+  return row(i)[static_cast<std::size_t>(j)];
+}
+
+std::shared_ptr<const SurfaceMap> SurfaceMap::load(const std::vector<std::string>& sidecars) {
+  auto map = std::make_shared<SurfaceMap>();
+  for (const auto& s : sidecars) map->levels_.push_back(RasterLevel::load(s));
+  if (map->levels_.empty()) throw Error(Status::corrupt_file, "map: no levels");
+  return map;
+}
+
+const RasterLevel& SurfaceMap::level_for(double gsd_m, double radius_m) const {
+  const double deg_per_m = 180.0 / (3.14159265358979323846 * radius_m);
+  for (const auto& level : levels_)
+    if (level->cell_deg() <= gsd_m * deg_per_m) return *level;
+  return *levels_.back();
+}
+
+}  // namespace eoir::universe

@@ -1,0 +1,62 @@
+// Bitmaps over a central body's surface (spec 4.2.3): the Earth's land/water
+// mask and land-cover classes (IGBP 1-17, tundra 18; data/earth/README.md),
+// the Moon's and Mars' normal albedo (data/moon/README.md). Each map is a
+// pyramid of levels sharing one registration (cell: rows north to south from
+// lat_north, columns east from lon_west); the level used is the coarsest whose
+// cell is not larger than the ground sample distance. Rows of the fine
+// levels are decoded on first use (thread-safe).
+#pragma once
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace eoir::universe {
+
+// One level: a uint8 raster (raw or run-length encoded, eoir-raster format 1).
+class RasterLevel {
+ public:
+  // Reads the JSON sidecar (throws io / corrupt_file naming the file and field).
+  static std::unique_ptr<RasterLevel> load(const std::string& sidecar_path);
+  ~RasterLevel();
+  // The cell holding (lat, lon) (deg; longitude any value, wrapped).
+  std::uint8_t at(double latitude_deg, double longitude_deg) const;
+  double cell_deg() const { return cell_deg_; }
+  double value_scale() const { return value_scale_; }
+  double value_offset() const { return value_offset_; }
+
+ private:
+  RasterLevel() = default;
+  const std::vector<std::uint8_t>& row(std::int64_t i) const;
+  std::string data_path_;
+  bool rle_ = false;
+  std::int64_t width_ = 0, height_ = 0, cells_per_degree_ = 0;
+  double lon_west_deg_ = -180, lat_north_deg_ = 90, cell_deg_ = 1;
+  double value_scale_ = 1, value_offset_ = 0;
+  std::vector<std::uint64_t> offsets_;  // rle: height + 1 row offsets
+  mutable std::unique_ptr<std::atomic<const std::vector<std::uint8_t>*>[]> rows_;
+};
+
+class SurfaceMap {
+ public:
+  // Levels from coarse to fine (sidecar paths).
+  static std::shared_ptr<const SurfaceMap> load(const std::vector<std::string>& sidecars);
+  // The coarsest level whose cell is not larger than gsd_m on a body of
+  // radius radius_m (the finest if none).
+  const RasterLevel& level_for(double gsd_m, double radius_m) const;
+  const RasterLevel& finest() const { return *levels_.back(); }
+
+ private:
+  std::vector<std::unique_ptr<RasterLevel>> levels_;
+};
+
+// A central body's maps in the data folder (empty pointers where there are
+// none): the Earth's land mask and land cover, the Moon's and Mars' albedo.
+struct BodyMaps {
+  std::shared_ptr<const SurfaceMap> land_mask;
+  std::shared_ptr<const SurfaceMap> land_cover;
+  std::shared_ptr<const SurfaceMap> albedo;
+};
+
+}  // namespace eoir::universe

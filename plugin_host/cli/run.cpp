@@ -18,6 +18,7 @@
 #include "iso_time.hpp"
 #include "png_writer.hpp"
 #include "session.hpp"
+#include "suggest.hpp"
 
 #ifndef EOIR_CLI_VERSION
 #define EOIR_CLI_VERSION "0.0.0"
@@ -282,9 +283,13 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
       const SensorSpec* s = sc.find_sensor(name);
       if (s == nullptr) {
         std::string known;
-        for (const SensorSpec& k : sc.sensors) known += (known.empty() ? "'" : ", '") + k.name + "'";
+        std::vector<std::string> names;
+        for (const SensorSpec& k : sc.sensors) {
+          known += (known.empty() ? "'" : ", '") + k.name + "'";
+          names.push_back(k.name);
+        }
         throw std::runtime_error("--sensor: unknown sensor '" + name + "' in " + opt.scenario_file +
-                                 "; sensors: " + (known.empty() ? "(none)" : known));
+                                 did_you_mean(name, names) + "; sensors: " + (known.empty() ? "(none)" : known));
       }
       if (std::find(sensors.begin(), sensors.end(), s) == sensors.end()) sensors.push_back(s);
     }
@@ -396,6 +401,10 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
   summary["units"] = {{"radiance", "W/(cm2 sr)"}, {"electrons", "electrons"}};
   summary["frames"] = frames;
   write_text_atomically((dir / "summary.json").string(), summary.dump(2) + "\n");
+  if (!opt.save_state.empty()) {
+    engine.check(engine.api().state_save(engine.handle(), opt.save_state.c_str()), "--save-state " + opt.save_state);
+    if (!opt.quiet) std::fprintf(stderr, "eoir run: saved the engine state to %s\n", opt.save_state.c_str());
+  }
   if (!opt.quiet)
     std::fprintf(stderr, "eoir run: wrote %zu frames to %s (summary.json)\n", done, opt.out_dir.c_str());
   return done;

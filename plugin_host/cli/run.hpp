@@ -17,6 +17,8 @@ struct RunOptions {
   std::vector<double> times;         // seconds since J2000 (UTC-based, see iso_time.hpp)
   std::vector<std::string> sensors;  // empty: every sensor of the scenario
   bool quiet = false;
+  bool cube = false;                 // also <sensor>_electrons_cube.fits (every frame, one 3-D image)
+  std::string save_state;            // if not empty: eoir_state_save after the last frame
 };
 
 // Per frame (time step i, sensor s), in DIR:

@@ -2,17 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <cstdio>
 #include <set>
 #include <sstream>
 
 #include "iso_time.hpp"
+#include "json_guard.hpp"
 
 namespace eoir::cli {
 namespace {
 
 using nlohmann::json;
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kEarthEquatorialRadiusM = 6378137.0;  // WGS84
 
 [[noreturn]] void fail(const std::string& path, const std::string& why) { throw ScenarioError(path + ": " + why); }
 
@@ -79,6 +81,19 @@ void check_name(const std::string& name, const std::string& path) {
   if (name.empty() || name.size() > 63) fail(path, "names are 1 to 63 bytes");
 }
 
+// An orbit whose perigee lies below the central body's surface would pass
+// through it (the engine would place the satellite inside the Earth).
+void check_perigee(double perigee_m, const std::string& path) {
+  if (perigee_m < kEarthEquatorialRadiusM) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "perigee radius %.3f km is below the surface of the Earth (equatorial radius %.3f km): "
+                  "the orbit passes through the central body",
+                  perigee_m / 1e3, kEarthEquatorialRadiusM / 1e3);
+    fail(path, text);
+  }
+}
+
 Attitude parse_attitude(const json& j, const std::string& path) {
   need_object(j, path);
   Attitude a;
@@ -142,6 +157,7 @@ Motion parse_motion(const json& j, const std::string& path) {
       el.mean_anomaly_at_epoch =
           true_to_mean_anomaly(get_number_or(j, path, "true_anomaly_deg", 0.0) * kDeg, el.eccentricity);
     el.epoch_s = get_time(j, path, "epoch");
+    check_perigee(el.semi_major_axis_m * (1 - el.eccentricity), path);
     try {
       m.kepler = std::make_shared<KeplerOrbit>(el);
     } catch (const std::invalid_argument& e) {
@@ -310,13 +326,20 @@ Scenario parse_scenario(const json& doc, const std::string& file) {
 }
 
 Scenario load_scenario(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw ScenarioError(file + ": cannot open the scenario file");
   json doc;
   try {
-    doc = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw ScenarioError(file + ": not valid JSON: " + e.what());
+    std::string text;
+    try {
+      text = read_file_capped(file);
+    } catch (const JsonInputError& e) {
+      const std::string why = e.what();
+      throw ScenarioError(why.rfind("cannot open", 0) == 0 ? "cannot open the scenario file (" + why + ")" : why);
+    }
+    doc = parse_json_checked(text);  // depth, duplicate keys, number range
+  } catch (const JsonInputError& e) {
+    throw ScenarioError(file + ": " + e.what());
+  } catch (const ScenarioError& e) {
+    throw ScenarioError(file + ": " + e.what());
   }
   try {
     return parse_scenario(doc, file);

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -224,6 +225,9 @@ std::string scenario_dir() {
     exe[n] = '\0';
     std::string dir(exe);
     dir = dir.substr(0, dir.find_last_of('/')) + "/" + EOIR_RELATIVE_SCENARIO_DIR;
+    std::error_code ec;
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(dir, ec);
+    if (!ec) dir = canonical.string();
     if (access((dir + "/demo/default.json").c_str(), R_OK) == 0) return dir;
   }
 #endif

@@ -8,6 +8,7 @@
 
 #include "iso_time.hpp"
 #include "json_guard.hpp"
+#include "suggest.hpp"
 
 namespace eoir::cli {
 namespace {
@@ -192,8 +193,20 @@ Motion parse_motion(const json& j, const std::string& path) {
       fail(path, e.what());
     }
     m.kind = Motion::Kind::ephemeris;
+  } else if (type == "tle") {
+    only_keys(j, path, {"type", "line1", "line2"});
+    const std::string l1 = get_string(j, path, "line1"), l2 = get_string(j, path, "line2");
+    try {
+      m.tle = std::make_shared<Sgp4>(Sgp4::from_tle(l1, l2));
+    } catch (const std::invalid_argument& e) {
+      const std::string why = e.what();
+      fail(path + (why.rfind("line 1", 0) == 0 ? ".line1" : ".line2"), why);
+    }
+    check_perigee(m.tle->perigee_radius_km() * 1e3, path);
+    m.kind = Motion::Kind::tle;
   } else {
-    fail(path + ".type", "'" + type + "' is not one of fixed_geodetic, kepler, ephemeris");
+    fail(path + ".type", "'" + type + "' is not one of fixed_geodetic, kepler, ephemeris, tle" +
+                             did_you_mean(type, {"fixed_geodetic", "kepler", "ephemeris", "tle"}));
   }
   return m;
 }
@@ -361,8 +374,31 @@ PosVel motion_state(const ObjectSpec& o, double t) {
       } catch (const std::out_of_range& e) {
         throw ScenarioError(o.path + ".motion: " + e.what());
       }
+    case Motion::Kind::tle:
+      try {
+        return tle_state_j2000(*m.tle, t);
+      } catch (const Sgp4Error& e) {
+        throw ScenarioError(o.path + ".motion: SGP4 at " + format_iso(t) + ": " + e.what());
+      } catch (const std::invalid_argument& e) {
+        throw ScenarioError(o.path + ".motion: " + e.what());
+      }
   }
   throw ScenarioError(o.path + ".motion: unknown kind");
+}
+
+PosVel tle_state_j2000(const Sgp4& sgp4, double t) {
+  // Minutes since the TLE epoch on the UTC time line (days of 86400 s, as
+  // SGP4's Julian dates count them).
+  const double minutes = ((2451545.0 - sgp4.epoch_jd()) - sgp4.epoch_jd_fraction()) * 1440.0 + t / 60.0;
+  const TemeState teme = sgp4.at_minutes(minutes);
+  const std::array<double, 9> m = teme_to_j2000_matrix(2451545.0, t / 86400.0);
+  PosVel out;
+  for (int i = 0; i < 3; ++i) {
+    out.position[i] = 1e3 * (m[3 * i] * teme.r_km[0] + m[3 * i + 1] * teme.r_km[1] + m[3 * i + 2] * teme.r_km[2]);
+    out.velocity[i] =
+        1e3 * (m[3 * i] * teme.v_km_s[0] + m[3 * i + 1] * teme.v_km_s[1] + m[3 * i + 2] * teme.v_km_s[2]);
+  }
+  return out;
 }
 
 }  // namespace eoir::cli

@@ -17,7 +17,8 @@ int32_t kind_code(const std::string& kind) {
 }
 
 bool natural_j2000(const ObjectSpec& o) {
-  return o.motion.kind == Motion::Kind::kepler || (o.motion.kind == Motion::Kind::ephemeris && !o.motion.earth_fixed);
+  return o.motion.kind == Motion::Kind::kepler || o.motion.kind == Motion::Kind::tle ||
+         (o.motion.kind == Motion::Kind::ephemeris && !o.motion.earth_fixed);
 }
 
 int32_t natural_frame(const ObjectSpec& o) {

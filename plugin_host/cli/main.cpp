@@ -34,6 +34,7 @@
 #include "scenario.hpp"
 #include "session.hpp"
 #include "suggest.hpp"
+#include "time_steps.hpp"
 
 #ifndef EOIR_CLI_VERSION
 #define EOIR_CLI_VERSION "0.0.0"
@@ -415,24 +416,16 @@ TimeRange parse_time_range(const Options& o) {
 }
 
 // The scenario's stop unless --stop is given (or --start lies past it).
-double default_stop(const TimeRange& r, const Scenario& sc) {
-  const double t0 = r.start_s.value_or(sc.start_s);
-  return r.stop_s.value_or(r.start_s && *r.start_s > sc.stop_s ? t0 : sc.stop_s);
-}
+double default_stop(const TimeRange& r, const Scenario& sc) { return default_stop(r.start_s, r.stop_s, sc); }
 
-// t0, t0 + dt, ... up to t1, with t1 itself always last.
+// t0, t0 + dt, ... up to t1, with t1 itself always last (time_steps.hpp).
 std::vector<double> step_times(double t0, double t1, double dt, const std::string& command, std::size_t most) {
-  if (t1 < t0) throw UsageError("--stop " + format_iso(t1) + " is before the start " + format_iso(t0));
-  std::vector<double> times;
-  for (long long k = 0;; ++k) {
-    const double t = t0 + static_cast<double>(k) * dt;
-    if (t > t1 + 1e-6) break;
-    times.push_back(t);
-    if (times.size() > most)
-      throw UsageError(command + ": more than " + std::to_string(most) + " time steps; use a larger --step");
+  try {
+    return eoir::cli::step_times(t0, t1, dt, most);
+  } catch (const std::invalid_argument& e) {
+    const std::string why = e.what();
+    throw UsageError(why.rfind("more than", 0) == 0 ? command + ": " + why : why);
   }
-  if (times.back() < t1 - 1e-6) times.push_back(t1);
-  return times;
 }
 
 int cmd_report(const std::vector<std::string>& args, const Global& g) {

@@ -335,6 +335,31 @@ void write_text_atomically(const std::string& path, const std::string& text) {
 
 }  // namespace
 
+io::FitsHeader frame_fits_header(Engine& engine, const Scenario& sc, const SensorSpec& s, std::size_t index,
+                                 int32_t kind) {
+  RunContext ctx(engine, sc);
+  const std::string where = "FITS header of " + s.name;
+  const eoir_image_info in = ctx.info(s.name, kind, where);
+  switch (kind) {
+    case EOIR_IMAGE_SCENE_RADIANCE:
+      return ctx.header(s, index, in, "scene_radiance", kBunitRadiance, 4);
+    case EOIR_IMAGE_SENSOR_ELECTRONS:
+      return ctx.header(s, index, in, "sensor_electrons", kBunitElectrons, 1);
+    case EOIR_IMAGE_SENSOR_MEAN:
+      return ctx.header(s, index, in, "sensor_mean", kBunitElectrons, 1);
+    default:
+      throw EngineError(where + ": image kind " + std::to_string(kind) + " is not written to FITS",
+                        EOIR_ERR_OUT_OF_RANGE);
+  }
+}
+
+std::string frame_truth_json(Engine& engine, const Scenario& sc, const std::string& sensor) {
+  RunContext ctx(engine, sc);
+  const std::string where = "truth of " + sensor;
+  const eoir_image_info in = ctx.info(sensor, EOIR_IMAGE_SENSOR_ELECTRONS, where);
+  return ctx.truth(sensor, where, in).dump(2) + "\n";
+}
+
 std::string file_stem(const std::string& name) {
   std::string out = name;
   for (char& c : out) {

@@ -20,7 +20,7 @@ for f in bin/eoir "$libdir/libeoir.so.1" "$libdir/libeoir.so" include/eoir/eoir.
          "$libdir/cmake/eoir/eoirConfig.cmake" "$libdir/cmake/eoir/eoirConfigVersion.cmake" \
          "$libdir/cmake/eoir/eoirTargets.cmake" "$libdir/pkgconfig/eoir.pc" \
          share/eoir/schemas/scenario.schema.json share/eoir/scenarios/demo/default.json \
-         share/eoir/data share/doc/eoir/LICENSE; do
+         "$libdir/libeoir_host.so.1" include/eoir/eoir_host.h share/eoir/data share/doc/eoir/LICENSE; do
   [ -e "$prefix/$f" ] || fail "missing $prefix/$f"
 done
 echo "check_install: installed files present under $prefix"

@@ -1,14 +1,15 @@
 #include "state/atomic_file.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
+#include <random>
 
 #include "core/error.hpp"
 
@@ -17,43 +18,157 @@ namespace {
 [[noreturn]] void fail(const std::string& what, const std::string& path, int err) {
   throw Error(Status::io, "path: cannot " + what + " '" + path + "': " + std::strerror(err));
 }
+
+std::string dir_of(const std::string& p) {
+  const auto slash = p.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : p.substr(0, slash);
+}
+
+std::string base_of(const std::string& p) {
+  const auto slash = p.find_last_of('/');
+  return slash == std::string::npos ? p : p.substr(slash + 1);
+}
+
+// Follows symbolic links of the last component (a dangling link's target is
+// created): the file that a plain open() for writing would write.
+std::string resolve_links(const std::string& path) {
+  std::string p = path;
+  for (int hops = 0; hops < 40; ++hops) {
+    struct stat st {};
+    if (::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p;
+    std::string target(static_cast<std::size_t>(st.st_size > 0 ? st.st_size : 4096) + 1, '\0');
+    const ssize_t n = ::readlink(p.c_str(), target.data(), target.size());
+    if (n < 0) fail("read the symbolic link", p, errno);
+    target.resize(static_cast<std::size_t>(n));
+    p = (!target.empty() && target[0] == '/') ? target : dir_of(p) + "/" + target;
+  }
+  fail("resolve", path, ELOOP);
+}
+
+std::string random_suffix() {
+  static const char chars[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+  thread_local std::mt19937_64 rng{std::random_device{}() ^ (static_cast<std::uint64_t>(::getpid()) << 32)};
+  std::string s(6, 'x');
+  for (char& c : s) c = chars[rng() % (sizeof chars - 1)];
+  return s;
+}
+
+// Removes "<base>.tmp.XXXXXX" files beside the target that no writer holds
+// (a writer keeps an exclusive flock on its temporary file until the rename;
+// the lock dies with the process).
+void remove_stale_temporaries(const std::string& dir, const std::string& base) {
+  DIR* d = ::opendir(dir.c_str());
+  if (d == nullptr) return;
+  const std::string prefix = base + ".tmp.";
+  while (const dirent* e = ::readdir(d)) {
+    const std::string name = e->d_name;
+    if (name.size() != prefix.size() + 6 || name.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string p = dir + "/" + name;
+    const int fd = ::open(p.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) continue;
+    struct stat st {};
+    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && ::flock(fd, LOCK_EX | LOCK_NB) == 0) {
+      struct stat now {};
+      // Still the same file under that name: unlink it while holding the lock.
+      if (::lstat(p.c_str(), &now) == 0 && now.st_ino == st.st_ino && now.st_dev == st.st_dev) ::unlink(p.c_str());
+    }
+    ::close(fd);
+  }
+  ::closedir(d);
+}
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::string& contents) {
-  std::string tmpl = path + ".tmp.XXXXXX";
-  int fd = ::mkstemp(tmpl.data());
-  if (fd < 0) fail("create a temporary file beside", path, errno);
+  const std::string target = resolve_links(path);
+  const std::string dir = dir_of(target), base = base_of(target);
+  struct stat existing {};
+  const bool exists = ::stat(target.c_str(), &existing) == 0;
+  remove_stale_temporaries(dir, base);
+
+  // An unnamed file in the target's directory, or a named one if the file
+  // system has no O_TMPFILE. New files get 0666 less the umask, as open() gives.
+  std::string tmp;
+  bool unnamed = true;
+  int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    unnamed = false;
+    for (int tries = 0; fd < 0 && tries < 100; ++tries) {
+      tmp = dir + "/" + base + ".tmp." + random_suffix();
+      fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      if (fd < 0 && errno != EEXIST) break;
+    }
+    if (fd < 0) fail("create a temporary file beside", target, errno);
+  }
+  const auto give_up = [&](const std::string& what, const std::string& where, int err) {
+    ::close(fd);
+    if (!tmp.empty()) ::unlink(tmp.c_str());
+    fail(what, where, err);
+  };
+  if (::flock(fd, LOCK_EX) != 0) give_up("lock a temporary file beside", target, errno);
   size_t written = 0;
   while (written < contents.size()) {
     const ssize_t n = ::write(fd, contents.data() + written, contents.size() - written);
     if (n < 0) {
       if (errno == EINTR) continue;
-      const int err = errno;
-      ::close(fd);
-      ::unlink(tmpl.c_str());
-      fail("write", tmpl, err);
+      give_up("write a temporary file beside", target, errno);
     }
     written += static_cast<size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    const int err = errno;
-    ::unlink(tmpl.c_str());
-    fail("flush", tmpl, err);
+  if (exists && ::fchmod(fd, existing.st_mode & 07777) != 0) give_up("set the mode of a temporary file beside", target, errno);
+  if (::fsync(fd) != 0) give_up("flush a temporary file beside", target, errno);
+  if (unnamed) {
+    const std::string proc = "/proc/self/fd/" + std::to_string(fd);
+    for (int tries = 0; tries < 100; ++tries) {
+      tmp = dir + "/" + base + ".tmp." + random_suffix();
+      if (::linkat(AT_FDCWD, proc.c_str(), AT_FDCWD, tmp.c_str(), AT_SYMLINK_FOLLOW) == 0) break;
+      const int err = errno;
+      tmp.clear();
+      if (err != EEXIST) give_up("name a temporary file beside", target, err);
+    }
+    if (tmp.empty()) give_up("name a temporary file beside", target, EEXIST);
   }
-  ::chmod(tmpl.c_str(), 0644);
-  if (std::rename(tmpl.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(tmpl.c_str());
-    fail("rename a temporary file onto", path, err);
+  if (std::rename(tmp.c_str(), target.c_str()) != 0) give_up("rename a temporary file onto", target, errno);
+  tmp.clear();
+  ::close(fd);  // releases the lock
+  // Make the rename itself durable.
+  const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dfd >= 0) {
+    (void)::fsync(dfd);
+    ::close(dfd);
   }
 }
 
 std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail("open", path, errno);
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) fail("read", path, errno);
-  return s.str();
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fail("open", path, errno);
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
+    const int err = S_ISDIR(st.st_mode) ? EISDIR : errno;
+    ::close(fd);
+    fail("read", path, err);
+  }
+  const auto too_large = [&] {
+    ::close(fd);
+    throw Error(Status::corrupt_file, "file: '" + path + "' is larger than " + std::to_string(max_file_bytes >> 20) +
+                                          " MiB, the limit of state and sensor files");
+  };
+  if (S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > max_file_bytes) too_large();
+  std::string out;
+  char buf[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int err = errno;
+      ::close(fd);
+      fail("read", path, err);
+    }
+    if (n == 0) break;
+    if (out.size() + static_cast<std::size_t>(n) > max_file_bytes) too_large();
+    out.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  return out;
 }
 }  // namespace eoir::state

@@ -14,7 +14,10 @@ void host_log(void* user, int32_t level, const char* message) {
 
 }  // namespace
 
-Engine::Engine(const char* library, bool verbose) : verbose_(verbose) {
+Engine::Engine(const char* library, bool verbose) : Engine(EngineConfig{library, 1, 0}, verbose) {}
+
+Engine::Engine(const EngineConfig& config, bool verbose) : verbose_(verbose) {
+  const char* library = config.library;
   host_.struct_size = sizeof host_;
   host_.user = &verbose_;
   host_.log = host_log;
@@ -24,8 +27,8 @@ Engine::Engine(const char* library, bool verbose) : verbose_(verbose) {
     throw std::runtime_error(message);
   eoir_engine_desc desc{};
   desc.struct_size = sizeof desc;
-  desc.threads = 0;
-  desc.seed = 1;
+  desc.threads = config.threads;
+  desc.seed = config.seed;
   const eoir_status s = plugin_.api->engine_create(&desc, &engine_);
   if (s != EOIR_OK) {
     const std::string why = plugin_.api->last_error();

@@ -18,11 +18,20 @@ class EngineError : public std::runtime_error {
   eoir_status status_;
 };
 
+// How to create the engine: the library (NULL: EOIR_LIBRARY, the one beside
+// the program, or the build's), the noise seed and the worker threads
+// (0 = all cores).
+struct EngineConfig {
+  const char* library = nullptr;
+  uint64_t seed = 1;
+  uint32_t threads = 0;
+};
+
 class Engine {
  public:
-  // library: path of libeoir (NULL: EOIR_LIBRARY or the build's). Throws
-  // std::runtime_error with the loader's message.
+  // Throws std::runtime_error with the loader's or the engine's message.
   explicit Engine(const char* library = nullptr, bool verbose = false);
+  explicit Engine(const EngineConfig& config, bool verbose = false);
   ~Engine();
   Engine(const Engine&) = delete;
   Engine& operator=(const Engine&) = delete;

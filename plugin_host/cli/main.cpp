@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -22,6 +23,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
+
 #include "access.hpp"
 #include "atomic_write.hpp"
 #include "engine.hpp"
@@ -30,6 +33,8 @@
 #include "run.hpp"
 #include "scenario.hpp"
 #include "session.hpp"
+#include "suggest.hpp"
+#include "time_steps.hpp"
 
 #ifndef EOIR_CLI_VERSION
 #define EOIR_CLI_VERSION "0.0.0"
@@ -45,51 +50,189 @@ using namespace eoir::cli;
 constexpr const char* kTargetGroup = "EOIR Sensor-to-Target Metrics";
 
 const char* const kUsage =
-    "usage: eoir [--library PATH] [COMMAND ...]\n"
+    "usage: eoir [--library PATH] [--seed N] [--threads N] [COMMAND ...]\n"
     "\n"
     "Headless EO/IR sensor engine, command-line host.\n"
     "\n"
     "commands:\n"
     "  (none)                 run the bundled demo scenario (scenarios/demo/default.json)\n"
     "                         and print its static sensor metrics\n"
-    "  report SCENARIO --provider GROUP --sensor NAME [--target NAME]\n"
-    "         [--start ISO] [--stop ISO] [--step SECONDS]\n"
-    "         [--format json|csv] [--out FILE] [--quiet]\n"
+    "  report SCENARIO --provider GROUP --sensor NAME [--target NAME] ...\n"
     "                         evaluate every element of a data-provider group over time\n"
-    "                         (default: the scenario start only; with --stop, every --step\n"
-    "                         seconds, stop included; --step defaults to the scenario's step_s)\n"
-    "  run SCENARIO --out DIR [--start ISO] [--stop ISO] [--step SECONDS]\n"
-    "         [--sensor NAME ...] [--quiet]\n"
-    "                         render every sensor (or those named) at each time step and\n"
-    "                         write per frame <sensor>_<NNNN>_radiance.fits,\n"
-    "                         _electrons.fits, _mean_electrons.fits, _scene.png, _sensor.png,\n"
-    "                         _truth.json (the objects in the field: pixel, range, SNR)\n"
-    "                         and a summary.json into DIR (created if missing); the times\n"
-    "                         default to the scenario's start, stop and step_s\n"
-    "  access SCENARIO --sensor NAME --target NAME --min-snr X\n"
-    "         [--start ISO] [--stop ISO] [--step SECONDS] [--format json|csv] [--out FILE] [--quiet]\n"
-    "                         intervals where the SNR of the target seen by the sensor is >= X\n"
-    "                         (spec 7.8 SNR access constraint): the SNR is sampled every --step\n"
-    "                         seconds (default: the scenario's start, stop and step_s) and each\n"
-    "                         crossing is refined by bisection to 1 ms; times with milliseconds\n"
-    "  validate SCENARIO      check a scenario file and load it into an engine\n"
+    "  run SCENARIO --out DIR [--sensor NAME ...] [--cube] ...\n"
+    "                         render every sensor at each time step: FITS, PNG, truth, regions\n"
+    "  access SCENARIO --sensor NAME --target NAME --min-snr X ...\n"
+    "                         intervals where the target's SNR is >= X (spec 7.8)\n"
+    "  validate SCENARIO      check a scenario file as `run` would, without rendering\n"
+    "  properties KIND        every property of a kind: type, unit, default, description\n"
+    "  save-state SCENARIO --out FILE [--time ISO]\n"
+    "                         the engine state of a scenario at a time, as a .scd file\n"
+    "  load-state FILE        restore a .scd file; print its time, objects and sensor metrics\n"
     "  groups                 list the data-provider groups and their elements\n"
-    "  --help, -h             this help\n"
+    "  help [COMMAND]         this help, or a command's\n"
     "  --version              program and engine versions\n"
     "\n"
-    "options:\n"
-    "  --library PATH         engine library to load (else $EOIR_LIBRARY, else the build's)\n"
+    "`eoir COMMAND --help` describes a command. Options take their value as\n"
+    "`--name value` or `--name=value`.\n"
+    "\n"
+    "options of every command that creates an engine:\n"
+    "  --library PATH         engine library to load (else $EOIR_LIBRARY, else the one\n"
+    "                         beside this program, else the build's)\n"
+    "  --seed N               seed of the engine's noise generator (default 1)\n"
+    "  --threads N            worker threads, 0 = all cores (default 0)\n"
     "\n"
     "environment: EOIR_LIBRARY (engine library), EOIR_SCENARIO_DIR (bundled scenarios)\n"
     "exit status: 0 ok, 1 bad command line, 2 bad scenario or engine error\n";
+
+const char* const kEngineOptions =
+    "  --library PATH    engine library; --seed N   noise seed (default 1);\n"
+    "  --threads N       worker threads, 0 = all cores (default 0); --help   this help\n";
+
+const char* const kTimeOptions =
+    "  --start ISO       first time (default: the scenario's start)\n"
+    "  --stop ISO        last time, always included (default: the scenario's stop)\n"
+    "  --step SECONDS    time step (default: the scenario's step_s)\n";
+
+struct CommandSpec {
+  std::string name;
+  std::string usage;                // first lines of `eoir NAME --help`
+  std::vector<std::string> valued;  // options with a value
+  std::vector<std::string> flags;
+  bool numbers_as_values = false;   // "-5" is a value, not an option
+  bool engine = true;               // takes --library, --seed, --threads
+};
+
+const std::vector<CommandSpec>& commands() {
+  static const std::vector<CommandSpec> specs = {
+      {"report",
+       "usage: eoir report SCENARIO --provider GROUP --sensor NAME [--target NAME]\n"
+       "                   [--start ISO] [--stop ISO] [--step SECONDS]\n"
+       "                   [--format json|csv] [--out FILE] [--quiet]\n"
+       "\n"
+       "Evaluates every element of a data-provider group (`eoir groups`) at each time\n"
+       "step of the scenario (start to stop, every step_s, stop included).\n"
+       "\n"
+       "  --provider GROUP  data-provider group, e.g. \"EOIR Sensor Optics\"\n"
+       "  --sensor NAME     sensor of the scenario\n"
+       "  --target NAME     target object (needed by \"EOIR Sensor-to-Target Metrics\")\n",
+       {"--provider", "--sensor", "--target", "--start", "--stop", "--step", "--format", "--out"},
+       {"--quiet"}},
+      {"run",
+       "usage: eoir run SCENARIO --out DIR [--start ISO] [--stop ISO] [--step SECONDS]\n"
+       "                [--sensor NAME ...] [--cube] [--save-state FILE] [--quiet]\n"
+       "\n"
+       "Renders every sensor (or those named) at each time step and writes into DIR\n"
+       "(created if missing), per frame <sensor>_<NNNN>_:\n"
+       "  radiance.fits, electrons.fits, mean_electrons.fits  images with TAN WCS, DATE-OBS,\n"
+       "                    BUNIT; FITS row 1 is the bottom row, as ds9 shows the PNG\n"
+       "  scene.png, sensor.png   display images\n"
+       "  truth.json        objects in the field: FITS pixel (1-based), RA/Dec, range, SNR\n"
+       "  truth.reg         the same as a ds9 region file (fk5 circles with labels)\n"
+       "and summary.json.\n"
+       "\n"
+       "  --sensor NAME     render only this sensor (repeatable)\n"
+       "  --cube            also write <sensor>_electrons_cube.fits: every frame of the run\n"
+       "                    as one 3-D FITS data cube (NAXIS3 = time step, per-plane times\n"
+       "                    in a TIMES table extension)\n"
+       "  --save-state FILE save the engine state after the last frame (.scd)\n",
+       {"--out", "--start", "--stop", "--step", "--sensor", "--save-state"},
+       {"--quiet", "--cube"}},
+      {"access",
+       "usage: eoir access SCENARIO --sensor NAME --target NAME --min-snr X\n"
+       "                   [--start ISO] [--stop ISO] [--step SECONDS]\n"
+       "                   [--format json|csv] [--out FILE] [--quiet]\n"
+       "\n"
+       "Intervals where the SNR of the target seen by the sensor is >= X (spec 7.8 SNR\n"
+       "access constraint): the SNR is sampled every step and each crossing is refined\n"
+       "by bisection to 1 ms.\n",
+       {"--sensor", "--target", "--min-snr", "--start", "--stop", "--step", "--format", "--out"},
+       {"--quiet"},
+       true},
+      {"validate",
+       "usage: eoir validate SCENARIO\n"
+       "\n"
+       "Checks a scenario as `run` would without rendering: the file (schema rules,\n"
+       "names, orbits above the central body's surface), every property through the\n"
+       "engine, every sensor's parameters together (band edges in order...), and every\n"
+       "object's motion at each time step from start to stop.\n",
+       {},
+       {}},
+      {"properties",
+       "usage: eoir properties KIND [--format table|json]\n"
+       "\n"
+       "Every property of a kind of object, with its type, unit, default and meaning.\n"
+       "KIND: sensor, satellite, aircraft, ground_vehicle, missile, star_field,\n"
+       "central_body (the Earth's defaults) or a central body's name (Sun, Moon...).\n"
+       "Defaults are read from a fresh engine. Ranges are checked by the engine when a\n"
+       "value is set; C ABI 1.2 does not list them.\n",
+       {"--format"},
+       {}},
+      {"save-state",
+       "usage: eoir save-state SCENARIO --out FILE [--time ISO]\n"
+       "\n"
+       "Loads a scenario into an engine, moves it to --time (default: the scenario's\n"
+       "start) and saves the whole engine state as a .scd file (schemas/scd.schema.json),\n"
+       "written to a temporary file and renamed.\n",
+       {"--out", "--time"},
+       {}},
+      {"load-state",
+       "usage: eoir load-state FILE [--sensor NAME]\n"
+       "\n"
+       "Restores a .scd file into an engine (eoir_state_load) and prints its time, its\n"
+       "objects and the static metrics of every sensor (or of --sensor).\n",
+       {"--sensor"},
+       {}},
+      {"groups", "usage: eoir groups\n\nLists the data-provider groups and their elements with units.\n", {}, {}},
+      {"help", "usage: eoir help [COMMAND]\n", {}, {}, false, false},
+  };
+  return specs;
+}
+
+std::vector<std::string> command_names() {
+  std::vector<std::string> names;
+  for (const auto& c : commands()) names.push_back(c.name);
+  return names;
+}
+
+const CommandSpec* find_command(const std::string& name) {
+  for (const auto& c : commands())
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+std::string command_help(const CommandSpec& c) {
+  std::string h = c.usage;
+  if (c.name == "report" || c.name == "run" || c.name == "access") h += kTimeOptions;
+  if (c.name == "report" || c.name == "access")
+    h += "  --format json|csv (default json); --out FILE (written atomically; default stdout)\n";
+  if (c.name == "report" || c.name == "run" || c.name == "access") h += "  --quiet           no progress on stderr\n";
+  if (c.engine) h += "\ncommon options:\n" + std::string(kEngineOptions);
+  return h;
+}
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// $EOIR_SCENARIO_DIR, else the installed tree's share/eoir/scenarios beside
+// the program, else the source tree's.
 std::string scenario_dir() {
   const char* env = std::getenv("EOIR_SCENARIO_DIR");
-  return (env != nullptr && env[0] != '\0') ? env : EOIR_SCENARIO_DIR_DEFAULT;
+  if (env != nullptr && env[0] != '\0') return env;
+#ifdef EOIR_RELATIVE_SCENARIO_DIR
+  char exe[4096];
+  const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (n > 0) {
+    exe[n] = '\0';
+    std::string dir(exe);
+    dir = dir.substr(0, dir.find_last_of('/')) + "/" + EOIR_RELATIVE_SCENARIO_DIR;
+    std::error_code ec;
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(dir, ec);
+    if (!ec) dir = canonical.string();
+    if (access((dir + "/demo/default.json").c_str(), R_OK) == 0) return dir;
+  }
+#endif
+  return EOIR_SCENARIO_DIR_DEFAULT;
 }
 
 double parse_seconds(const std::string& s, const char* option) {
@@ -148,8 +291,9 @@ void emit(const std::optional<std::string>& out_file, const std::string& text) {
   }
 }
 
-// Command-line options of one command: "--name value" options (repeatable
-// ones collect every value), flags, and one positional SCENARIO.
+// Command-line options of one command: "--name value" or "--name=value"
+// options (repeatable ones collect every value), flags, and one positional
+// argument (SCENARIO, FILE or KIND).
 struct Options {
   std::optional<std::string> scenario;
   std::map<std::string, std::vector<std::string>> values;
@@ -161,31 +305,96 @@ struct Options {
   }
 };
 
-// `numbers_as_values`: a token like "-5" is a value, not an option (access's
-// --min-snr -5 is then refused by its own check).
-Options parse_options(const std::vector<std::string>& args, const std::string& command,
-                      const std::vector<std::string>& valued, const std::vector<std::string>& flags,
-                      bool numbers_as_values = false) {
+// `eoir COMMAND --help`
+struct HelpRequested {
+  const CommandSpec* command;
+};
+
+const std::vector<std::string> kEngineValued = {"--library", "--seed", "--threads"};
+
+Options parse_options(const std::vector<std::string>& args, const CommandSpec& spec) {
+  std::vector<std::string> valued = spec.valued;
+  if (spec.engine) valued.insert(valued.end(), kEngineValued.begin(), kEngineValued.end());
+  std::vector<std::string> known = valued;
+  known.insert(known.end(), spec.flags.begin(), spec.flags.end());
+  known.push_back("--help");
+  const std::string& command = spec.name;
   Options o;
   for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
+    std::string a = args[i];
+    std::optional<std::string> inline_value;
+    if (a.rfind("--", 0) == 0 && a.find('=') != std::string::npos) {
+      inline_value = a.substr(a.find('=') + 1);
+      a = a.substr(0, a.find('='));
+    }
+    if (a == "--help" || a == "-h") throw HelpRequested{&spec};
     if (contains(valued, a)) {
-      if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
-      o.values[a].push_back(args[++i]);
-    } else if (a == "--quiet" || a == "-q") {
-      if (!contains(flags, "--quiet")) throw UsageError(command + ": unknown option " + a);
-      o.flags["--quiet"] = true;
-    } else if (contains(flags, a)) {
-      o.flags[a] = true;
-    } else if (a.size() > 1 && a[0] == '-' && !(numbers_as_values && a[1] >= '0' && a[1] <= '9')) {
-      throw UsageError(command + ": unknown option " + a);
+      if (inline_value) {
+        o.values[a].push_back(*inline_value);
+      } else {
+        if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+        o.values[a].push_back(args[++i]);
+      }
+    } else if (contains(spec.flags, a == "-q" ? std::string("--quiet") : a)) {
+      if (inline_value) throw UsageError(command + ": " + a + " takes no value");
+      o.flags[a == "-q" ? std::string("--quiet") : a] = true;
+    } else if (a.size() > 1 && a[0] == '-' && !(spec.numbers_as_values && (a[1] >= '0' && a[1] <= '9'))) {
+      throw UsageError(command + ": unknown option " + a + did_you_mean(a, known));
     } else if (!o.scenario) {
-      o.scenario = a;
+      o.scenario = args[i];
     } else {
-      throw UsageError(command + ": unexpected argument '" + a + "'");
+      throw UsageError(command + ": unexpected argument '" + args[i] + "'");
     }
   }
   return o;
+}
+
+// Options given before the command (eoir --seed 3 run ...).
+struct Global {
+  std::optional<std::string> library, seed, threads;
+};
+
+uint64_t parse_seed(const std::string& s) {
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long v = std::strtoull(s.c_str(), &end, 10);
+  if (s.empty() || s[0] == '-' || s[0] == '+' || end == nullptr || *end != '\0' || errno == ERANGE)
+    throw UsageError("--seed: '" + s + "' is not an integer in [0, 2^64)");
+  return v;
+}
+
+uint32_t parse_threads(const std::string& s) {
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(s.c_str(), &end, 10);
+  if (s.empty() || end == nullptr || *end != '\0' || errno == ERANGE || v < 0 || v > 1024)
+    throw UsageError("--threads: '" + s + "' is not an integer in [0, 1024] (0 = all cores)");
+  return static_cast<uint32_t>(v);
+}
+
+// The engine a command creates: its own options win over the global ones.
+struct EngineChoice {
+  std::string library;
+  EngineConfig config;
+};
+
+EngineChoice engine_choice(const Options& o, const Global& g) {
+  EngineChoice c;
+  const auto pick = [&](const char* name, const std::optional<std::string>& global) {
+    const auto v = o.get(name);
+    return v ? v : global;
+  };
+  if (const auto lib = pick("--library", g.library)) c.library = *lib;
+  if (const auto seed = pick("--seed", g.seed)) c.config.seed = parse_seed(*seed);
+  if (const auto threads = pick("--threads", g.threads)) c.config.threads = parse_threads(*threads);
+  return c;
+}
+
+// Creates the engine of a command (EngineChoice must outlive it).
+EngineConfig config_of(const EngineChoice& c) {
+  EngineConfig config = c.config;
+  config.library = c.library.empty() ? nullptr : c.library.c_str();
+  return config;
 }
 
 // --start, --stop and --step, checked (the scenario supplies the defaults).
@@ -207,30 +416,21 @@ TimeRange parse_time_range(const Options& o) {
 }
 
 // The scenario's stop unless --stop is given (or --start lies past it).
-double default_stop(const TimeRange& r, const Scenario& sc) {
-  const double t0 = r.start_s.value_or(sc.start_s);
-  return r.stop_s.value_or(r.start_s && *r.start_s > sc.stop_s ? t0 : sc.stop_s);
-}
+double default_stop(const TimeRange& r, const Scenario& sc) { return default_stop(r.start_s, r.stop_s, sc); }
 
-// t0, t0 + dt, ... up to t1, with t1 itself always last.
+// t0, t0 + dt, ... up to t1, with t1 itself always last (time_steps.hpp).
 std::vector<double> step_times(double t0, double t1, double dt, const std::string& command, std::size_t most) {
-  if (t1 < t0) throw UsageError("--stop " + format_iso(t1) + " is before the start " + format_iso(t0));
-  std::vector<double> times;
-  for (long long k = 0;; ++k) {
-    const double t = t0 + static_cast<double>(k) * dt;
-    if (t > t1 + 1e-6) break;
-    times.push_back(t);
-    if (times.size() > most)
-      throw UsageError(command + ": more than " + std::to_string(most) + " time steps; use a larger --step");
+  try {
+    return eoir::cli::step_times(t0, t1, dt, most);
+  } catch (const std::invalid_argument& e) {
+    const std::string why = e.what();
+    throw UsageError(why.rfind("more than", 0) == 0 ? command + ": " + why : why);
   }
-  if (times.back() < t1 - 1e-6) times.push_back(t1);
-  return times;
 }
 
-int cmd_report(const std::vector<std::string>& args, const char* library) {
-  const Options o = parse_options(
-      args, "report", {"--provider", "--sensor", "--target", "--start", "--stop", "--step", "--format", "--out"},
-      {"--quiet"});
+int cmd_report(const std::vector<std::string>& args, const Global& g) {
+  const Options o = parse_options(args, *find_command("report"));
+  const EngineChoice choice = engine_choice(o, g);
   const auto scenario_file = o.scenario, provider = o.get("--provider"), sensor = o.get("--sensor"),
              target = o.get("--target"), out_file = o.get("--out");
   const std::string format = o.get("--format").value_or("json");
@@ -243,19 +443,22 @@ int cmd_report(const std::vector<std::string>& args, const char* library) {
 
   const Scenario sc = load_scenario(*scenario_file);
   const double t0 = range.start_s.value_or(sc.start_s);
-  const double t1 = range.stop_s.value_or(t0);  // a report defaults to one row
-  const std::vector<double> times = step_times(t0, t1, range.step_s.value_or(sc.step_s), "report", 10000000);
+  const std::vector<double> times =
+      step_times(t0, default_stop(range, sc), range.step_s.value_or(sc.step_s), "report", 10000000);
 
-  Engine engine(library);
+  Engine engine(config_of(choice));
   Session session(engine, sc);
   const std::vector<std::string> groups = provider_groups(engine.api());
   if (!contains(groups, *provider))
-    throw UsageError("--provider: unknown data-provider group '" + *provider + "'; known groups: " + join(groups));
+    throw UsageError("--provider: unknown data-provider group '" + *provider + "'" + did_you_mean(*provider, groups) +
+                     "; known groups: " + join(groups));
   const std::vector<std::string> sensors = engine_objects(engine, EOIR_KIND_SENSOR);
   if (!contains(sensors, *sensor))
-    throw UsageError("--sensor: unknown sensor '" + *sensor + "' in " + *scenario_file + "; sensors: " + join(sensors));
+    throw UsageError("--sensor: unknown sensor '" + *sensor + "' in " + *scenario_file + did_you_mean(*sensor, sensors) +
+                     "; sensors: " + join(sensors));
   if (target && !contains(engine_objects(engine, 0), *target))
-    throw UsageError("--target: unknown object '" + *target + "' in " + *scenario_file);
+    throw UsageError("--target: unknown object '" + *target + "' in " + *scenario_file +
+                     did_you_mean(*target, engine_objects(engine, 0)));
   if (*provider == kTargetGroup && !target)
     throw UsageError("--provider '" + *provider + "' needs --target NAME");
   const std::vector<ElementInfo> elements = provider_elements(engine.api(), *provider);
@@ -291,12 +494,18 @@ int cmd_report(const std::vector<std::string>& args, const char* library) {
   return 0;
 }
 
-int cmd_run(const std::vector<std::string>& args, const char* library) {
-  const Options o = parse_options(args, "run", {"--out", "--start", "--stop", "--step", "--sensor"}, {"--quiet"});
+int cmd_run(const std::vector<std::string>& args, const Global& g) {
+  const Options o = parse_options(args, *find_command("run"));
+  const EngineChoice choice = engine_choice(o, g);
   const auto scenario_file = o.scenario, out_dir = o.get("--out");
   RunOptions opt;
   if (o.values.count("--sensor")) opt.sensors = o.values.at("--sensor");
   opt.quiet = o.flags.count("--quiet") > 0;
+  opt.cube = o.flags.count("--cube") > 0;
+  if (const auto save = o.get("--save-state")) {
+    if (save->empty()) throw UsageError("--save-state: empty file name");
+    opt.save_state = *save;
+  }
   if (!scenario_file) throw UsageError("run: missing SCENARIO");
   if (!out_dir) throw UsageError("run: missing --out DIR");
   if (out_dir->empty()) throw UsageError("--out: empty directory name");
@@ -308,7 +517,7 @@ int cmd_run(const std::vector<std::string>& args, const char* library) {
   opt.scenario_file = *scenario_file;
   opt.out_dir = *out_dir;
 
-  Engine engine(library);
+  Engine engine(config_of(choice));
   run_frames(engine, sc, opt);
   return 0;
 }
@@ -323,10 +532,9 @@ std::string format_iso_ms(double t_s) {
 // True if the function table has the entry at byte offset `offset`.
 bool api_has(const eoir_api_v1& api, std::size_t offset_end) { return api.struct_size >= offset_end; }
 
-int cmd_access(const std::vector<std::string>& args, const char* library) {
-  const Options o = parse_options(
-      args, "access", {"--sensor", "--target", "--min-snr", "--start", "--stop", "--step", "--format", "--out"},
-      {"--quiet"}, true);
+int cmd_access(const std::vector<std::string>& args, const Global& g) {
+  const Options o = parse_options(args, *find_command("access"));
+  const EngineChoice choice = engine_choice(o, g);
   const auto scenario_file = o.scenario, sensor = o.get("--sensor"), target = o.get("--target"),
              min_snr_text = o.get("--min-snr"), out_file = o.get("--out");
   const std::string format = o.get("--format").value_or("json");
@@ -364,7 +572,7 @@ int cmd_access(const std::vector<std::string>& args, const char* library) {
   }
   if (samples.back() < t1) samples.push_back(t1);
 
-  Engine engine(library);
+  Engine engine(config_of(choice));
   Session session(engine, sc);
   const eoir_api_v1& api = engine.api();
   if (!api_has(api, offsetof(eoir_api_v1, snr_constraint) + sizeof api.snr_constraint) || api.snr_constraint == nullptr)
@@ -372,10 +580,12 @@ int cmd_access(const std::vector<std::string>& args, const char* library) {
                              " has no SNR constraint (C ABI 1.2 needed)");
   const std::vector<std::string> sensors = engine_objects(engine, EOIR_KIND_SENSOR);
   if (!contains(sensors, *sensor))
-    throw UsageError("--sensor: unknown sensor '" + *sensor + "' in " + *scenario_file + "; sensors: " + join(sensors));
+    throw UsageError("--sensor: unknown sensor '" + *sensor + "' in " + *scenario_file + did_you_mean(*sensor, sensors) +
+                     "; sensors: " + join(sensors));
   const std::vector<std::string> objects = engine_objects(engine, 0);
   if (!contains(objects, *target))
-    throw UsageError("--target: unknown object '" + *target + "' in " + *scenario_file + "; objects: " + join(objects));
+    throw UsageError("--target: unknown object '" + *target + "' in " + *scenario_file + did_you_mean(*target, objects) +
+                     "; objects: " + join(objects));
 
   const auto snr_at = [&](int64_t ms) {
     const double t = static_cast<double>(ms) / 1000.0;
@@ -453,43 +663,53 @@ int cmd_access(const std::vector<std::string>& args, const char* library) {
   return 0;
 }
 
-int cmd_validate(const std::vector<std::string>& args, const char* library) {
-  if (args.size() != 1) throw UsageError("validate: expected exactly one SCENARIO");
-  const Scenario sc = load_scenario(args[0]);
-  Engine engine(library);
+// Evaluates every group without a target for each sensor at the engine's
+// time: the checks that involve several parameters (band edges in order...)
+// happen here, as they do when `run` renders.
+void check_sensors(Engine& engine, const Scenario& sc, double t) {
+  for (const SensorSpec& s : sc.sensors)
+    for (const std::string& group : provider_groups(engine.api())) {
+      if (group == kTargetGroup) continue;
+      const std::vector<ElementInfo> elements = provider_elements(engine.api(), group);
+      try {
+        (void)evaluate_row(engine, group, elements, s.name, std::nullopt, t);
+      } catch (const EngineError& e) {
+        throw EngineError(s.path + ".parameters: " + e.what(), e.status());
+      }
+    }
+}
+
+int cmd_validate(const std::vector<std::string>& args, const Global& g) {
+  const Options o = parse_options(args, *find_command("validate"));
+  const EngineChoice choice = engine_choice(o, g);
+  if (!o.scenario) throw UsageError("validate: missing SCENARIO");
+  const Scenario sc = load_scenario(*o.scenario);
+  Engine engine(config_of(choice));
   Session session(engine, sc);
   std::size_t steps = 0;
   for (long long k = 0;; ++k) {
     const double t = sc.start_s + static_cast<double>(k) * sc.step_s;
     if (t > sc.stop_s + 1e-6) break;
     session.set_time(t);
+    if (k == 0) check_sensors(engine, sc, t);
     if (++steps > 1000000) break;
   }
   session.set_time(sc.stop_s);
-  std::printf("%s: valid (scenario '%s': %zu objects, %zu sensors, %zu time steps)\n", args[0].c_str(),
+  std::printf("%s: valid (scenario '%s': %zu objects, %zu sensors, %zu time steps)\n", o.scenario->c_str(),
               sc.name.c_str(), sc.objects.size(), sc.sensors.size(), steps);
   return 0;
 }
 
-int cmd_default(const char* library) {
-  const std::string file = scenario_dir() + "/demo/default.json";
-  const Scenario sc = load_scenario(file);
-  Engine engine(library);
-  Session session(engine, sc);
-  session.set_time(sc.start_s);
-  std::cout << "EOIR " << EOIR_CLI_VERSION << " (engine " << engine.api().version() / 10000 << "."
-            << engine.api().version() / 100 % 100 << "." << engine.api().version() % 100 << ", "
-            << engine.library_path() << ")\n"
-            << "scenario: " << sc.name << " (" << file << ")\n";
-  if (!sc.description.empty()) std::cout << sc.description << "\n";
-  std::cout << "time: " << format_iso(sc.start_s) << "\n";
-  for (const SensorSpec& s : sc.sensors) {
-    std::cout << "\nsensor " << s.name << " on " << s.parent << "\n";
+// Static metrics of each sensor (or of `only`) at the engine's time.
+void print_sensor_metrics(const Engine& engine, const std::vector<std::pair<std::string, std::string>>& sensors,
+                          double t) {
+  for (const auto& [name, parent] : sensors) {
+    std::cout << "\nsensor " << name << " on " << parent << "\n";
     for (const std::string& group : provider_groups(engine.api())) {
       if (group == kTargetGroup) continue;  // needs a target
       const std::vector<ElementInfo> elements = provider_elements(engine.api(), group);
       try {
-        const ReportRow row = evaluate_row(engine, group, elements, s.name, std::nullopt, sc.start_s);
+        const ReportRow row = evaluate_row(engine, group, elements, name, std::nullopt, t);
         std::cout << "\n";
         write_table(std::cout, group, row);
       } catch (const EngineError& e) {
@@ -497,31 +717,271 @@ int cmd_default(const char* library) {
       }
     }
   }
+}
+
+std::string engine_version_text(const Engine& engine) {
+  const uint32_t v = engine.api().version();
+  return std::to_string(v / 10000) + "." + std::to_string(v / 100 % 100) + "." + std::to_string(v % 100);
+}
+
+int cmd_default(const Global& g) {
+  const EngineChoice choice = engine_choice(Options{}, g);
+  const std::string file = scenario_dir() + "/demo/default.json";
+  const Scenario sc = load_scenario(file);
+  Engine engine(config_of(choice));
+  Session session(engine, sc);
+  session.set_time(sc.start_s);
+  std::cout << "EOIR " << EOIR_CLI_VERSION << " (engine " << engine_version_text(engine) << ", "
+            << engine.library_path() << ")\n"
+            << "scenario: " << sc.name << " (" << file << ")\n";
+  if (!sc.description.empty()) std::cout << sc.description << "\n";
+  std::cout << "time: " << format_iso(sc.start_s) << "\n";
+  std::vector<std::pair<std::string, std::string>> sensors;
+  for (const SensorSpec& s : sc.sensors) sensors.emplace_back(s.name, s.parent);
+  print_sensor_metrics(engine, sensors, sc.start_s);
   std::cout << "\nRun `eoir --help` for the commands.\n";
   return 0;
 }
 
-int cmd_groups(const char* library) {
-  Engine engine(library);
-  for (const std::string& g : provider_groups(engine.api())) {
-    std::cout << g << "\n";
-    for (const ElementInfo& e : provider_elements(engine.api(), g))
+int cmd_groups(const std::vector<std::string>& args, const Global& g) {
+  const Options o = parse_options(args, *find_command("groups"));
+  if (o.scenario) throw UsageError("groups: unexpected argument '" + *o.scenario + "'");
+  const EngineChoice choice = engine_choice(o, g);
+  Engine engine(config_of(choice));
+  for (const std::string& gr : provider_groups(engine.api())) {
+    std::cout << gr << "\n";
+    for (const ElementInfo& e : provider_elements(engine.api(), gr))
       std::cout << "  " << e.name << (e.unit.empty() ? "" : " [" + e.unit + "]")
                 << (e.type == EOIR_TYPE_CURVE ? " (curve vs " + e.x_unit + ")" : "") << "\n";
   }
   return 0;
 }
 
-int cmd_version(const char* library) {
+// ---- properties KIND
+const char* type_text(int32_t t) {
+  switch (t) {
+    case EOIR_TYPE_NUMBER: return "number";
+    case EOIR_TYPE_INTEGER: return "integer";
+    case EOIR_TYPE_BOOL: return "bool";
+    case EOIR_TYPE_STRING: return "string";
+    case EOIR_TYPE_ARRAY: return "array";
+    default: return "?";
+  }
+}
+
+// The current value of a property as JSON.
+nlohmann::ordered_json property_value(const Engine& engine, const std::string& object, const std::string& name,
+                                      int32_t type) {
+  const eoir_api_v1& api = engine.api();
+  const eoir_engine e = engine.handle();
+  const std::string where = object + "." + name;
+  switch (type) {
+    case EOIR_TYPE_NUMBER: {
+      double v = 0;
+      engine.check(api.get_number(e, object.c_str(), name.c_str(), &v), where);
+      return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+    }
+    case EOIR_TYPE_INTEGER: {
+      int64_t v = 0;
+      engine.check(api.get_integer(e, object.c_str(), name.c_str(), &v), where);
+      return v;
+    }
+    case EOIR_TYPE_BOOL: {
+      int32_t v = 0;
+      engine.check(api.get_bool(e, object.c_str(), name.c_str(), &v), where);
+      return v != 0;
+    }
+    case EOIR_TYPE_STRING: {
+      std::vector<char> buf(256);
+      for (;;) {
+        const eoir_status st = api.get_string(e, object.c_str(), name.c_str(), buf.data(), buf.size());
+        if (st == EOIR_ERR_BUFFER_TOO_SMALL && buf.size() < (std::size_t{1} << 26)) {
+          buf.resize(buf.size() * 4);
+          continue;
+        }
+        engine.check(st, where);
+        return std::string(buf.data());
+      }
+    }
+    case EOIR_TYPE_ARRAY: {
+      std::size_t n = 0;
+      engine.check(api.get_array(e, object.c_str(), name.c_str(), nullptr, 0, &n), where);
+      std::vector<double> v(n);
+      engine.check(api.get_array(e, object.c_str(), name.c_str(), v.data(), v.size(), &n), where);
+      return v;
+    }
+    default:
+      return nullptr;
+  }
+}
+
+int cmd_properties(const std::vector<std::string>& args, const Global& g) {
+  const Options o = parse_options(args, *find_command("properties"));
+  const EngineChoice choice = engine_choice(o, g);
+  const std::string format = o.get("--format").value_or("table");
+  if (format != "table" && format != "json") throw UsageError("--format: '" + format + "' is not table or json");
+  if (!o.scenario) throw UsageError("properties: missing KIND (sensor, satellite, aircraft, ground_vehicle, "
+                                    "missile, star_field, central_body or a central body's name)");
+  const std::string kind = *o.scenario;
+  static const std::vector<std::pair<std::string, int32_t>> kinds = {
+      {"satellite", EOIR_KIND_SATELLITE}, {"aircraft", EOIR_KIND_AIRCRAFT},
+      {"ground_vehicle", EOIR_KIND_GROUND_VEHICLE}, {"missile", EOIR_KIND_MISSILE}};
+  static const std::vector<std::string> bodies = {"Sun", "Mercury", "Venus", "Earth", "Mars", "Jupiter",
+                                                  "Saturn", "Uranus", "Neptune", "Moon"};
+  Engine engine(config_of(choice));
+  const eoir_api_v1& api = engine.api();
+  const eoir_engine e = engine.handle();
+  std::string object;
+  if (kind == "sensor") {
+    engine.check(api.object_add(e, EOIR_KIND_SATELLITE, "Host"), "satellite");
+    engine.check(api.sensor_add(e, "Sensor", "Host"), "sensor");
+    object = "Sensor";
+  } else if (kind == "star_field") {
+    engine.check(api.object_add(e, EOIR_KIND_STAR_FIELD, "Stars"), "star field");
+    object = "Stars";
+  } else if (kind == "central_body" || contains(bodies, kind)) {
+    object = kind == "central_body" ? "Earth" : kind;
+    if (object != "Sun") engine.check(api.object_add(e, EOIR_KIND_CENTRAL_BODY, object.c_str()), object);
+  } else {
+    int32_t code = 0;
+    for (const auto& [name, c] : kinds)
+      if (name == kind) code = c;
+    if (code == 0) {
+      std::vector<std::string> known = {"sensor", "star_field", "central_body"};
+      for (const auto& k : kinds) known.push_back(k.first);
+      known.insert(known.end(), bodies.begin(), bodies.end());
+      throw UsageError("properties: unknown kind '" + kind + "'" + did_you_mean(kind, known) + "; kinds: " +
+                       join(known));
+    }
+    engine.check(api.object_add(e, code, "Object"), kind);
+    object = "Object";
+  }
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (std::size_t i = 0;; ++i) {
+    eoir_property_info info{};
+    info.struct_size = sizeof info;
+    const eoir_status st = api.property_info_at(e, object.c_str(), i, &info);
+    if (st == EOIR_ERR_OUT_OF_RANGE) break;
+    engine.check(st, "property " + std::to_string(i));
+    nlohmann::ordered_json p;
+    p["name"] = info.name ? info.name : "";
+    p["type"] = type_text(info.type);
+    p["unit"] = info.unit ? info.unit : "";
+    p["default"] = property_value(engine, object, p["name"].get<std::string>(), info.type);
+    p["range"] = nullptr;  // not in C ABI 1.2: the engine checks ranges when a value is set
+    p["description"] = info.description ? info.description : "";
+    list.push_back(std::move(p));
+  }
+  if (format == "json") {
+    nlohmann::ordered_json doc;
+    doc["kind"] = kind;
+    doc["properties"] = list;
+    std::cout << doc.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << "properties of a " << kind << (kind == "central_body" ? " (the Earth's defaults)" : "")
+            << " (range: checked by the engine when set; not listed by C ABI 1.2)\n\n";
+  std::size_t wn = 4, wt = 4, wu = 4, wd = 7;
+  const auto default_text = [](const nlohmann::ordered_json& v) {
+    std::string t = v.is_string() ? v.get<std::string>() : v.dump();
+    if (t.size() > 40) t = t.substr(0, 37) + "...";
+    return t.empty() ? std::string("\"\"") : t;
+  };
+  for (const auto& p : list) {
+    wn = std::max(wn, p["name"].get<std::string>().size());
+    wt = std::max(wt, p["type"].get<std::string>().size());
+    wu = std::max(wu, p["unit"].get<std::string>().size());
+    wd = std::max(wd, default_text(p["default"]).size());
+  }
+  const auto pad = [](std::string s, std::size_t w) { return s + std::string(w > s.size() ? w - s.size() : 0, ' '); };
+  std::cout << pad("name", wn) << "  " << pad("type", wt) << "  " << pad("unit", wu) << "  " << pad("default", wd)
+            << "  description\n";
+  for (const auto& p : list)
+    std::cout << pad(p["name"].get<std::string>(), wn) << "  " << pad(p["type"].get<std::string>(), wt) << "  "
+              << pad(p["unit"].get<std::string>().empty() ? "-" : p["unit"].get<std::string>(), wu) << "  "
+              << pad(default_text(p["default"]), wd) << "  " << p["description"].get<std::string>() << "\n";
+  return 0;
+}
+
+// ---- save-state / load-state
+int cmd_save_state(const std::vector<std::string>& args, const Global& g) {
+  const Options o = parse_options(args, *find_command("save-state"));
+  const EngineChoice choice = engine_choice(o, g);
+  if (!o.scenario) throw UsageError("save-state: missing SCENARIO");
+  const auto out = o.get("--out");
+  if (!out || out->empty()) throw UsageError("save-state: missing --out FILE");
+  std::optional<double> at;
+  if (const auto t = o.get("--time")) at = parse_time_option(*t, "--time");
+  const Scenario sc = load_scenario(*o.scenario);
+  Engine engine(config_of(choice));
+  Session session(engine, sc);
+  const double t = at.value_or(sc.start_s);
+  session.set_time(t);
+  engine.check(engine.api().state_save(engine.handle(), out->c_str()), "--out " + *out);
+  std::printf("eoir save-state: wrote %s (scenario '%s' at %s)\n", out->c_str(), sc.name.c_str(),
+              format_iso(t).c_str());
+  return 0;
+}
+
+int cmd_load_state(const std::vector<std::string>& args, const Global& g) {
+  const Options o = parse_options(args, *find_command("load-state"));
+  const EngineChoice choice = engine_choice(o, g);
+  if (!o.scenario) throw UsageError("load-state: missing FILE");
+  Engine engine(config_of(choice));
+  const eoir_api_v1& api = engine.api();
+  engine.check(api.state_load(engine.handle(), o.scenario->c_str()), *o.scenario);
+  eoir_time t{};
+  engine.check(api.engine_get_time(engine.handle(), EOIR_TIME_UTC, &t), "time");
+  char iso[64];
+  engine.check(api.time_to_iso(&t, iso, sizeof iso), "time");
+  std::cout << "state: " << *o.scenario << "\ntime: " << iso << "\nobjects:\n";
+  std::size_t n = 0;
+  engine.check(api.object_count(engine.handle(), &n), "object_count");
+  std::vector<std::pair<std::string, std::string>> sensors;
+  std::vector<std::string> sensor_names;
+  static const char* const kind_names[] = {"?", "central body", "star field", "satellite", "aircraft",
+                                           "ground vehicle", "missile", "sensor"};
+  for (std::size_t i = 0; i < n; ++i) {
+    const char* name = nullptr;
+    int32_t k = 0;
+    engine.check(api.object_at(engine.handle(), i, &name, &k), "object_at");
+    std::cout << "  " << (name ? name : "") << " (" << kind_names[(k >= 1 && k <= 7) ? k : 0] << ")\n";
+    if (k == EOIR_KIND_SENSOR) {
+      sensor_names.emplace_back(name ? name : "");
+      sensors.emplace_back(sensor_names.back(), "its parent");
+    }
+  }
+  if (const auto only = o.get("--sensor")) {
+    if (!contains(sensor_names, *only))
+      throw UsageError("--sensor: unknown sensor '" + *only + "' in " + *o.scenario + did_you_mean(*only, sensor_names) +
+                       "; sensors: " + join(sensor_names));
+    sensors = {{*only, "its parent"}};
+  }
+  print_sensor_metrics(engine, sensors, 0);
+  return 0;
+}
+
+int cmd_version(const Global& g) {
   std::cout << "eoir " << EOIR_CLI_VERSION << " (C ABI " << EOIR_VERSION_MAJOR << "." << EOIR_VERSION_MINOR << ")\n";
   try {
-    Engine engine(library);
-    const uint32_t v = engine.api().version();
-    std::cout << "engine " << v / 10000 << "." << v / 100 % 100 << "." << v % 100 << " (" << engine.library_path()
-              << ")\n";
+    const EngineChoice choice = engine_choice(Options{}, g);
+    Engine engine(config_of(choice));
+    std::cout << "engine " << engine_version_text(engine) << " (" << engine.library_path() << ")\n";
   } catch (const std::exception& e) {
     std::cout << "engine: not loaded (" << e.what() << ")\n";
   }
+  return 0;
+}
+
+int cmd_help(const std::vector<std::string>& args) {
+  if (args.empty()) {
+    std::cout << kUsage;
+    return 0;
+  }
+  const CommandSpec* c = find_command(args[0]);
+  if (c == nullptr)
+    throw UsageError("help: unknown command '" + args[0] + "'" + did_you_mean(args[0], command_names()));
+  std::cout << command_help(*c);
   return 0;
 }
 
@@ -529,28 +989,50 @@ int cmd_version(const char* library) {
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  std::string library_storage;
-  const char* library = nullptr;
+  Global g;
   try {
-    if (args.size() >= 2 && args[0] == "--library") {
-      library_storage = args[1];
-      library = library_storage.c_str();
-      args.erase(args.begin(), args.begin() + 2);
+    // Global options before the command: --library, --seed, --threads.
+    while (!args.empty()) {
+      std::string a = args[0];
+      std::optional<std::string> value;
+      if (a.rfind("--", 0) == 0 && a.find('=') != std::string::npos) {
+        value = a.substr(a.find('=') + 1);
+        a = a.substr(0, a.find('='));
+      }
+      if (!contains(kEngineValued, a)) break;
+      std::size_t used = 1;
+      if (!value) {
+        if (args.size() < 2) throw UsageError(a + " needs a value");
+        value = args[1];
+        used = 2;
+      }
+      (a == "--library" ? g.library : a == "--seed" ? g.seed : g.threads) = *value;
+      args.erase(args.begin(), args.begin() + static_cast<std::ptrdiff_t>(used));
     }
-    if (args.empty()) return cmd_default(library);
+    if (g.seed) (void)parse_seed(*g.seed);
+    if (g.threads) (void)parse_threads(*g.threads);
+    if (args.empty()) return cmd_default(g);
     const std::string cmd = args[0];
     const std::vector<std::string> rest(args.begin() + 1, args.end());
-    if (cmd == "--help" || cmd == "-h" || cmd == "help") {
-      std::cout << kUsage;
-      return 0;
-    }
-    if (cmd == "--version") return cmd_version(library);
-    if (cmd == "report") return cmd_report(rest, library);
-    if (cmd == "run") return cmd_run(rest, library);
-    if (cmd == "access") return cmd_access(rest, library);
-    if (cmd == "validate") return cmd_validate(rest, library);
-    if (cmd == "groups") return cmd_groups(library);
-    throw UsageError("unknown command '" + cmd + "'");
+    if (cmd == "--help" || cmd == "-h") return cmd_help({});
+    if (cmd == "help") return cmd_help(rest);
+    if (cmd == "--version") return cmd_version(g);
+    if (cmd == "report") return cmd_report(rest, g);
+    if (cmd == "run") return cmd_run(rest, g);
+    if (cmd == "access") return cmd_access(rest, g);
+    if (cmd == "validate") return cmd_validate(rest, g);
+    if (cmd == "groups") return cmd_groups(rest, g);
+    if (cmd == "properties") return cmd_properties(rest, g);
+    if (cmd == "save-state") return cmd_save_state(rest, g);
+    if (cmd == "load-state") return cmd_load_state(rest, g);
+    std::vector<std::string> known = command_names();
+    known.push_back("--help");
+    known.push_back("--version");
+    throw UsageError(std::string(cmd.rfind("-", 0) == 0 ? "unknown option '" : "unknown command '") + cmd + "'" +
+                     did_you_mean(cmd, known));
+  } catch (const HelpRequested& h) {
+    std::cout << command_help(*h.command);
+    return 0;
   } catch (const UsageError& e) {
     std::cerr << "eoir: " << e.what() << "\n(run `eoir --help` for usage)\n";
     return 1;

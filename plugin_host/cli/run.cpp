@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <array>
 #include <system_error>
 
 #include <unistd.h>
@@ -18,6 +20,7 @@
 #include "iso_time.hpp"
 #include "png_writer.hpp"
 #include "session.hpp"
+#include "suggest.hpp"
 
 #ifndef EOIR_CLI_VERSION
 #define EOIR_CLI_VERSION "0.0.0"
@@ -32,6 +35,9 @@ namespace io = eoir::imageio;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
+// Pixel units in FITS unit syntax (FITS 4.0 section 4.3; astropy reads both).
+constexpr const char* kBunitRadiance = "W cm-2 sr-1";
+constexpr const char* kBunitElectrons = "electron";
 
 struct Stats {
   double min = 0, max = 0, mean = 0;
@@ -127,7 +133,16 @@ class RunContext {
 
   // Per-frame truth (eoir_truth_count/get): every object in the field of
   // the last frame, as a JSON array (schemas/truth.schema.json).
-  ojson truth(const std::string& sensor, const std::string& where) const {
+  // J2000 position of an object at the engine time (metres).
+  std::array<double, 3> j2000_position(const std::string& name, const std::string& where) const {
+    eoir_state st{};
+    st.struct_size = sizeof st;
+    st.frame = EOIR_FRAME_J2000;
+    engine_.check(engine_.api().object_get_state(engine_.handle(), name.c_str(), &st), where + ": state of " + name);
+    return {st.position[0], st.position[1], st.position[2]};
+  }
+
+  ojson truth(const std::string& sensor, const std::string& where, const eoir_image_info& pixels) const {
     const eoir_api_v1& api = engine_.api();
     if (api.struct_size < offsetof(eoir_api_v1, truth_get) + sizeof api.truth_get || api.truth_count == nullptr ||
         api.truth_get == nullptr)
@@ -145,6 +160,19 @@ class RunContext {
       o["object"] = std::string(t.object);
       o["pixel_x"] = num(t.pixel_x);
       o["pixel_y"] = num(t.pixel_y);
+      // FITS pixel convention: 1-based, centre of the first pixel = 1.0, row
+      // 1 at the bottom (the FITS files are written bottom row first).
+      o["x_fits"] = num(t.pixel_x + 1.0);
+      o["y_fits"] = num(static_cast<double>(pixels.height) - t.pixel_y);
+      // Geometric J2000 direction from the sensor to the object.
+      const std::string name(t.object);
+      const auto target = j2000_position(name, where);
+      const auto self = j2000_position(sensor, where);
+      const double dx = target[0] - self[0], dy = target[1] - self[1], dz = target[2] - self[2];
+      double ra = std::atan2(dy, dx) / kDeg;
+      if (ra < 0) ra += 360.0;
+      o["ra_deg"] = num(ra);
+      o["dec_deg"] = num(std::atan2(dz, std::hypot(dx, dy)) / kDeg);
       o["range_m"] = num(t.range_m);
       o["point_source"] = t.point_source != 0;
       o["visible"] = t.visible != 0;
@@ -166,12 +194,19 @@ class RunContext {
     return buf;
   }
 
+  // FITS dates carry no time-zone letter (FITS 4.0 section 9.1.1; the time
+  // scale is TIMESYS).
+  static std::string fits_time(std::string iso) {
+    if (!iso.empty() && (iso.back() == 'Z' || iso.back() == 'z')) iso.pop_back();
+    return iso;
+  }
+
   // Header common to every FITS file of a frame; samples_per_pixel is 4 for
   // the scene (4x4 samples per pixel) and 1 for the sensor images.
   io::FitsHeader header(const SensorSpec& s, std::size_t index, const eoir_image_info& in, const char* kind_name,
-                        const char* bunit, int samples_per_pixel) const {
+                        const char* bunit, int samples_per_pixel, double cube_step_s = 0.0) const {
     io::FitsHeader h;
-    h.set_string("DATE-OBS", iso_of(in), "frame time (UTC)");
+    h.set_string("DATE-OBS", fits_time(iso_of(in)), "frame time (UTC)");
     h.set_string("TIMESYS", "UTC", "time scale of DATE-OBS");
     h.set_double("MJD-OBS", (in.time_jd_utc[0] - 2400000.5) + in.time_jd_utc[1], "frame time, MJD (UTC)");
     h.set_string("BUNIT", bunit, "unit of the pixel values");
@@ -212,9 +247,18 @@ class RunContext {
     wcs.cd2_1 = d1 * std::sin(pa);
     wcs.cd2_2 = d2 * std::cos(pa);
     wcs.radesys = "ICRS";  // J2000 axes of the engine (GCRS ~ ICRS)
+    wcs.time_step_s = cube_step_s;
+    wcs.mjdref = (in.time_jd_utc[0] - 2400000.5) + in.time_jd_utc[1];
+    wcs.dateref = fits_time(iso_of(in));
     io::add_tan_pointing(h, wcs);
     h.set_string("ORIGIN", "eoir " EOIR_CLI_VERSION, "eoir run");
     return h;
+  }
+
+  // Mean pixel pitch at the boresight, degrees.
+  double pixel_scale_deg(const SensorSpec& s, const eoir_image_info& in) const {
+    const double hfov = number(s.name, "horizontal_fov_deg");
+    return 2.0 * std::tan(hfov * kDeg / 2.0) / static_cast<double>(in.width) / kDeg;
   }
 
   void write_fits(const std::string& path, const std::vector<double>& v, const eoir_image_info& in,
@@ -227,6 +271,36 @@ class RunContext {
  private:
   Engine& engine_;
   const Scenario& sc_;
+};
+
+// A ds9 region file of a frame's truth: a labelled circle (3 pixels) at each
+// object's RA/Dec in ICRS, green if visible, red if hidden behind another.
+std::string region_text(const ojson& truth, const std::string& sensor, const std::string& time, double radius_deg) {
+  std::string out = "# Region file format: DS9 version 4.1\n";
+  out += "# eoir run: truth of " + sensor + " at " + time + " (circles of 3 pixels at the objects' RA/Dec)\n";
+  out += "global color=green width=1 font=\"helvetica 10 normal roman\" select=1 edit=1 move=1 delete=1 "
+         "include=1 source=1\nicrs\n";
+  char line[512];
+  for (const auto& t : truth) {
+    if (!t["ra_deg"].is_number() || !t["dec_deg"].is_number()) continue;
+    std::string name = t["object"].get<std::string>();
+    for (char& c : name)
+      if (c == '{' || c == '}' || c == '\n') c = '_';
+    const bool visible = t["visible"].get<bool>();
+    std::snprintf(line, sizeof line, "circle(%.9f,%.9f,%.4f\") # text={%s}%s\n", t["ra_deg"].get<double>(),
+                  t["dec_deg"].get<double>(), radius_deg * 3600.0, name.c_str(), visible ? "" : " color=red");
+    out += line;
+  }
+  return out;
+}
+
+// Frames of one sensor kept for the data cube.
+struct CubeFrames {
+  const SensorSpec* sensor = nullptr;
+  eoir_image_info first{};
+  std::vector<std::vector<double>> planes;
+  std::vector<std::string> times;
+  std::vector<double> mjd, boresight_ra, boresight_dec, up_ra, up_dec;
 };
 
 std::string format_duration(double s) {
@@ -261,6 +335,31 @@ void write_text_atomically(const std::string& path, const std::string& text) {
 
 }  // namespace
 
+io::FitsHeader frame_fits_header(Engine& engine, const Scenario& sc, const SensorSpec& s, std::size_t index,
+                                 int32_t kind) {
+  RunContext ctx(engine, sc);
+  const std::string where = "FITS header of " + s.name;
+  const eoir_image_info in = ctx.info(s.name, kind, where);
+  switch (kind) {
+    case EOIR_IMAGE_SCENE_RADIANCE:
+      return ctx.header(s, index, in, "scene_radiance", kBunitRadiance, 4);
+    case EOIR_IMAGE_SENSOR_ELECTRONS:
+      return ctx.header(s, index, in, "sensor_electrons", kBunitElectrons, 1);
+    case EOIR_IMAGE_SENSOR_MEAN:
+      return ctx.header(s, index, in, "sensor_mean", kBunitElectrons, 1);
+    default:
+      throw EngineError(where + ": image kind " + std::to_string(kind) + " is not written to FITS",
+                        EOIR_ERR_OUT_OF_RANGE);
+  }
+}
+
+std::string frame_truth_json(Engine& engine, const Scenario& sc, const std::string& sensor) {
+  RunContext ctx(engine, sc);
+  const std::string where = "truth of " + sensor;
+  const eoir_image_info in = ctx.info(sensor, EOIR_IMAGE_SENSOR_ELECTRONS, where);
+  return ctx.truth(sensor, where, in).dump(2) + "\n";
+}
+
 std::string file_stem(const std::string& name) {
   std::string out = name;
   for (char& c : out) {
@@ -282,9 +381,13 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
       const SensorSpec* s = sc.find_sensor(name);
       if (s == nullptr) {
         std::string known;
-        for (const SensorSpec& k : sc.sensors) known += (known.empty() ? "'" : ", '") + k.name + "'";
+        std::vector<std::string> names;
+        for (const SensorSpec& k : sc.sensors) {
+          known += (known.empty() ? "'" : ", '") + k.name + "'";
+          names.push_back(k.name);
+        }
         throw std::runtime_error("--sensor: unknown sensor '" + name + "' in " + opt.scenario_file +
-                                 "; sensors: " + (known.empty() ? "(none)" : known));
+                                 did_you_mean(name, names) + "; sensors: " + (known.empty() ? "(none)" : known));
       }
       if (std::find(sensors.begin(), sensors.end(), s) == sensors.end()) sensors.push_back(s);
     }
@@ -311,6 +414,10 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
   std::size_t done = 0;
   const fs::path dir(opt.out_dir);
 
+  std::map<std::string, CubeFrames> cubes;
+  std::size_t cube_bytes = 0;
+  constexpr std::size_t kMaxCubeBytes = std::size_t{2} << 30;
+
   for (std::size_t i = 0; i < opt.times.size(); ++i) {
     session.set_time(opt.times[i]);
     for (const SensorSpec* s : sensors) {
@@ -322,7 +429,8 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
       const std::string base = file_stem(s->name) + "_" + index_text + "_";
       const std::string f_rad = base + "radiance.fits", f_el = base + "electrons.fits",
                         f_mean = base + "mean_electrons.fits", f_scene = base + "scene.png",
-                        f_sensor = base + "sensor.png", f_truth = base + "truth.json";
+                        f_sensor = base + "sensor.png", f_truth = base + "truth.json",
+                        f_region = base + "truth.reg";
 
       const eoir_image_info in_rad = ctx.info(s->name, EOIR_IMAGE_SCENE_RADIANCE, where + ": scene radiance");
       const eoir_image_info in_el = ctx.info(s->name, EOIR_IMAGE_SENSOR_ELECTRONS, where + ": sensor electrons");
@@ -337,19 +445,41 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
 
       try {
         ctx.write_fits((dir / f_rad).string(), rad, in_rad,
-                       ctx.header(*s, i, in_rad, "scene_radiance", "W/(cm2 sr)", 4));
+                       ctx.header(*s, i, in_rad, "scene_radiance", kBunitRadiance, 4));
         ctx.write_fits((dir / f_el).string(), el, in_el,
-                       ctx.header(*s, i, in_el, "sensor_electrons", "electrons", 1));
+                       ctx.header(*s, i, in_el, "sensor_electrons", kBunitElectrons, 1));
         ctx.write_fits((dir / f_mean).string(), mean, in_mean,
-                       ctx.header(*s, i, in_mean, "sensor_mean", "electrons", 1));
+                       ctx.header(*s, i, in_mean, "sensor_mean", kBunitElectrons, 1));
         io::write_png_gray8((dir / f_scene).string(), sd.data(), in_sd.width, in_sd.height);
         io::write_png_gray8((dir / f_sensor).string(), pd.data(), in_pd.width, in_pd.height);
-        const ojson truth = ctx.truth(s->name, where + ": truth");
+        const ojson truth = ctx.truth(s->name, where + ": truth", in_el);
         const std::string truth_text = truth.dump(2) + "\n";
         io::write_file_atomically((dir / f_truth).string(), truth_text.data(), truth_text.size());
+        const std::string region =
+            region_text(truth, s->name, ctx.iso_of(in_el), ctx.pixel_scale_deg(*s, in_el));
+        io::write_file_atomically((dir / f_region).string(), region.data(), region.size());
       } catch (const io::ImageIoError& e) {
         throw std::runtime_error(std::string("cannot write frame ") + index_text + " of " + s->name + ": " +
                                  e.what());
+      }
+
+      if (opt.cube) {
+        CubeFrames& c = cubes[s->name];
+        if (c.planes.empty()) {
+          c.sensor = s;
+          c.first = in_el;
+        }
+        cube_bytes += el.size() * sizeof(double);
+        if (cube_bytes > kMaxCubeBytes)
+          throw std::runtime_error("--cube: the data cubes would exceed " + std::to_string(kMaxCubeBytes >> 30) +
+                                   " GiB of memory; use fewer time steps or sensors");
+        c.planes.push_back(el);
+        c.times.push_back(RunContext::fits_time(ctx.iso_of(in_el)));
+        c.mjd.push_back((in_el.time_jd_utc[0] - 2400000.5) + in_el.time_jd_utc[1]);
+        c.boresight_ra.push_back(in_el.boresight_ra_deg);
+        c.boresight_dec.push_back(in_el.boresight_dec_deg);
+        c.up_ra.push_back(in_el.up_ra_deg);
+        c.up_dec.push_back(in_el.up_dec_deg);
       }
 
       ojson fr;
@@ -357,7 +487,8 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
       fr["time"] = ctx.iso_of(in_el);
       fr["sensor"] = s->name;
       fr["files"] = {{"radiance", f_rad},   {"electrons", f_el},  {"mean_electrons", f_mean},
-                     {"scene_png", f_scene}, {"sensor_png", f_sensor}, {"truth", f_truth}};
+                     {"scene_png", f_scene}, {"sensor_png", f_sensor}, {"truth", f_truth},
+                     {"regions", f_region}};
       fr["scene_size"] = {{"width", in_rad.width}, {"height", in_rad.height}};
       fr["sensor_size"] = {{"width", in_el.width}, {"height", in_el.height}};
       fr["boresight_ra_deg"] = in_el.boresight_ra_deg;
@@ -382,6 +513,39 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
   }
   if (!opt.quiet && tty) std::fprintf(stderr, "\n");
 
+  // Data cubes: every frame of a sensor as one image (NAXIS3 = time step) with
+  // the first frame's pointing and a linear time axis; a TIMES table gives
+  // each plane's exact time and pointing (a moving sensor changes it).
+  ojson cube_files = ojson::object();
+  for (const SensorSpec* s : sensors) {
+    if (!opt.cube) break;
+    const CubeFrames& c = cubes.at(s->name);
+    const double step = opt.times.size() > 1 ? opt.times[1] - opt.times[0] : 1.0;
+    io::FitsHeader h = ctx.header(*s, 0, c.first, "sensor_electrons_cube", kBunitElectrons, 1, step > 0 ? step : 1.0);
+    h.set_integer("NFRAMES", static_cast<long long>(c.planes.size()), "frames in the cube (NAXIS3)");
+    h.add_comment("Plane k (1-based) is time step k-1 of the run; its time and pointing are in the TIMES table.");
+    h.add_comment("The celestial WCS is the first plane's.");
+    io::FitsTable table;
+    table.extname = "TIMES";
+    std::vector<double> frame_index;
+    for (std::size_t k = 0; k < c.planes.size(); ++k) frame_index.push_back(static_cast<double>(k));
+    table.columns = {{"FRAME", "", frame_index, {}},          {"DATE-OBS", "", {}, c.times},
+                     {"MJD-OBS", "d", c.mjd, {}},             {"BORE_RA", "deg", c.boresight_ra, {}},
+                     {"BORE_DEC", "deg", c.boresight_dec, {}}, {"UP_RA", "deg", c.up_ra, {}},
+                     {"UP_DEC", "deg", c.up_dec, {}}};
+    std::vector<const double*> planes;
+    for (const auto& p : c.planes) planes.push_back(p.data());
+    const std::string name = file_stem(s->name) + "_electrons_cube.fits";
+    io::FitsWriteOptions o;
+    o.pixel_type = io::FitsPixelType::Float32;
+    try {
+      io::write_fits_cube((dir / name).string(), planes, c.first.width, c.first.height, h, table, o);
+    } catch (const io::ImageIoError& e) {
+      throw std::runtime_error("cannot write the data cube of " + s->name + ": " + e.what());
+    }
+    cube_files[s->name] = name;
+  }
+
   ojson sensors_json = ojson::array();
   for (const SensorSpec* s : sensors) sensors_json.push_back({{"name", s->name}, {"parent", s->parent}});
   ojson summary;
@@ -393,9 +557,14 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
   summary["stop"] = format_iso(opt.times.back());
   summary["time_steps"] = opt.times.size();
   summary["sensors"] = sensors_json;
-  summary["units"] = {{"radiance", "W/(cm2 sr)"}, {"electrons", "electrons"}};
+  summary["units"] = {{"radiance", kBunitRadiance}, {"electrons", kBunitElectrons}};
   summary["frames"] = frames;
+  if (opt.cube) summary["cubes"] = cube_files;
   write_text_atomically((dir / "summary.json").string(), summary.dump(2) + "\n");
+  if (!opt.save_state.empty()) {
+    engine.check(engine.api().state_save(engine.handle(), opt.save_state.c_str()), "--save-state " + opt.save_state);
+    if (!opt.quiet) std::fprintf(stderr, "eoir run: saved the engine state to %s\n", opt.save_state.c_str());
+  }
   if (!opt.quiet)
     std::fprintf(stderr, "eoir run: wrote %zu frames to %s (summary.json)\n", done, opt.out_dir.c_str());
   return done;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine.hpp"
+#include "fits_writer.hpp"
 #include "scenario.hpp"
 
 namespace eoir::cli {
@@ -17,6 +18,8 @@ struct RunOptions {
   std::vector<double> times;         // seconds since J2000 (UTC-based, see iso_time.hpp)
   std::vector<std::string> sensors;  // empty: every sensor of the scenario
   bool quiet = false;
+  bool cube = false;                 // also <sensor>_electrons_cube.fits (every frame, one 3-D image)
+  std::string save_state;            // if not empty: eoir_state_save after the last frame
 };
 
 // Per frame (time step i, sensor s), in DIR:
@@ -32,6 +35,17 @@ struct RunOptions {
 // Throws EngineError, ScenarioError or std::runtime_error naming the problem.
 // Returns the number of frames written.
 std::size_t run_frames(Engine& engine, const Scenario& scenario, const RunOptions& options);
+
+// The header cards `eoir run` writes into a FITS file of the last frame
+// rendered for `sensor` (image_kind: EOIR_IMAGE_SCENE_RADIANCE,
+// _SENSOR_ELECTRONS or _SENSOR_MEAN): DATE-OBS, BUNIT, sensor, pointing and
+// its TAN WCS. `index` is the FRAME card. Throws EngineError.
+eoir::imageio::FitsHeader frame_fits_header(Engine& engine, const Scenario& scenario, const SensorSpec& sensor,
+                                            std::size_t index, int32_t image_kind);
+
+// The per-frame truth `eoir run` writes (schemas/truth.schema.json) for the
+// last frame rendered for `sensor`, as JSON text.
+std::string frame_truth_json(Engine& engine, const Scenario& scenario, const std::string& sensor);
 
 // The file-name form of a sensor name.
 std::string file_stem(const std::string& sensor_name);

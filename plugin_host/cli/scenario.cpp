@@ -2,17 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <cstdio>
 #include <set>
 #include <sstream>
 
 #include "iso_time.hpp"
+#include "json_guard.hpp"
+#include "suggest.hpp"
 
 namespace eoir::cli {
 namespace {
 
 using nlohmann::json;
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kEarthEquatorialRadiusM = 6378137.0;  // WGS84
 
 [[noreturn]] void fail(const std::string& path, const std::string& why) { throw ScenarioError(path + ": " + why); }
 
@@ -79,6 +82,19 @@ void check_name(const std::string& name, const std::string& path) {
   if (name.empty() || name.size() > 63) fail(path, "names are 1 to 63 bytes");
 }
 
+// An orbit whose perigee lies below the central body's surface would pass
+// through it (the engine would place the satellite inside the Earth).
+void check_perigee(double perigee_m, const std::string& path) {
+  if (perigee_m < kEarthEquatorialRadiusM) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "perigee radius %.3f km is below the surface of the Earth (equatorial radius %.3f km): "
+                  "the orbit passes through the central body",
+                  perigee_m / 1e3, kEarthEquatorialRadiusM / 1e3);
+    fail(path, text);
+  }
+}
+
 Attitude parse_attitude(const json& j, const std::string& path) {
   need_object(j, path);
   Attitude a;
@@ -142,6 +158,7 @@ Motion parse_motion(const json& j, const std::string& path) {
       el.mean_anomaly_at_epoch =
           true_to_mean_anomaly(get_number_or(j, path, "true_anomaly_deg", 0.0) * kDeg, el.eccentricity);
     el.epoch_s = get_time(j, path, "epoch");
+    check_perigee(el.semi_major_axis_m * (1 - el.eccentricity), path);
     try {
       m.kepler = std::make_shared<KeplerOrbit>(el);
     } catch (const std::invalid_argument& e) {
@@ -176,8 +193,20 @@ Motion parse_motion(const json& j, const std::string& path) {
       fail(path, e.what());
     }
     m.kind = Motion::Kind::ephemeris;
+  } else if (type == "tle") {
+    only_keys(j, path, {"type", "line1", "line2"});
+    const std::string l1 = get_string(j, path, "line1"), l2 = get_string(j, path, "line2");
+    try {
+      m.tle = std::make_shared<Sgp4>(Sgp4::from_tle(l1, l2));
+    } catch (const std::invalid_argument& e) {
+      const std::string why = e.what();
+      fail(path + (why.rfind("line 1", 0) == 0 ? ".line1" : ".line2"), why);
+    }
+    check_perigee(m.tle->perigee_radius_km() * 1e3, path);
+    m.kind = Motion::Kind::tle;
   } else {
-    fail(path + ".type", "'" + type + "' is not one of fixed_geodetic, kepler, ephemeris");
+    fail(path + ".type", "'" + type + "' is not one of fixed_geodetic, kepler, ephemeris, tle" +
+                             did_you_mean(type, {"fixed_geodetic", "kepler", "ephemeris", "tle"}));
   }
   return m;
 }
@@ -310,13 +339,20 @@ Scenario parse_scenario(const json& doc, const std::string& file) {
 }
 
 Scenario load_scenario(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw ScenarioError(file + ": cannot open the scenario file");
   json doc;
   try {
-    doc = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw ScenarioError(file + ": not valid JSON: " + e.what());
+    std::string text;
+    try {
+      text = read_file_capped(file);
+    } catch (const JsonInputError& e) {
+      const std::string why = e.what();
+      throw ScenarioError(why.rfind("cannot open", 0) == 0 ? "cannot open the scenario file (" + why + ")" : why);
+    }
+    doc = parse_json_checked(text);  // depth, duplicate keys, number range
+  } catch (const JsonInputError& e) {
+    throw ScenarioError(file + ": " + e.what());
+  } catch (const ScenarioError& e) {
+    throw ScenarioError(file + ": " + e.what());
   }
   try {
     return parse_scenario(doc, file);
@@ -338,8 +374,31 @@ PosVel motion_state(const ObjectSpec& o, double t) {
       } catch (const std::out_of_range& e) {
         throw ScenarioError(o.path + ".motion: " + e.what());
       }
+    case Motion::Kind::tle:
+      try {
+        return tle_state_j2000(*m.tle, t);
+      } catch (const Sgp4Error& e) {
+        throw ScenarioError(o.path + ".motion: SGP4 at " + format_iso(t) + ": " + e.what());
+      } catch (const std::invalid_argument& e) {
+        throw ScenarioError(o.path + ".motion: " + e.what());
+      }
   }
   throw ScenarioError(o.path + ".motion: unknown kind");
+}
+
+PosVel tle_state_j2000(const Sgp4& sgp4, double t) {
+  // Minutes since the TLE epoch on the UTC time line (days of 86400 s, as
+  // SGP4's Julian dates count them).
+  const double minutes = ((2451545.0 - sgp4.epoch_jd()) - sgp4.epoch_jd_fraction()) * 1440.0 + t / 60.0;
+  const TemeState teme = sgp4.at_minutes(minutes);
+  const std::array<double, 9> m = teme_to_j2000_matrix(2451545.0, t / 86400.0);
+  PosVel out;
+  for (int i = 0; i < 3; ++i) {
+    out.position[i] = 1e3 * (m[3 * i] * teme.r_km[0] + m[3 * i + 1] * teme.r_km[1] + m[3 * i + 2] * teme.r_km[2]);
+    out.velocity[i] =
+        1e3 * (m[3 * i] * teme.v_km_s[0] + m[3 * i + 1] * teme.v_km_s[1] + m[3 * i + 2] * teme.v_km_s[2]);
+  }
+  return out;
 }
 
 }  // namespace eoir::cli

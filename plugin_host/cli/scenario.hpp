@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "motion.hpp"
+#include "sgp4.hpp"
 
 namespace eoir::cli {
 
@@ -30,12 +31,13 @@ struct Attitude {
 
 // Where the host pushes an object's state from.
 struct Motion {
-  enum class Kind { fixed_geodetic, kepler, ephemeris };
+  enum class Kind { fixed_geodetic, kepler, ephemeris, tle };
   Kind kind = Kind::fixed_geodetic;
   double lat_deg = 0, lon_deg = 0, alt_m = 0;  // fixed_geodetic
   std::shared_ptr<const KeplerOrbit> kepler;   // kepler (J2000)
   std::shared_ptr<const Ephemeris> ephemeris;  // ephemeris
   bool earth_fixed = false;                    // ephemeris frame
+  std::shared_ptr<const Sgp4> tle;             // tle (SGP4 in TEME, pushed in J2000)
 };
 
 struct ObjectSpec {
@@ -80,10 +82,14 @@ Scenario load_scenario(const std::string& file);
 // Checks a parsed JSON document (file is used in messages only).
 Scenario parse_scenario(const nlohmann::json& doc, const std::string& file);
 
-// The object's position and velocity at t in its own frame (J2000 for kepler
-// and j2000 ephemerides, Earth-fixed for earth_fixed ephemerides, geodetic
+// The object's position and velocity at t in its own frame (J2000 for kepler,
+// tle and j2000 ephemerides, Earth-fixed for earth_fixed ephemerides, geodetic
 // {lat, lon, height} for fixed_geodetic). Throws ScenarioError naming
 // "objects[i].motion" (e.g. a time outside the ephemeris).
 PosVel motion_state(const ObjectSpec& object, double t_s);
+
+// SGP4 from two-line elements at host time t (seconds, iso_time.hpp), rotated
+// from TEME into J2000 (sgp4.hpp). Throws Sgp4Error.
+PosVel tle_state_j2000(const Sgp4& sgp4, double t_s);
 
 }  // namespace eoir::cli

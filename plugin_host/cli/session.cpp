@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "iso_time.hpp"
+#include "suggest.hpp"
 
 namespace eoir::cli {
 namespace {
@@ -16,7 +17,8 @@ int32_t kind_code(const std::string& kind) {
 }
 
 bool natural_j2000(const ObjectSpec& o) {
-  return o.motion.kind == Motion::Kind::kepler || (o.motion.kind == Motion::Kind::ephemeris && !o.motion.earth_fixed);
+  return o.motion.kind == Motion::Kind::kepler || o.motion.kind == Motion::Kind::tle ||
+         (o.motion.kind == Motion::Kind::ephemeris && !o.motion.earth_fixed);
 }
 
 int32_t natural_frame(const ObjectSpec& o) {
@@ -94,6 +96,15 @@ void Session::apply_properties(const std::string& object, const nlohmann::json& 
       throw EngineError(where + ": unsupported value type " + std::string(v.type_name()) +
                             " (use a number, string, bool or array of numbers)",
                         EOIR_ERR_TYPE_MISMATCH);
+    }
+    if (s == EOIR_ERR_UNKNOWN_NAME && t == types.end()) {
+      std::vector<std::string> names;
+      for (const auto& kv : types) names.push_back(kv.first);
+      const std::string hint = did_you_mean(key, names);
+      if (!hint.empty()) {
+        const std::string why = api.last_error();
+        throw EngineError(where + ": " + why + hint + " (EOIR_ERR_UNKNOWN_NAME)", s);
+      }
     }
     engine_.check(s, where);
   }

@@ -1,11 +1,15 @@
 #include "atomic_write.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 namespace eoir::imageio {
@@ -19,15 +23,57 @@ std::string directory_of(const std::string& path) {
   if (slash == 0) return "/";
   return path.substr(0, slash);
 }
+
+// The file a plain open() for writing would write: symbolic links of the
+// last component followed (a dangling link's target is created).
+std::string resolve_links(const std::string& path) {
+  std::string p = path;
+  for (int hops = 0; hops < 40; ++hops) {
+    struct stat st {};
+    if (::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p;
+    std::string target(4096, '\0');
+    const ssize_t n = ::readlink(p.c_str(), target.data(), target.size() - 1);
+    if (n < 0) throw ImageIoError("cannot read the symbolic link " + p + ": " + errno_text(errno));
+    target.resize(static_cast<std::size_t>(n));
+    p = (!target.empty() && target[0] == '/') ? target : directory_of(p) + "/" + target;
+  }
+  throw ImageIoError("too many symbolic links: " + path);
+}
+
+// Removes "<base>.tmp.<pid>.<n>" beside the target when process <pid> is gone.
+void remove_stale_temporaries(const std::string& target) {
+  const std::string dir = directory_of(target);
+  const std::string base = target.substr(target.find_last_of('/') == std::string::npos ? 0 : target.find_last_of('/') + 1);
+  const std::string prefix = base + ".tmp.";
+  DIR* d = ::opendir(dir.c_str());
+  if (d == nullptr) return;
+  while (const dirent* e = ::readdir(d)) {
+    const std::string name = e->d_name;
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string rest = name.substr(prefix.size());
+    const auto dot = rest.find('.');
+    if (dot == std::string::npos || dot == 0 || dot + 1 == rest.size()) continue;
+    if (rest.find_first_not_of("0123456789.") != std::string::npos) continue;
+    const long pid = std::strtol(rest.substr(0, dot).c_str(), nullptr, 10);
+    if (pid <= 0 || pid == static_cast<long>(::getpid())) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive (or not ours to judge)
+    ::unlink((dir + "/" + name).c_str());
+  }
+  ::closedir(d);
+}
 }  // namespace
 
-void write_file_atomically(const std::string& path, const void* data, std::size_t size) {
+void write_file_atomically(const std::string& path_in, const void* data, std::size_t size) {
   static std::atomic<unsigned> counter{0};
-  if (path.empty()) throw ImageIoError("image output path is empty");
+  if (path_in.empty()) throw ImageIoError("image output path is empty");
+  const std::string path = resolve_links(path_in);
+  struct stat existing {};
+  const bool exists = ::stat(path.c_str(), &existing) == 0;
+  remove_stale_temporaries(path);
   // Unique per process and call; O_EXCL guards against collisions.
   const std::string tmp =
       path + ".tmp." + std::to_string(static_cast<long>(::getpid())) + "." + std::to_string(counter.fetch_add(1));
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) throw ImageIoError("cannot create " + tmp + ": " + errno_text(errno));
   const auto fail = [&](const std::string& what) {
     const int err = errno;
@@ -46,6 +92,7 @@ void write_file_atomically(const std::string& path, const void* data, std::size_
     p += n;
     left -= static_cast<std::size_t>(n);
   }
+  if (exists && ::fchmod(fd, existing.st_mode & 07777) != 0) fail("cannot set the mode of");
   if (::fsync(fd) != 0) fail("cannot fsync");
   if (::close(fd) != 0) {
     const int err = errno;

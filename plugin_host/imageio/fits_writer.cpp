@@ -61,10 +61,70 @@ struct MemFits {
   }
 };
 
+// Placeholder cards with fixed comments first: cfitsio then updates the
+// values and keeps the comments, instead of stamping the current time into
+// them, so identical inputs give byte-identical files.
+void write_checksums(fitsfile* f, const std::string& path, int& st) {
+  fits_write_key_str(f, "CHECKSUM", "0000000000000000", "HDU checksum (FITS 4.0 standard)", &st);
+  fits_write_key_str(f, "DATASUM", "0", "data unit checksum", &st);
+  // Flush first: the data unit's fill bytes are only written (as zeros)
+  // on a flush, and a checksum taken before it would sum whatever the
+  // memory driver's fresh buffer held (then cfitsio restamps the comment).
+  fits_flush_file(f, &st);
+  unsigned long datasum = 0, hdusum = 0;
+  fits_get_chksum(f, &datasum, &hdusum, &st);
+  const std::string datasum_text = std::to_string(datasum);
+  fits_update_key_str(f, "DATASUM", datasum_text.c_str(), "data unit checksum", &st);
+  fits_write_chksum(f, &st);
+  if (st) throw_fits(st, "FITS " + path + ": checksum");
+}
+
+void write_table(fitsfile* f, const std::string& path, const FitsTable& table, std::size_t rows,
+                 const FitsWriteOptions& options, int& st) {
+  std::vector<std::string> names, forms, units;
+  for (const auto& c : table.columns) {
+    const bool text = !c.strings.empty() || c.numbers.empty();
+    const std::size_t n = text ? c.strings.size() : c.numbers.size();
+    if (n != rows)
+      throw ImageIoError("FITS " + path + ": table column " + c.name + " has " + std::to_string(n) +
+                         " rows, expected " + std::to_string(rows));
+    std::size_t width = 1;
+    for (const auto& v : c.strings) width = std::max(width, v.size());
+    names.push_back(c.name);
+    forms.push_back(text ? std::to_string(width) + "A" : "1D");
+    units.push_back(c.unit);
+  }
+  std::vector<char*> n, fo, u;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    n.push_back(const_cast<char*>(names[i].c_str()));
+    fo.push_back(const_cast<char*>(forms[i].c_str()));
+    u.push_back(const_cast<char*>(units[i].c_str()));
+  }
+  fits_create_tbl(f, BINARY_TBL, static_cast<LONGLONG>(rows), static_cast<int>(n.size()), n.data(), fo.data(),
+                  u.data(), table.extname.c_str(), &st);
+  if (st) throw_fits(st, "FITS " + path + ": create table " + table.extname);
+  for (std::size_t k = 0; k < table.columns.size(); ++k) {
+    const auto& c = table.columns[k];
+    if (!c.strings.empty()) {
+      std::vector<char*> v;
+      for (const auto& x : c.strings) v.push_back(const_cast<char*>(x.c_str()));
+      fits_write_col(f, TSTRING, static_cast<int>(k + 1), 1, 1, static_cast<LONGLONG>(rows), v.data(), &st);
+    } else if (!c.numbers.empty()) {
+      std::vector<double> v = c.numbers;
+      fits_write_col(f, TDOUBLE, static_cast<int>(k + 1), 1, 1, static_cast<LONGLONG>(rows), v.data(), &st);
+    }
+    if (st) throw_fits(st, "FITS " + path + ": table column " + c.name);
+  }
+  if (options.checksum) write_checksums(f, path, st);
+}
+
 template <typename In>
-void write_image(const std::string& path, const In* pixels, std::int64_t width, std::int64_t height,
-                 const FitsHeader& header, const FitsWriteOptions& options) {
-  if (pixels == nullptr) throw ImageIoError("FITS " + path + ": pixel buffer is null");
+void write_image(const std::string& path, const std::vector<const In*>& planes, std::int64_t width,
+                 std::int64_t height, const FitsHeader& header, const FitsWriteOptions& options, bool cube,
+                 const FitsTable& table = {}) {
+  if (planes.empty()) throw ImageIoError("FITS " + path + ": no image planes");
+  for (const In* p : planes)
+    if (p == nullptr) throw ImageIoError("FITS " + path + ": pixel buffer is null");
   if (width < 1 || height < 1)
     throw ImageIoError("FITS " + path + ": image size " + std::to_string(width) + " x " + std::to_string(height) +
                        " must be at least 1 x 1");
@@ -78,8 +138,8 @@ void write_image(const std::string& path, const In* pixels, std::int64_t width, 
   fits_create_memfile(&m.f, &m.buffer, &m.size, 2880 * 16, std::realloc, &st);
   if (st) throw_fits(st, "FITS " + path + ": create in memory");
 
-  LONGLONG naxes[2] = {width, height};
-  fits_create_imgll(m.f, f64 ? DOUBLE_IMG : FLOAT_IMG, 2, naxes, &st);
+  LONGLONG naxes[3] = {width, height, static_cast<LONGLONG>(planes.size())};
+  fits_create_imgll(m.f, f64 ? DOUBLE_IMG : FLOAT_IMG, cube ? 3 : 2, naxes, &st);
   if (st) throw_fits(st, "FITS " + path + ": create image");
 
   for (const auto& c : header.cards()) {
@@ -113,9 +173,10 @@ void write_image(const std::string& path, const In* pixels, std::int64_t width, 
   const auto w = static_cast<std::size_t>(width);
   std::vector<float> row32(f64 ? 0 : w);
   std::vector<double> row64(f64 ? w : 0);
+  for (std::size_t plane = 0; plane < planes.size(); ++plane)
   for (std::int64_t j = 1; j <= height; ++j) {
-    const In* src = pixels + static_cast<std::size_t>(height - j) * w;
-    LONGLONG first[2] = {1, j};
+    const In* src = planes[plane] + static_cast<std::size_t>(height - j) * w;
+    LONGLONG first[3] = {1, j, static_cast<LONGLONG>(plane + 1)};
     if (f64) {
       for (std::size_t i = 0; i < w; ++i) row64[i] = static_cast<double>(src[i]);
       fits_write_pixll(m.f, TDOUBLE, first, static_cast<LONGLONG>(w), row64.data(), &st);
@@ -125,22 +186,8 @@ void write_image(const std::string& path, const In* pixels, std::int64_t width, 
     }
     if (st) throw_fits(st, "FITS " + path + ": write pixels");
   }
-  if (options.checksum) {
-    // Placeholder cards with fixed comments first: cfitsio then updates the
-    // values and keeps the comments, instead of stamping the current time
-    // into them, so identical inputs give byte-identical files.
-    fits_write_key_str(m.f, "CHECKSUM", "0000000000000000", "HDU checksum (FITS 4.0 standard)", &st);
-    fits_write_key_str(m.f, "DATASUM", "0", "data unit checksum", &st);
-    // Flush first: the data unit's fill bytes are only written (as zeros)
-    // on a flush, and a checksum taken before it would sum whatever the
-    // memory driver's fresh buffer held (then cfitsio restamps the comment).
-    fits_flush_file(m.f, &st);
-    unsigned long datasum = 0, hdusum = 0;
-    fits_get_chksum(m.f, &datasum, &hdusum, &st);
-    const std::string datasum_text = std::to_string(datasum);
-    fits_update_key_str(m.f, "DATASUM", datasum_text.c_str(), "data unit checksum", &st);
-    fits_write_chksum(m.f, &st);
-  }
+  if (options.checksum) write_checksums(m.f, path, st);
+  if (!table.extname.empty()) write_table(m.f, path, table, planes.size(), options, st);
   fits_flush_file(m.f, &st);
   LONGLONG head = 0, data = 0, end = 0;
   fits_get_hduaddrll(m.f, &head, &data, &end, &st);
@@ -226,7 +273,8 @@ FitsHeader& FitsHeader::add_history(const std::string& text) {
 }
 
 void add_tan_pointing(FitsHeader& h, const FitsPointing& p) {
-  h.set_integer("WCSAXES", 2, "number of WCS axes");
+  const bool time_axis = p.time_step_s > 0.0;
+  h.set_integer("WCSAXES", time_axis ? 3 : 2, "number of WCS axes");
   h.set_string("CTYPE1", "RA---TAN", "gnomonic projection, right ascension");
   h.set_string("CTYPE2", "DEC--TAN", "gnomonic projection, declination");
   h.set_string("CUNIT1", "deg");
@@ -240,16 +288,31 @@ void add_tan_pointing(FitsHeader& h, const FitsPointing& p) {
   h.set_double("CD2_1", p.cd2_1, "[deg/pixel]");
   h.set_double("CD2_2", p.cd2_2, "[deg/pixel]");
   h.set_string("RADESYS", p.radesys);
+  if (time_axis) {
+    h.set_string("CTYPE3", "TIME", "time of the plane");
+    h.set_string("CUNIT3", "s");
+    h.set_double("CRVAL3", 0.0, "[s] time of the first plane from MJDREF");
+    h.set_double("CRPIX3", 1.0, "the first plane");
+    h.set_double("CD3_3", p.time_step_s, "[s/plane] time step");
+    h.set_double("MJDREF", p.mjdref, "[d] time of the first plane (MJD)");
+    if (!p.dateref.empty()) h.set_string("DATEREF", p.dateref, "time of the first plane");
+  }
 }
 
 void write_fits_image(const std::string& path, const float* pixels, std::int64_t width, std::int64_t height,
                       const FitsHeader& header, const FitsWriteOptions& options) {
-  write_image(path, pixels, width, height, header, options);
+  write_image(path, std::vector<const float*>{pixels}, width, height, header, options, false);
 }
 
 void write_fits_image(const std::string& path, const double* pixels, std::int64_t width, std::int64_t height,
                       const FitsHeader& header, const FitsWriteOptions& options) {
-  write_image(path, pixels, width, height, header, options);
+  write_image(path, std::vector<const double*>{pixels}, width, height, header, options, false);
+}
+
+void write_fits_cube(const std::string& path, const std::vector<const double*>& planes, std::int64_t width,
+                     std::int64_t height, const FitsHeader& header, const FitsTable& table,
+                     const FitsWriteOptions& options) {
+  write_image(path, planes, width, height, header, options, true, table);
 }
 
 }  // namespace eoir::imageio

@@ -76,6 +76,11 @@ struct FitsPointing {
   // along RA, 2 = north) per step along pixel axis j (1 = x, 2 = y up).
   double cd1_1 = 0.0, cd1_2 = 0.0, cd2_1 = 0.0, cd2_2 = 0.0;
   std::string radesys = "ICRS";
+  // Data cubes: a third, linear time axis (CTYPE3 'TIME', seconds from the
+  // first plane, MJDREF = its date) when time_step_s > 0.
+  double time_step_s = 0.0;
+  double mjdref = 0.0;
+  std::string dateref;  // the same time as ISO (DATEREF), if given
 };
 void add_tan_pointing(FitsHeader& header, const FitsPointing& pointing);
 
@@ -91,5 +96,24 @@ void write_fits_image(const std::string& path, const float* pixels, std::int64_t
                       const FitsHeader& header, const FitsWriteOptions& options = {});
 void write_fits_image(const std::string& path, const double* pixels, std::int64_t width, std::int64_t height,
                       const FitsHeader& header, const FitsWriteOptions& options = {});
+
+// A data cube: `planes` images of width x height (each row 0 = top, flipped
+// as above), NAXIS3 = planes.size(), followed by an optional binary table
+// extension (one row per plane, e.g. the time of each plane). Columns hold
+// numbers (TFORM 1D) or strings (TFORM nA). Written atomically; CHECKSUM and
+// DATASUM on both HDUs. Throws ImageIoError.
+struct FitsTableColumn {
+  std::string name;
+  std::string unit;
+  std::vector<double> numbers;       // one per row, or
+  std::vector<std::string> strings;  // one per row
+};
+struct FitsTable {
+  std::string extname;  // EXTNAME of the table HDU; empty: no table
+  std::vector<FitsTableColumn> columns;
+};
+void write_fits_cube(const std::string& path, const std::vector<const double*>& planes, std::int64_t width,
+                     std::int64_t height, const FitsHeader& header, const FitsTable& table = {},
+                     const FitsWriteOptions& options = {});
 
 }  // namespace eoir::imageio

@@ -2,6 +2,7 @@
 #include <fitsio.h>
 #include <gtest/gtest.h>
 #include <png.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -242,6 +243,43 @@ TEST(FitsWriter, AtomicReplaceAndErrors) {
   const std::string odd = dir.file("frame[1](x).fits");
   write_fits_image(odd, a.data(), 3, 2, FitsHeader{});
   EXPECT_TRUE(fs::exists(odd));
+}
+
+// Saves keep the file's mode, write through symbolic links and remove
+// temporaries of writers that died (issue 11 item 8, as the state files).
+TEST(AtomicWrite, ModeLinksAndStaleTemporaries) {
+  TempDir dir;
+  const std::string path = dir.file("frame.fits");
+  std::vector<double> a(6, 1.0);
+  write_fits_image(path, a.data(), 3, 2, FitsHeader{});
+  fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write);
+  write_fits_image(path, a.data(), 3, 2, FitsHeader{});
+  EXPECT_EQ(fs::status(path).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+  // through a symbolic link: the target is replaced, the link stays
+  fs::create_directory(dir.file("real"));
+  write_fits_image(dir.file("real/x.fits"), a.data(), 3, 2, FitsHeader{});
+  fs::create_symlink("real/x.fits", dir.file("link.fits"));
+  std::vector<double> big(60, 2.0);
+  write_fits_image(dir.file("link.fits"), big.data(), 6, 10, FitsHeader{});
+  EXPECT_TRUE(fs::is_symlink(dir.file("link.fits")));
+  {
+    FitsReader rd(dir.file("real/x.fits"));
+    long naxes[2] = {0, 0};
+    fits_get_img_size(rd.f, 2, naxes, &rd.st);
+    EXPECT_EQ(naxes[0], 6);  // the new image went to the link's target
+  }
+  // a temporary of a process that no longer exists is removed; others stay
+  pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ::waitpid(dead, nullptr, 0);
+  const std::string stale = path + ".tmp." + std::to_string(dead) + ".0";
+  const std::string live = path + ".tmp." + std::to_string(::getppid()) + ".0";
+  const std::string other = path + ".tmp.notours";
+  for (const auto& f : {stale, live, other}) std::ofstream(f) << "partial";
+  write_fits_image(path, a.data(), 3, 2, FitsHeader{});
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(other));
 }
 
 TEST(FitsWriter, ByteReproducible) {

@@ -1,5 +1,5 @@
 /* plugin_loader.c — see plugin_loader.h. */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700 /* realpath, readlink */
 #include "plugin_loader.h"
 
 #include <dlfcn.h>
@@ -7,6 +7,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <limits.h>
+#include <unistd.h>
 
 #ifndef EOIR_DEFAULT_LIBRARY
 #define EOIR_DEFAULT_LIBRARY "libeoir.so.1"
@@ -27,11 +29,43 @@ static void set_message(char* message, size_t capacity, const char* format, ...)
   va_end(args);
 }
 
+/* The library beside the running program, EOIR_RELATIVE_LIBRARY from its
+ * directory (bin/../lib/libeoir.so.1 in an installed tree and in the build
+ * tree), or NULL if there is none. */
+static const char* library_beside_program(void) {
+#ifdef EOIR_RELATIVE_LIBRARY
+  static char buffer[PATH_MAX + EOIR_LOADER_PATH_MAX];
+  const char* rel = EOIR_RELATIVE_LIBRARY;
+  const char* name = strrchr(rel, '/');
+  char exe[EOIR_LOADER_PATH_MAX];
+  char* slash;
+  const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (n <= 0 || name == NULL) return NULL;
+  exe[n] = '\0';
+  slash = strrchr(exe, '/');
+  if (slash == NULL) return NULL;
+  /* <program dir>/<relative dir>, with ".." resolved (messages show a plain
+   * path), then the library's file name (the soname link, not resolved). */
+  if ((size_t)(slash - exe) + 1 + (size_t)(name - rel) >= sizeof exe) return NULL;
+  memcpy(slash + 1, rel, (size_t)(name - rel));
+  slash[1 + (name - rel)] = '\0';
+  if (realpath(exe, buffer) == NULL) return NULL;
+  if (strlen(buffer) + strlen(name) >= sizeof buffer) return NULL;
+  strcat(buffer, name);
+  return access(buffer, R_OK) == 0 ? buffer : NULL;
+#else
+  return NULL;
+#endif
+}
+
 const char* eoir_loader_resolve_path(const char* path) {
   const char* env;
+  const char* beside;
   if (path != NULL && path[0] != '\0') return path;
   env = getenv("EOIR_LIBRARY");
   if (env != NULL && env[0] != '\0') return env;
+  beside = library_beside_program();
+  if (beside != NULL) return beside;
   return EOIR_DEFAULT_LIBRARY;
 }
 

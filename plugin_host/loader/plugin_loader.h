@@ -9,7 +9,10 @@
  * Library path, first match wins:
  *   1. the `path` argument of eoir_loader_open (if not NULL and not ""),
  *   2. the environment variable EOIR_LIBRARY,
- *   3. the library of the build tree (compile definition EOIR_DEFAULT_LIBRARY).
+ *   3. the library beside the program: <directory of the executable>/
+ *      EOIR_RELATIVE_LIBRARY (../lib/libeoir.so.1 in an installed tree;
+ *      the build tree has the same layout, build/bin and build/lib),
+ *   4. the library of the build tree (compile definition EOIR_DEFAULT_LIBRARY).
  */
 #ifndef EOIR_PLUGIN_LOADER_H
 #define EOIR_PLUGIN_LOADER_H

@@ -229,7 +229,7 @@ def main():
         for i in range(2):
             for s in ("Cam", "Wide"):
                 for suffix in ("radiance.fits", "electrons.fits", "mean_electrons.fits", "scene.png", "sensor.png",
-                               "truth.json"):
+                               "truth.json", "truth.reg"):
                     expected.add(f"{s}_{i:04d}_{suffix}")
         present = set(os.listdir(out))
         check(present == expected, f"files written: extra {sorted(present - expected)}, "
@@ -243,15 +243,17 @@ def main():
             if fr["sensor"] == "Cam":
                 check((sw, sh) == (CAM["w"], CAM["h"]), f"{tag}: sensor size {sw}x{sh}")
             images = {}
-            for key, bunit, (w, h), kind in (("radiance", "W/(cm2 sr)", (cw, ch), "scene_radiance"),
-                                             ("electrons", "electrons", (sw, sh), "sensor_electrons"),
-                                             ("mean_electrons", "electrons", (sw, sh), "sensor_mean")):
+            for key, bunit, (w, h), kind in (("radiance", "W cm-2 sr-1", (cw, ch), "scene_radiance"),
+                                             ("electrons", "electron", (sw, sh), "sensor_electrons"),
+                                             ("mean_electrons", "electron", (sw, sh), "sensor_mean")):
                 cards, size, chk, data = fits(dump, os.path.join(out, fr["files"][key]), tmp)
                 images[key] = (cards, data)
                 check(chk == (1, 1), f"{tag} {key}: CHECKSUM/DATASUM verify ({chk})")
                 check(size[:2] == (w, h), f"{tag} {key}: NAXIS1/2 {size[:2]} != {(w, h)}")
                 check(cards.get("BUNIT") == bunit, f"{tag} {key}: BUNIT {cards.get('BUNIT')!r}")
-                check(cards.get("DATE-OBS") == fr["time"], f"{tag} {key}: DATE-OBS {cards.get('DATE-OBS')}")
+                # FITS dates have no 'Z' (the time scale is TIMESYS = 'UTC')
+                check(cards.get("DATE-OBS") + "Z" == fr["time"] and cards.get("TIMESYS") == "UTC",
+                      f"{tag} {key}: DATE-OBS {cards.get('DATE-OBS')}")
                 check(cards.get("SENSOR") == fr["sensor"] and cards.get("INSTRUME") == fr["sensor"],
                       f"{tag} {key}: SENSOR/INSTRUME")
                 check(cards.get("SCENARIO") == summary["scenario"], f"{tag} {key}: SCENARIO")
@@ -307,7 +309,7 @@ def main():
         check(re.search(r"frame 1 of 1 .*elapsed .*ETA", r.stderr) is not None, "progress line on stderr")
         check(sorted(os.listdir(out2)) == sorted(["summary.json"] + [
             f"Cam_0000_{s}" for s in ("radiance.fits", "electrons.fits", "mean_electrons.fits", "scene.png",
-                                      "sensor.png", "truth.json")]), f"--sensor Cam writes Cam only: {sorted(os.listdir(out2))}")
+                                      "sensor.png", "truth.json", "truth.reg")]), f"--sensor Cam writes Cam only: {sorted(os.listdir(out2))}")
 
         r = subprocess.run([eoir_exe, "run", scen, "--out", out2, "--sensor", "Nope"], capture_output=True,
                            text=True)

@@ -7,6 +7,12 @@
         engine.set("Sensor", "f_number", 3.5)
         print(engine.provider("EOIR Sensor Optics", "Ensquared Energy", "Sensor"))
 
+    with eoir.Scenario.load("scenarios/demo/default.json") as sc:   # the CLI's scenario code
+        sc.set_time(sc.times()[-1]); sc.engine.render("WideLWIR")
+        sc.write_fits("WideLWIR", "sensor_electrons", "frame.fits")  # astropy, with WCS
+
+eoir.sweep runs parameter grids serially or on Dask.
+
 The library is located through the environment variable EOIR_LIBRARY, then
 build/lib above this package, then ctypes.util.find_library("eoir").
 """
@@ -23,6 +29,7 @@ from .errors import (AbiMismatchError, AlreadyExistsError, ArgumentError,
 from .engine import (FRAMES, IMAGE_KINDS, KINDS, TIME_SCALES, TYPES, Engine, last_error,
                      provider_elements, provider_groups, status_name,
                      time_from_iso, time_to_iso, version, version_string)
+from .scenario import Scenario, tle_state
 from ._lib import (EOIR_MAX_MISSILE_STAGES as MAX_MISSILE_STAGES,
                    EOIR_MAX_MISSILES as MAX_MISSILES,
                    EOIR_MAX_NAME_LENGTH as MAX_NAME_LENGTH,
@@ -35,7 +42,7 @@ __version__ = "{}.{}.{}".format(version_number // 10000, version_number // 100 %
                                 version_number % 100)
 
 __all__ = [
-    "Engine", "version", "version_string", "status_name", "last_error",
+    "Engine", "Scenario", "tle_state", "version", "version_string", "status_name", "last_error",
     "provider_groups", "provider_elements", "time_from_iso", "time_to_iso",
     "KINDS", "FRAMES", "TIME_SCALES", "TYPES", "IMAGE_KINDS",
     "MAX_SATELLITES", "MAX_VEHICLES", "MAX_MISSILES", "MAX_MISSILE_STAGES",

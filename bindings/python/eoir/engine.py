@@ -255,6 +255,16 @@ class Engine:
         self._handle = handle
         self._destroy = lib.eoir_engine_destroy  # kept for __del__ at exit
 
+    @classmethod
+    def _adopt(cls, handle, owner) -> "Engine":
+        """An Engine over an engine someone else owns (eoir.Scenario's host
+        session): calls go to the same library; close() only lets go of it."""
+        self = cls.__new__(cls)
+        self._handle = _lib.eoir_engine(handle)
+        self._owner = owner
+        self._destroy = lambda h: None
+        return self
+
     # ---------------------------------------------------------- lifetime
     def close(self) -> None:
         """Destroy the engine; further calls raise ValueError. Idempotent."""

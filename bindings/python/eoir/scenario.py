@@ -1,0 +1,177 @@
+"""Scenario files in Python, through the eoir CLI's own code.
+
+    import eoir
+    with eoir.Scenario.load("scenarios/demo/default.json", seed=1) as sc:
+        for t in sc.times():                  # the times of `eoir run`
+            sc.set_time(t)                    # engine time + every object's state
+            sc.engine.render("WideLWIR")
+            sc.write_fits("WideLWIR", "sensor_electrons", f"frame_{t}.fits")
+            print(sc.truth("WideLWIR"))       # FITS pixels and RA/Dec, as _truth.json
+
+The scenario is loaded, and objects are moved and pointed, by libeoir_host
+(plugin_host/hostlib): the same code as `eoir validate/run/report`, not a
+second copy in Python. `sc.engine` is an eoir.Engine over the session's
+engine (every Engine call works on it; the scenario closes it).
+"""
+
+from __future__ import annotations
+
+import ctypes
+import json
+import os
+from ctypes import byref, c_double, c_void_p
+from typing import Any, Dict, List, Optional
+
+import numpy as np
+
+from . import _host, _lib
+from ._lib import encode
+from .engine import IMAGE_KINDS, Engine, _lookup, _to_c_time
+
+
+def _iso(time) -> str:
+    """An ISO-8601 UTC string for any time the Engine accepts."""
+    if isinstance(time, str):
+        return time
+    t = _to_c_time(time)
+    buf = ctypes.create_string_buffer(64)
+    _lib.check(_lib.lib.eoir_time_to_iso(byref(t), buf, 64))
+    return buf.value.decode()
+
+
+class Scenario:
+    """A scenario file loaded into an engine (see the module's docstring)."""
+
+    def __init__(self):
+        raise TypeError("use eoir.Scenario.load(path)")
+
+    @classmethod
+    def load(cls, path, seed: int = 1, threads: int = 0) -> "Scenario":
+        """Reads and checks the scenario file (as `eoir validate` does),
+        creates an engine with `seed` and `threads`, registers every body,
+        object, sensor and property, and sets the scenario's start time.
+        Raises the eoir error of the problem (CorruptFileError naming the file
+        and JSON path for a bad scenario)."""
+        h = _host.host()
+        if threads < 0:
+            raise ValueError("threads must be >= 0 (0 = all cores)")
+        session = c_void_p()
+        _host.check(h.eoir_host_session_open(encode(_lib.library_path), encode(os.fspath(path)),
+                                             int(seed) & 0xFFFFFFFFFFFFFFFF, int(threads), byref(session)))
+        self = cls.__new__(cls)
+        self._session = session
+        self._close = h.eoir_host_session_close
+        self.path = os.fspath(path)
+        self.seed, self.threads = int(seed), int(threads)
+        info = json.loads(_host.json_out(h.eoir_host_session_describe, session))
+        self.name: str = info["name"]
+        self.description: str = info["description"]
+        self.start: str = info["start"]
+        self.stop: str = info["stop"]
+        self.step_s: float = info["step_s"]
+        self.central_bodies: List[str] = info["central_bodies"]
+        self.objects: List[Dict[str, str]] = info["objects"]
+        self.sensors: List[Dict[str, str]] = info["sensors"]
+        self.engine = Engine._adopt(h.eoir_host_session_engine(session), self)
+        return self
+
+    # ---------------------------------------------------------- lifetime
+    def close(self) -> None:
+        session, self._session = getattr(self, "_session", None), None
+        if session is not None:
+            self.engine.close()
+            self._close(session)
+
+    def __enter__(self) -> "Scenario":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:
+            pass
+
+    @property
+    def session(self):
+        if self._session is None:
+            raise ValueError("the scenario is closed")
+        return self._session
+
+    def __repr__(self) -> str:
+        return f"<eoir.Scenario {self.name!r}: {len(self.objects)} objects, {len(self.sensors)} sensors>"
+
+    # -------------------------------------------------------------- time
+    def times(self, start=None, stop=None, step_s: Optional[float] = None) -> List[str]:
+        """The times of `eoir run`: start (default: the scenario's) to stop
+        (default: the scenario's), every step_s (default: the scenario's),
+        stop included, as ISO-8601 UTC strings."""
+        h = _host.host()
+        a = encode(_iso(start)) if start is not None else None
+        b = encode(_iso(stop)) if stop is not None else None
+        return json.loads(_host.json_out(h.eoir_host_session_times, self.session, a, b,
+                                         float(step_s) if step_s is not None else 0.0))
+
+    def set_time(self, time) -> None:
+        """Sets the engine time and pushes every object's state and attitude
+        (the scenario's motion and pointing models)."""
+        _host.check(_host.host().eoir_host_session_set_time(self.session, encode(_iso(time))))
+
+    # ------------------------------------------------- truth and FITS files
+    def truth(self, sensor: str) -> List[Dict[str, Any]]:
+        """The per-frame truth `eoir run` writes for the last frame of
+        sensor: FITS pixels (x_fits, y_fits), ICRS ra_deg/dec_deg, range, SNR."""
+        return json.loads(_host.json_out(_host.host().eoir_host_session_truth, self.session, encode(sensor)))
+
+    def fits_header(self, sensor: str, kind="sensor_electrons", frame: int = 0):
+        """The astropy.io.fits.Header `eoir run` writes for the last frame of
+        sensor: DATE-OBS, BUNIT, the sensor and its TAN WCS (CD matrix)."""
+        from astropy.io import fits
+        code = _lookup(IMAGE_KINDS, kind, "image kind")
+        cards = json.loads(_host.json_out(_host.host().eoir_host_session_fits_header, self.session,
+                                          encode(sensor), code, int(frame)))
+        header = fits.Header()
+        for key, value, comment in cards:
+            if key in ("COMMENT", "HISTORY"):
+                header.add_comment(value) if key == "COMMENT" else header.add_history(value)
+            else:
+                header.append(fits.Card(key, value, comment))
+        return header
+
+    def fits_hdu(self, sensor: str, kind="sensor_electrons", frame: int = 0):
+        """The last frame of sensor as an astropy PrimaryHDU: float32 pixels in
+        FITS order (row 1 at the bottom, as ds9 shows the PNG) with the
+        header of fits_header()."""
+        from astropy.io import fits
+        image = self.engine.image(sensor, kind)
+        return fits.PrimaryHDU(np.flipud(image).astype(np.float32), header=self.fits_header(sensor, kind, frame))
+
+    def write_fits(self, sensor: str, kind, path, frame: int = 0, overwrite: bool = True) -> None:
+        """Writes fits_hdu() to path with astropy (checksums included),
+        through a temporary file renamed into place."""
+        hdu = self.fits_hdu(sensor, kind, frame)
+        path = os.fspath(path)
+        tmp = f"{path}.tmp.{os.getpid()}"
+        try:
+            hdu.writeto(tmp, overwrite=True, checksum=True)
+            if not overwrite and os.path.exists(path):
+                raise FileExistsError(path)
+            os.replace(tmp, path)
+        finally:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+
+
+def tle_state(line1: str, line2: str, time) -> Dict[str, np.ndarray]:
+    """SGP4 from two-line elements at a UTC time, by the host's propagator
+    (plugin_host/cli/sgp4.cpp, the "tle" motion of scenarios): TEME position
+    (km) and velocity (km/s) as SGP4 gives them, and J2000 position (m) and
+    velocity (m/s) as scenarios push them. Raises OutOfRangeError for a bad
+    TLE (naming the line and field) or an SGP4 error (decayed...)."""
+    arrays = [(c_double * 3)() for _ in range(4)]
+    _host.check(_host.host().eoir_host_tle_state(encode(line1), encode(line2), encode(_iso(time)),
+                                                 *[byref(a) for a in arrays]))
+    names = ("teme_position_km", "teme_velocity_km_s", "position_m", "velocity_m_s")
+    return {n: np.array(list(a)) for n, a in zip(names, arrays)}

@@ -170,14 +170,48 @@ def test_igbp18_tundra_chain_and_row_sum(synthetic):
 
 
 def test_missing_component_is_reported_not_invented(tmp_path):
+    """A row that lacks its only spectrum of a material is not built (wetlands
+    are never made of grass and water alone); a USGS component without its
+    JHU counterpart does not stand for the row."""
     base, out = tmp_path / "b", tmp_path / "o"
     base.mkdir()
-    _write_base(base, "JHU:Conifer", [0.3, 14.0], [0.1, 0.01])
+    _write_base(base, "USGS:Blue Spruce", [0.3, 2.5], [0.1, 0.05])
+    _write_base(base, "JHU:Green Grass", [0.3, 14.0], [0.1, 0.01])
+    _write_base(base, "USGS:Sea Water", [0.3, 2.5], [0.05, 0.01])
     subprocess.run([sys.executable, os.path.join(HERE, "build_land_cover.py"), "--base-dir", str(base),
                     "--output-dir", str(out)], check=True, capture_output=True)
     assert not (out / "igbp_01_evergreen_needleleaf_forest.json").exists()
+    assert not (out / "igbp_11_permanent_wetlands.json").exists()
     status = (out / "land_cover_status.txt").read_text()
-    assert "missing: USGS:Blue Spruce, USGS:Douglas Fir" in status
+    assert "missing: JHU:Conifer, USGS:Douglas Fir" in status
+    wet = [line for line in status.splitlines() if "igbp_11_permanent_wetlands" in line][0]
+    assert wet.startswith("NOT BUILT") and "USGS:Wet Lands" in wet.split("missing:")[1]
+
+
+def test_same_material_renormalisation(tmp_path):
+    """JHU:Conifer alone builds IGBP 1 (Blue Spruce and Douglas Fir lacking,
+    Appendix A re-normalisation), and the file says so."""
+    base, out = tmp_path / "b", tmp_path / "o"
+    base.mkdir()
+    w = np.linspace(0.3, 14.0, 300)
+    r = 0.05 + 0.3 * np.exp(-((w - 1.0) / 0.4) ** 2)
+    _write_base(base, "JHU:Conifer", w, r)
+    subprocess.run([sys.executable, os.path.join(HERE, "build_land_cover.py"), "--base-dir", str(base),
+                    "--output-dir", str(out)], check=True, capture_output=True)
+    got = _read(out, "igbp_01_evergreen_needleleaf_forest")
+    expect = _renorm([(0.4, em.resample(w, r, GRID))])
+    assert np.allclose(got, expect, atol=1e-5)
+    doc = json.load(open(out / "igbp_01_evergreen_needleleaf_forest.json"))
+    assert "USGS:Blue Spruce (not found" in doc["description"]
+    assert "renormalised without: USGS:Blue Spruce" in (out / "land_cover_status.txt").read_text()
+
+
+def test_camouflage_is_its_background(synthetic):
+    out, _ = synthetic
+    for name, key in (("mixed_forest_camouflage", "igbp_05_mixed_forest"), ("water_camouflage", "igbp_17_water_bodies"),
+                      ("soil_camouflage", "dirt")):
+        assert np.allclose(_read(out, name), _read(out, key), atol=1e-9), name
+        assert json.load(open(os.path.join(out, name + ".json")))["brdf"]["k0"] >= 0.9
 
 
 # ---- physical sanity values ----
@@ -226,14 +260,62 @@ def test_sea_water_visible_dark():
 
 
 def test_lunar_regolith_albedo():
-    # Moon normal albedo ~0.12 at 0.55 um (e.g. Lane & Irvine 1973); 0.09-0.15 accepted
+    # Moon mean visual geometric albedo 0.12 (NSSDC Moon fact sheet; Lane & Irvine 1973 give
+    # normal albedos ~0.1-0.15 over 0.55-0.75 um); red-sloped regolith (Pieters 1999, 62231)
     assert 0.09 <= at("lunar_regolith", 0.54, 0.56).mean() <= 0.15
+    assert 0.10 <= at("lunar_regolith", 0.55, 0.75).mean() <= 0.15
+    assert at("lunar_regolith", 0.74, 0.76).mean() > at("lunar_regolith", 0.44, 0.46).mean()
+    # thermal infrared: emissivity ~0.95 (Vasavada et al. 2012)
+    assert abs(at("lunar_regolith", 8.0, 14.0).mean() - 0.05) < 0.01
+
+
+def test_mars_surface_bright_region():
+    # Mars bright regions: R ~0.25-0.35 near 0.7 um, ~0.05-0.1 at 0.45 um, a steep Fe3+ red slope
+    # (Mustard & Bell 1994, GRL 21, 353; the analogue JSC Mars-1, Allen et al. 1998)
+    r45, r70 = at("mars_surface", 0.44, 0.46).mean(), at("mars_surface", 0.69, 0.71).mean()
+    assert 0.2 <= r70 <= 0.35
+    assert 0.02 <= r45 <= 0.12
+    assert r70 / r45 > 2.5
+
+
+def test_grasslands_red_edge_and_renormalised_ir():
+    # grass: chlorophyll trough at 0.67 um, NIR plateau; beyond 3 um only the JHU grass remains
+    w, r, d = load("igbp_10_grasslands")
+    assert np.interp(0.67, w, r) < 0.2 < np.interp(0.85, w, r)
+    assert "USGS:Lawn Grass (not found" in d["description"]
+    assert at("igbp_10_grasslands", 8.0, 14.0).max() < 0.1
+
+
+def test_base_files_name_their_source():
+    for path in glob.glob(os.path.join(HERE, "base", "*.txt")):
+        meta, w, r = em.read_base(path)
+        assert meta.get("library") and meta.get("library_file") and meta.get("copied_from"), path
+        assert " commit " in meta["copied_from"] and meta.get("coverage"), path
+
+
+def test_igbp05_mixed_forest_from_the_real_base_spectra():
+    """Recomputed here from the committed base files: IGBP 1 = JHU conifer (USGS
+    conifers lacking), IGBP 3 = JHU deciduous (USGS oak, maple lacking),
+    IGBP 5 = 0.5 IGBP 1 + 0.5 IGBP 3, extended by the last value."""
+    spec = {}
+    for f in ("jhu_conifer.txt", "jhu_deciduous.txt"):
+        _, w, r = em.read_base(os.path.join(HERE, "base", f))
+        spec[f] = em.resample(w, r, GRID)
+    expect = _renorm([(0.5, spec["jhu_conifer.txt"]), (0.5, spec["jhu_deciduous.txt"])])
+    w, r, _ = load("igbp_05_mixed_forest")
+    assert np.allclose(r, expect, atol=1e-5)
+
+
+def test_water_bodies_from_usgs_sea_water():
+    _, w, r = em.read_base(os.path.join(HERE, "base", "usgs_sea_water.txt"))
+    expect = _renorm([(0.8, em.resample(w, r, GRID))])
+    assert np.allclose(load("igbp_17_water_bodies")[1], expect, atol=1e-5)
 
 
 def test_base_spectra_read_back():
     for path in glob.glob(os.path.join(HERE, "base", "*.txt")):
         meta, w, r = em.read_base(path)
-        assert meta.get("appendix_a_name") and meta.get("copied_from"), path
+        assert (meta.get("appendix_a_name") or meta.get("eoir_material")) and meta.get("copied_from"), path
         assert np.all(np.diff(w) > 0) and 0 <= r.min() and r.max() <= 1
 
 

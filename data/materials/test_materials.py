@@ -366,10 +366,15 @@ def test_igbp05_mixed_forest_from_the_real_base_spectra():
     assert np.allclose(r, expect, atol=1e-5)
 
 
-def test_water_bodies_from_usgs_sea_water():
-    _, w, r = em.read_base(os.path.join(HERE, "base", "usgs_sea_water.txt"))
-    expect = _renorm([(0.8, em.resample(w, r, GRID))])
+def test_water_bodies_from_usgs_and_jhu_sea_water():
+    # IGBP 17 = 0.8 USGS sea water (0.2-3 um) + 0.2 JHU sea water (2.08-14 um), re-normalised where one lacks
+    expect = _renorm([(0.8, _base("usgs_sea_water.txt")), (0.2, _base("jhu_sea_water.txt"))])
     assert np.allclose(load("igbp_17_water_bodies")[1], expect, atol=1e-5)
+    # liquid water in the thermal infrared: reflectance ~1-4 % (emissivity 0.96-0.99; Salisbury & D'Aria 1992,
+    # Remote Sens. Environ. 42, 83), lowest near 11 um
+    tir = at("igbp_17_water_bodies", 8.0, 14.0)
+    assert 0.005 < tir.min() and tir.max() < 0.04
+    assert at("igbp_17_water_bodies", 10.5, 11.5).mean() < at("igbp_17_water_bodies", 13.5, 14.0).mean()
 
 
 def test_base_spectra_read_back():

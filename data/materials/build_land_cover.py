@@ -15,9 +15,21 @@ data/materials/base/, exactly by the Appendix A combinations:
    provided value is propagated out to 28 um (Appendix A).
 
 A type is written only when every component it names exists (a base file
-with that Appendix A name, or a type/block that was itself built). Types that
-cannot be built are listed with the missing components in
-land_cover_status.txt, which is always written.
+with that Appendix A name, or a type/block that was itself built), with one
+documented exception (MAY_LACK): a component of one library may be absent
+when the same row keeps a real spectrum of the same material from the other
+library (e.g. USGS:Blue Spruce absent, JHU:Conifer present); the row is then
+re-normalised over what it has, as Appendix A does for missing values, and
+the file and land_cover_status.txt say so. Types that cannot be built are
+listed with the missing components in land_cover_status.txt, which is
+always written.
+
+The same run writes the materials derived from these data (spec 4.3.4-4.3.5,
+4.1.4.1): the camouflage paints, whose SRF is that of the background they
+are meant to match (mixed forest = IGBP 5, soil = the Dirt block, water =
+IGBP 17), and the single-spectrum materials of base/ that carry an
+`eoir_material:` header instead of `appendix_a_name:` (mars_surface,
+lunar_regolith), extended as their header states.
 
     build_land_cover.py --base-dir data/materials/base --output-dir build/data/materials
 """
@@ -83,6 +95,34 @@ BRDF = {1: VEGETATION, 2: VEGETATION, 3: VEGETATION, 4: VEGETATION, 5: VEGETATIO
 
 BLOCK_BY_LABEL = {label: key for key, (label, _) in BLOCKS.items()}
 
+# Components that may be absent, and the component of the same row and the
+# same material (from the other library) that must then be present. Only
+# same-material pairs are listed: a row never loses its only spectrum of a
+# material (wetlands never become grass and water, barren never pure quartz).
+MAY_LACK = {
+    "USGS:Blue Spruce": ("JHU:Conifer", "conifer"),
+    "USGS:Douglas Fir": ("JHU:Conifer", "conifer"),
+    "USGS:Oak": ("JHU:Deciduous", "deciduous broadleaf"),
+    "USGS:Maple": ("JHU:Deciduous", "deciduous broadleaf"),
+    "USGS:Lawn Grass": ("JHU:Green Grass", "green grass"),
+    "JHU:Sea Water": ("USGS:Sea Water", "sea water"),
+    "USGS:Sea Water": ("JHU:Sea Water", "sea water"),
+    "JHU:Fine Snow": ("USGS:Snow 1a", "fine snow"),
+    "USGS:Snow 1a": ("JHU:Fine Snow", "fine snow"),
+    "JHU:Coarse Snow": ("USGS:Snow 3", "coarse snow"),
+    "USGS:Snow 3": ("JHU:Coarse Snow", "coarse snow"),
+}
+
+# Camouflage paints (spec 4.3.4-4.3.5): the SRF of the background each is
+# meant to match; a matte paint BRDF.
+PAINT = {"k0": 0.95, "k1": 0.5, "alpha": 2.0, "beta": 2.0,
+         "reason": "matte camouflage paint: near Lambertian (README: paints k0 0.9-0.95, alpha = beta = 2)"}
+CAMOUFLAGE = {
+    "mixed_forest_camouflage": (5, "Mixed Forest (IGBP 5)"),
+    "soil_camouflage": ("dirt", "the Appendix A Dirt block"),
+    "water_camouflage": (17, "Water Bodies (IGBP 17)"),
+}
+
 
 def file_name(key):
     if isinstance(key, int):
@@ -139,24 +179,63 @@ def combine(parts, grid):
     return out
 
 
+def base_source(meta, w, path):
+    src = f"{meta.get('library', '?')}; file {meta.get('library_file', '?')}"
+    if meta.get("copied_from"):
+        src += f"; copied from {meta['copied_from']}"
+    if meta.get("substitute"):
+        src += f"; substitute: {meta['substitute']}"
+    return src + f"; data/materials/base/{os.path.basename(path)}; measured {w[0]:g}-{w[-1]:g} um"
+
+
 def load_base(base_dir, grid):
     spectra, sources = {}, {}
     for path in sorted(glob.glob(os.path.join(base_dir, "*.txt"))):
         meta, w, r = em.read_base(path)
         name = meta.get("appendix_a_name")
+        if not name and meta.get("eoir_material"):
+            continue  # a single-spectrum material, see build_single()
         if not name:
-            raise SystemExit(f"{path}: no 'appendix_a_name:' header line")
+            raise SystemExit(f"{path}: no 'appendix_a_name:' or 'eoir_material:' header line")
         if name in spectra:
             raise SystemExit(f"{path}: second base spectrum for {name}")
         spectra[name] = em.resample(w, r, grid)
-        src = f"{name}: {meta.get('library', '?')}; file {meta.get('library_file', '?')}"
-        if meta.get("copied_from"):
-            src += f"; copied from {meta['copied_from']}"
-        if meta.get("substitute"):
-            src += f"; substitute: {meta['substitute']}"
-        src += f"; data/materials/base/{os.path.basename(path)}; measured {w[0]:g}-{w[-1]:g} um"
-        sources[name] = src
+        sources[name] = f"{name}: " + base_source(meta, w, path)
     return spectra, sources
+
+
+def build_single(path, grid):
+    """A base file with an 'eoir_material:' header is one material. Header keys:
+    scale_at_um / scale_to (optional): multiply so that the resampled SRF at
+    that wavelength equals the value; thermal_reflectance / thermal_from_um:
+    Appendix A's 'forced to some low value' -- beyond the last measured
+    wavelength the SRF goes linearly to thermal_reflectance at thermal_from_um
+    and stays there to 28 um; brdf_k0, brdf_k1, brdf_alpha, brdf_beta,
+    brdf_reason; description. Before the first measured wavelength the first
+    value is propagated."""
+    meta, w, r = em.read_base(path)
+    values = em.resample(w, r, grid)
+    notes = []
+    if meta.get("scale_at_um"):
+        at, to = float(meta["scale_at_um"]), float(meta["scale_to"])
+        k = to / float(np.interp(at, grid[~np.isnan(values)], values[~np.isnan(values)]))
+        values = values * k
+        notes.append(f"scaled by {k:.4f} so that SRF({at:g} um) = {to:g} ({meta.get('scale_reason', '')})")
+    ok = ~np.isnan(values)
+    last = np.flatnonzero(ok)[-1]
+    low, lam = float(meta["thermal_reflectance"]), float(meta["thermal_from_um"])
+    for i in range(last + 1, grid.size):
+        t = min(1.0, (grid[i] - grid[last]) / (lam - grid[last])) if lam > grid[last] else 1.0
+        values[i] = values[last] + t * (low - values[last])
+    values = em.extend(values)  # only the leading gap is left
+    ext = (f"first value propagated back to 0.28 um; from the last measured value at {grid[last]:g} um "
+           f"linearly to {low:g} at {lam:g} um and constant to 28 um (Appendix A: 'forced to some low value'; "
+           f"{meta.get('thermal_reason', '')})")
+    brdf = {"k0": float(meta["brdf_k0"]), "k1": float(meta["brdf_k1"]), "alpha": float(meta["brdf_alpha"]),
+            "beta": float(meta["brdf_beta"]), "reason": meta["brdf_reason"]}
+    srcs = [base_source(meta, w, path)] + [s for s in (meta.get("source_2"), meta.get("source_3")) if s]
+    desc = meta.get("description", "") + ("" if not notes else " " + "; ".join(notes) + ".")
+    return em.material_doc(meta["eoir_material"], desc, srcs, brdf, grid, values, extension=ext)
 
 
 def main():
@@ -173,12 +252,16 @@ def main():
     for key in build_order():
         rows = recipe(key)
         total = sum(f for f, _ in rows)
-        missing, parts, srcs = [], [], []
+        missing, parts, srcs, lacking = [], [], [], []
         for f, comp in rows:
             ck = component_key(comp)
             if isinstance(ck, tuple):
                 if comp not in base:
-                    missing.append(comp)
+                    partner = MAY_LACK.get(comp)
+                    if partner and partner[0] in base and any(c == partner[0] for _, c in rows):
+                        lacking.append(f"{comp} (not found; the row keeps {partner[0]}, {partner[1]})")
+                    else:
+                        missing.append(comp)
                     continue
                 parts.append((f / total, base[comp]))
                 srcs.append(base_sources[comp])
@@ -197,7 +280,11 @@ def main():
         built[key] = (values, srcs)
         extended = em.extend(values)
         norm = "" if abs(total - 1) < 1e-9 else f" The printed fractions sum to {total:g}; they were divided by {total:g}."
-        desc = (f"Appendix A land cover: {label} = {formula}.{norm} Built by data/materials/build_land_cover.py.")
+        lack = ""
+        if lacking:
+            lack = (" Components lacking, the others re-normalised at every wavelength (Appendix A): "
+                    + "; ".join(lacking) + ".")
+        desc = (f"Appendix A land cover: {label} = {formula}.{norm}{lack} Built by data/materials/build_land_cover.py.")
         doc = em.material_doc(
             file_name(key), desc, ["spec Appendix A (STK EOIR Model Description and Validation)"] + srcs,
             BRDF[key], grid, extended,
@@ -205,7 +292,28 @@ def main():
                       "provided value is propagated (to 0.28 um and out to 28 um)",
             composition=[{"component": c, "fraction": round(f / total, 6)} for f, c in rows])
         em.write_material(doc, args.output_dir)
-        status.append(f"built      {file_name(key)}  ({label} = {formula})")
+        status.append(f"built      {file_name(key)}  ({label} = {formula})"
+                      + (f"; renormalised without: {'; '.join(lacking)}" if lacking else ""))
+
+    for name, (key, label) in CAMOUFLAGE.items():
+        if key not in built:
+            status.append(f"NOT BUILT  {name}  (SRF of {label}); missing: {file_name(key)}")
+            continue
+        doc = em.material_doc(
+            name, f"Camouflage paint meant to match {label} (spec 4.3.4-4.3.5): its SRF is that of "
+                  f"{file_name(key)} as built here (no measured camouflage-paint spectrum was found). "
+                  "Built by data/materials/build_land_cover.py.",
+            ["spec 4.3.4-4.3.5 (camouflage materials), Appendix A"] + built[key][1], PAINT, grid,
+            em.extend(built[key][0]), extension=f"as {file_name(key)}")
+        em.write_material(doc, args.output_dir)
+        status.append(f"built      {name}  (SRF of {label})")
+
+    for path in sorted(glob.glob(os.path.join(args.base_dir, "*.txt"))):
+        meta, _, _ = em.read_base(path)
+        if meta.get("eoir_material") and not meta.get("appendix_a_name"):
+            doc = build_single(path, grid)
+            em.write_material(doc, args.output_dir)
+            status.append(f"built      {doc['name']}  (single spectrum, base/{os.path.basename(path)})")
 
     os.makedirs(args.output_dir, exist_ok=True)
     with open(os.path.join(args.output_dir, "land_cover_status.txt"), "w", encoding="utf-8") as f:
@@ -213,7 +321,7 @@ def main():
         f.write("# base spectra available: " + ", ".join(sorted(base)) + "\n")
         f.write("\n".join(status) + "\n")
     nb = sum(1 for s in status if s.startswith("built"))
-    print(f"build_land_cover: {nb} of {len(status)} land-cover materials built "
+    print(f"build_land_cover: {nb} of {len(status)} materials built "
           f"({len(base)} base spectra); see land_cover_status.txt")
     return 0
 

@@ -396,3 +396,11 @@ def test_solar_e490_total():
     assert np.all(np.diff(e[:, 0]) > 0)
     total = em._trapz(e[:, 1], e[:, 0]) * 1e4  # W/m^2
     assert abs(total / 1366.1 - 1) < 0.005
+
+
+def test_object_schema_lists_every_material():
+    """schemas/object_properties.schema.json enumerates exactly the data folder's materials (and gray_body)."""
+    schema = json.load(open(os.path.join(REPO, "schemas", "object_properties.schema.json")))
+    listed = set(schema["properties"]["material"]["enum"])
+    built = {os.path.basename(f)[:-5] for f in glob.glob(os.path.join(DATA, "materials", "*.json"))}
+    assert listed == built | {"gray_body"}, (sorted(listed - built), sorted(built - listed))

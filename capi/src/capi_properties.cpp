@@ -1,6 +1,9 @@
 // Typed property access for objects and sensors.
 #include <cstddef>
 #include <cstring>
+#include <mutex>
+#include <string>
+#include <unordered_map>
 
 #include "capi_internal.hpp"
 #include "universe/object_properties.hpp"
@@ -12,6 +15,18 @@ using eoir::capi::str;
 using eoir::capi::with_engine;
 
 namespace {
+// The closed set of a string property as "a,b,c", kept for the life of the
+// library (the property tables are static).
+const char* choices_text(const PropertySpec<universe::Object>& spec) {
+  static std::mutex mutex;
+  static std::unordered_map<const void*, std::string> texts;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto [it, inserted] = texts.try_emplace(&spec);
+  if (inserted)
+    for (const auto& c : spec.choices) it->second += (it->second.empty() ? "" : ",") + c;
+  return it->second.c_str();
+}
+
 eoir_status set(eoir_engine engine, const char* object, const char* property, const Value& value) {
   return with_engine(engine, [&](Engine& e) { e.set_property(str(object, "object"), str(property, "property"), value); });
 }
@@ -122,8 +137,14 @@ EOIR_API eoir_status eoir_property_info_at(eoir_engine engine, const char* objec
     info_out->type = static_cast<int32_t>(s.type);
     info_out->unit = s.unit;
     info_out->description = s.description;
-    if (info_out->struct_size >= offsetof(eoir_property_info, flags) + sizeof info_out->flags)
+    const auto covers = [&](size_t offset, size_t size) { return info_out->struct_size >= offset + size; };
+    if (covers(offsetof(eoir_property_info, flags), sizeof info_out->flags))
       info_out->flags = s.fidelity ? EOIR_PROPERTY_FIDELITY : 0;
+    if (covers(offsetof(eoir_property_info, range_open), sizeof info_out->range_open))
+      info_out->range_open = (s.range.min_open ? 1u : 0u) | (s.range.max_open ? 2u : 0u);
+    if (covers(offsetof(eoir_property_info, minimum), sizeof info_out->minimum)) info_out->minimum = s.range.min;
+    if (covers(offsetof(eoir_property_info, maximum), sizeof info_out->maximum)) info_out->maximum = s.range.max;
+    if (covers(offsetof(eoir_property_info, choices), sizeof info_out->choices)) info_out->choices = choices_text(s);
   });
 }
 }

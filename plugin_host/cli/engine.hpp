@@ -3,6 +3,9 @@
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "plugin_loader.h"
 
@@ -27,6 +30,18 @@ struct EngineConfig {
   uint32_t threads = 0;
 };
 
+// One entry of an object's property table (eoir_property_info), in the
+// engine's order. has_range is false where the library predates C ABI 1.3.
+struct PropertyInfo {
+  std::string name, unit, description;
+  int32_t type = 0;
+  bool fidelity = false;
+  bool has_range = false;
+  double minimum = 0, maximum = 0;
+  bool minimum_open = false, maximum_open = false;
+  std::vector<std::string> choices;
+};
+
 class Engine {
  public:
   // Throws std::runtime_error with the loader's or the engine's message.
@@ -41,6 +56,10 @@ class Engine {
   const char* library_path() const { return plugin_.path; }
   // Throws EngineError("where: last_error (STATUS)") if status is an error.
   void check(eoir_status status, const std::string& where) const;
+  // The property table of an existing object or sensor.
+  std::vector<PropertyInfo> properties(const std::string& object) const;
+  // The current value of a property as JSON (null for a non-finite number).
+  nlohmann::ordered_json value(const std::string& object, const std::string& name, int32_t type) const;
 
  private:
   eoir_loader_plugin plugin_{};

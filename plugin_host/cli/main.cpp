@@ -769,50 +769,25 @@ const char* type_text(int32_t t) {
   }
 }
 
-// The current value of a property as JSON.
-nlohmann::ordered_json property_value(const Engine& engine, const std::string& object, const std::string& name,
-                                      int32_t type) {
-  const eoir_api_v1& api = engine.api();
-  const eoir_engine e = engine.handle();
-  const std::string where = object + "." + name;
-  switch (type) {
-    case EOIR_TYPE_NUMBER: {
-      double v = 0;
-      engine.check(api.get_number(e, object.c_str(), name.c_str(), &v), where);
-      return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-    }
-    case EOIR_TYPE_INTEGER: {
-      int64_t v = 0;
-      engine.check(api.get_integer(e, object.c_str(), name.c_str(), &v), where);
-      return v;
-    }
-    case EOIR_TYPE_BOOL: {
-      int32_t v = 0;
-      engine.check(api.get_bool(e, object.c_str(), name.c_str(), &v), where);
-      return v != 0;
-    }
-    case EOIR_TYPE_STRING: {
-      std::vector<char> buf(256);
-      for (;;) {
-        const eoir_status st = api.get_string(e, object.c_str(), name.c_str(), buf.data(), buf.size());
-        if (st == EOIR_ERR_BUFFER_TOO_SMALL && buf.size() < (std::size_t{1} << 26)) {
-          buf.resize(buf.size() * 4);
-          continue;
-        }
-        engine.check(st, where);
-        return std::string(buf.data());
-      }
-    }
-    case EOIR_TYPE_ARRAY: {
-      std::size_t n = 0;
-      engine.check(api.get_array(e, object.c_str(), name.c_str(), nullptr, 0, &n), where);
-      std::vector<double> v(n);
-      engine.check(api.get_array(e, object.c_str(), name.c_str(), v.data(), v.size(), &n), where);
-      return v;
-    }
-    default:
-      return nullptr;
+// "[0, 1]", "(0, 180)", ">= 1", "sphere|box|..."; "" if unconstrained.
+std::string range_text(const PropertyInfo& p) {
+  if (!p.choices.empty()) {
+    std::string t;
+    for (const auto& c : p.choices) t += (t.empty() ? "" : "|") + c;
+    return t;
   }
+  const auto num = [](double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", x);
+    return std::string(b);
+  };
+  const bool lo = std::isfinite(p.minimum), hi = std::isfinite(p.maximum);
+  if (lo && hi)
+    return std::string(p.minimum_open ? "(" : "[") + num(p.minimum) + ", " + num(p.maximum) +
+           (p.maximum_open ? ")" : "]");
+  if (lo) return std::string(p.minimum_open ? "> " : ">= ") + num(p.minimum);
+  if (hi) return std::string(p.maximum_open ? "< " : "<= ") + num(p.maximum);
+  return "";
 }
 
 int cmd_properties(const std::vector<std::string>& args, const Global& g) {
@@ -857,19 +832,17 @@ int cmd_properties(const std::vector<std::string>& args, const Global& g) {
     object = "Object";
   }
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (std::size_t i = 0;; ++i) {
-    eoir_property_info info{};
-    info.struct_size = sizeof info;
-    const eoir_status st = api.property_info_at(e, object.c_str(), i, &info);
-    if (st == EOIR_ERR_OUT_OF_RANGE) break;
-    engine.check(st, "property " + std::to_string(i));
+  bool ranges_listed = true;
+  for (const PropertyInfo& info : engine.properties(object)) {
     nlohmann::ordered_json p;
-    p["name"] = info.name ? info.name : "";
+    p["name"] = info.name;
     p["type"] = type_text(info.type);
-    p["unit"] = info.unit ? info.unit : "";
-    p["default"] = property_value(engine, object, p["name"].get<std::string>(), info.type);
-    p["range"] = nullptr;  // not in C ABI 1.2: the engine checks ranges when a value is set
-    p["description"] = info.description ? info.description : "";
+    p["unit"] = info.unit;
+    p["default"] = engine.value(object, info.name, info.type);
+    ranges_listed = ranges_listed && info.has_range;
+    p["range"] = info.has_range ? nlohmann::ordered_json(range_text(info)) : nlohmann::ordered_json(nullptr);
+    p["fidelity"] = info.fidelity;
+    p["description"] = info.description;
     list.push_back(std::move(p));
   }
   if (format == "json") {
@@ -880,8 +853,10 @@ int cmd_properties(const std::vector<std::string>& args, const Global& g) {
     return 0;
   }
   std::cout << "properties of a " << kind << (kind == "central_body" ? " (the Earth's defaults)" : "")
-            << " (range: checked by the engine when set; not listed by C ABI 1.2)\n\n";
-  std::size_t wn = 4, wt = 4, wu = 4, wd = 7;
+            << (ranges_listed ? " (F: a fidelity knob trading speed for accuracy)"
+                              : " (range: checked by the engine when set; not listed by C ABI 1.2)")
+            << "\n\n";
+  std::size_t wn = 4, wt = 4, wu = 4, wd = 7, wr = 5;
   const auto default_text = [](const nlohmann::ordered_json& v) {
     std::string t = v.is_string() ? v.get<std::string>() : v.dump();
     if (t.size() > 40) t = t.substr(0, 37) + "...";
@@ -892,14 +867,20 @@ int cmd_properties(const std::vector<std::string>& args, const Global& g) {
     wt = std::max(wt, p["type"].get<std::string>().size());
     wu = std::max(wu, p["unit"].get<std::string>().size());
     wd = std::max(wd, default_text(p["default"]).size());
+    if (p["range"].is_string()) wr = std::max(wr, p["range"].get<std::string>().size());
   }
+  const auto range_cell = [](const nlohmann::ordered_json& p) {
+    return p["range"].is_string() && !p["range"].get<std::string>().empty() ? p["range"].get<std::string>()
+                                                                             : std::string("-");
+  };
   const auto pad = [](std::string s, std::size_t w) { return s + std::string(w > s.size() ? w - s.size() : 0, ' '); };
   std::cout << pad("name", wn) << "  " << pad("type", wt) << "  " << pad("unit", wu) << "  " << pad("default", wd)
-            << "  description\n";
+            << "  " << pad("range", wr) << "  F  description\n";
   for (const auto& p : list)
     std::cout << pad(p["name"].get<std::string>(), wn) << "  " << pad(p["type"].get<std::string>(), wt) << "  "
               << pad(p["unit"].get<std::string>().empty() ? "-" : p["unit"].get<std::string>(), wu) << "  "
-              << pad(default_text(p["default"]), wd) << "  " << p["description"].get<std::string>() << "\n";
+              << pad(default_text(p["default"]), wd) << "  " << pad(range_cell(p), wr) << "  "
+              << (p["fidelity"].get<bool>() ? "F" : " ") << "  " << p["description"].get<std::string>() << "\n";
   return 0;
 }
 

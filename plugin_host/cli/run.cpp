@@ -106,6 +106,14 @@ class RunContext {
     return v;
   }
 
+  // The sensor's fidelity knobs (README "Fidelity"), in the engine's order.
+  nlohmann::ordered_json fidelity(const std::string& sensor) const {
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    for (const PropertyInfo& p : engine_.properties(sensor))
+      if (p.fidelity) out[p.name] = engine_.value(sensor, p.name, p.type);
+    return out;
+  }
+
   eoir_image_info info(const std::string& sensor, int32_t kind, const std::string& where) const {
     eoir_image_info in{};
     in.struct_size = sizeof in;
@@ -201,10 +209,13 @@ class RunContext {
     return iso;
   }
 
-  // Header common to every FITS file of a frame; samples_per_pixel is 4 for
-  // the scene (4x4 samples per pixel) and 1 for the sensor images.
+  // Header common to every FITS file of a frame; SAMPPIX is the image's
+  // samples per sensor pixel (the sensor's samples_per_pixel for the scene,
+  // 1 for the sensor images).
   io::FitsHeader header(const SensorSpec& s, std::size_t index, const eoir_image_info& in, const char* kind_name,
-                        const char* bunit, int samples_per_pixel, double cube_step_s = 0.0) const {
+                        const char* bunit, double cube_step_s = 0.0) const {
+    const long long pixels = engine_.value(s.name, "horizontal_pixels", EOIR_TYPE_INTEGER).get<long long>();
+    const long long samples_per_pixel = pixels > 0 ? static_cast<long long>(in.width) / pixels : 1;
     io::FitsHeader h;
     h.set_string("DATE-OBS", fits_time(iso_of(in)), "frame time (UTC)");
     h.set_string("TIMESYS", "UTC", "time scale of DATE-OBS");
@@ -251,6 +262,16 @@ class RunContext {
     wcs.mjdref = (in.time_jd_utc[0] - 2400000.5) + in.time_jd_utc[1];
     wcs.dateref = fits_time(iso_of(in));
     io::add_tan_pointing(h, wcs);
+    // The fidelity of the frame, as HIERARCH FID <property> cards.
+    const nlohmann::ordered_json knobs = fidelity(s.name);
+    for (auto it = knobs.begin(); it != knobs.end(); ++it) {
+      const std::string key = "FID " + it.key();
+      const nlohmann::ordered_json& v = it.value();
+      if (v.is_string()) h.set_string(key, v.get<std::string>(), "fidelity (README Fidelity)");
+      else if (v.is_number_integer()) h.set_integer(key, v.get<long long>(), "fidelity (README Fidelity)");
+      else if (v.is_boolean()) h.set_logical(key, v.get<bool>(), "fidelity (README Fidelity)");
+      else if (v.is_number()) h.set_double(key, v.get<double>(), "fidelity (README Fidelity)");
+    }
     h.set_string("ORIGIN", "eoir " EOIR_CLI_VERSION, "eoir run");
     return h;
   }
@@ -342,11 +363,11 @@ io::FitsHeader frame_fits_header(Engine& engine, const Scenario& sc, const Senso
   const eoir_image_info in = ctx.info(s.name, kind, where);
   switch (kind) {
     case EOIR_IMAGE_SCENE_RADIANCE:
-      return ctx.header(s, index, in, "scene_radiance", kBunitRadiance, 4);
+      return ctx.header(s, index, in, "scene_radiance", kBunitRadiance);
     case EOIR_IMAGE_SENSOR_ELECTRONS:
-      return ctx.header(s, index, in, "sensor_electrons", kBunitElectrons, 1);
+      return ctx.header(s, index, in, "sensor_electrons", kBunitElectrons);
     case EOIR_IMAGE_SENSOR_MEAN:
-      return ctx.header(s, index, in, "sensor_mean", kBunitElectrons, 1);
+      return ctx.header(s, index, in, "sensor_mean", kBunitElectrons);
     default:
       throw EngineError(where + ": image kind " + std::to_string(kind) + " is not written to FITS",
                         EOIR_ERR_OUT_OF_RANGE);
@@ -445,11 +466,11 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
 
       try {
         ctx.write_fits((dir / f_rad).string(), rad, in_rad,
-                       ctx.header(*s, i, in_rad, "scene_radiance", kBunitRadiance, 4));
+                       ctx.header(*s, i, in_rad, "scene_radiance", kBunitRadiance));
         ctx.write_fits((dir / f_el).string(), el, in_el,
-                       ctx.header(*s, i, in_el, "sensor_electrons", kBunitElectrons, 1));
+                       ctx.header(*s, i, in_el, "sensor_electrons", kBunitElectrons));
         ctx.write_fits((dir / f_mean).string(), mean, in_mean,
-                       ctx.header(*s, i, in_mean, "sensor_mean", kBunitElectrons, 1));
+                       ctx.header(*s, i, in_mean, "sensor_mean", kBunitElectrons));
         io::write_png_gray8((dir / f_scene).string(), sd.data(), in_sd.width, in_sd.height);
         io::write_png_gray8((dir / f_sensor).string(), pd.data(), in_pd.width, in_pd.height);
         const ojson truth = ctx.truth(s->name, where + ": truth", in_el);
@@ -521,7 +542,7 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
     if (!opt.cube) break;
     const CubeFrames& c = cubes.at(s->name);
     const double step = opt.times.size() > 1 ? opt.times[1] - opt.times[0] : 1.0;
-    io::FitsHeader h = ctx.header(*s, 0, c.first, "sensor_electrons_cube", kBunitElectrons, 1, step > 0 ? step : 1.0);
+    io::FitsHeader h = ctx.header(*s, 0, c.first, "sensor_electrons_cube", kBunitElectrons, step > 0 ? step : 1.0);
     h.set_integer("NFRAMES", static_cast<long long>(c.planes.size()), "frames in the cube (NAXIS3)");
     h.add_comment("Plane k (1-based) is time step k-1 of the run; its time and pointing are in the TIMES table.");
     h.add_comment("The celestial WCS is the first plane's.");
@@ -547,7 +568,11 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
   }
 
   ojson sensors_json = ojson::array();
-  for (const SensorSpec* s : sensors) sensors_json.push_back({{"name", s->name}, {"parent", s->parent}});
+  for (const SensorSpec* s : sensors) {
+    ojson entry = {{"name", s->name}, {"parent", s->parent}};
+    entry["fidelity"] = ctx.fidelity(s->name);
+    sensors_json.push_back(std::move(entry));
+  }
   ojson summary;
   summary["format"] = "eoir-run-summary";
   summary["version"] = 1;

@@ -49,18 +49,20 @@ Session::Session(Engine& engine, const Scenario& sc) : engine_(engine), scenario
 void Session::apply_properties(const std::string& object, const nlohmann::json& props, const std::string& path) {
   const eoir_api_v1& api = engine_.api();
   const eoir_engine e = engine_.handle();
-  // The declared types, to tell integers from numbers.
+  // The declared types, to tell integers from numbers, and the engine's
+  // table order, in which every property may be set (shape before
+  // dimensions_m): keys are applied in that order, unknown keys last.
   std::map<std::string, int32_t> types;
-  for (std::size_t i = 0; i < 4096; ++i) {
-    eoir_property_info info{};
-    info.struct_size = sizeof info;
-    if (api.property_info_at(e, object.c_str(), i, &info) != EOIR_OK) break;
-    if (info.name) types[info.name] = info.type;
+  std::vector<std::string> order;
+  for (const PropertyInfo& p : engine_.properties(object)) {
+    types[p.name] = p.type;
+    if (props.contains(p.name)) order.push_back(p.name);
   }
-  for (auto it = props.begin(); it != props.end(); ++it) {
-    const std::string& key = it.key();
+  for (auto it = props.begin(); it != props.end(); ++it)
+    if (types.count(it.key()) == 0) order.push_back(it.key());
+  for (const std::string& key : order) {
     const std::string where = path + "." + key;
-    const nlohmann::json& v = it.value();
+    const nlohmann::json& v = props.at(key);
     const auto t = types.find(key);
     const int32_t declared = t == types.end() ? 0 : t->second;
     eoir_status s;

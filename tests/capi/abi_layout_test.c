@@ -41,12 +41,16 @@ int main(void) {
   CHECK_LAYOUT(eoir_state, position, 8);
   CHECK_LAYOUT(eoir_state, velocity, 32);
   CHECK_LAYOUT(eoir_state, attitude, 56);
-  CHECK_SIZE(eoir_property_info, 40);
+  CHECK_SIZE(eoir_property_info, 72);
   CHECK_LAYOUT(eoir_property_info, name, 8);
   CHECK_LAYOUT(eoir_property_info, type, 16);
   CHECK_LAYOUT(eoir_property_info, unit, 24);
   CHECK_LAYOUT(eoir_property_info, description, 32);
   CHECK_LAYOUT(eoir_property_info, flags, 40); /* 1.3 */
+  CHECK_LAYOUT(eoir_property_info, range_open, 44);
+  CHECK_LAYOUT(eoir_property_info, minimum, 48);
+  CHECK_LAYOUT(eoir_property_info, maximum, 56);
+  CHECK_LAYOUT(eoir_property_info, choices, 64);
   CHECK_SIZE(eoir_element_info, 40);
   CHECK_LAYOUT(eoir_element_info, name, 8);
   CHECK_LAYOUT(eoir_element_info, type, 16);

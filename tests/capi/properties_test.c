@@ -79,6 +79,24 @@ int main(void) {
   OK(eoir_property_info_at(e, "Sensor1", 0, &info));
   CHECK(strcmp(info.name, "horizontal_pixels") == 0 && info.type == EOIR_TYPE_INTEGER);
   FAILS(eoir_property_info_at(e, "Sensor1", 999, &info), EOIR_ERR_OUT_OF_RANGE, "index");
+  /* 1.3: ranges, closed sets, the fidelity flag; the 1.2 struct size still works */
+  CHECK(info.minimum == 0.0 && (info.range_open & 1u) && info.maximum == 16384.0 && !(info.range_open & 2u));
+  CHECK(strcmp(info.choices, "") == 0 && info.flags == 0);
+  {
+    size_t i;
+    int seen_quality = 0, seen_samples = 0;
+    for (i = 0; eoir_property_info_at(e, "Sensor1", i, &info) == EOIR_OK; ++i) {
+      if (strcmp(info.name, "image_quality") == 0)
+        seen_quality = strncmp(info.choices, "diffraction_limited,negligible,", 31) == 0 && info.minimum < -1e308;
+      if (strcmp(info.name, "samples_per_pixel") == 0)
+        seen_samples = (info.flags & EOIR_PROPERTY_FIDELITY) && info.minimum == 1.0 && info.maximum == 16.0;
+    }
+    CHECK(seen_quality && seen_samples);
+    memset(&info, 0x5a, sizeof info);
+    info.struct_size = (uint32_t)offsetof(eoir_property_info, flags);
+    OK(eoir_property_info_at(e, "Sensor1", 0, &info));
+    CHECK(strcmp(info.name, "horizontal_pixels") == 0 && info.flags == 0x5a5a5a5au); /* not written */
+  }
   eoir_engine_destroy(e);
   return CHECK_SUMMARY();
 }

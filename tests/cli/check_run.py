@@ -25,6 +25,7 @@ import eoir
 
 START, STOP = "2010-08-25T18:00:00Z", "2010-08-25T18:01:00Z"
 GEO_A_KM = 42164.17
+SAMPLES = {"Cam": 4, "Wide": 2}  # scene samples per pixel (fidelity knob samples_per_pixel)
 TRUE_ANOMALY = 100.0  # the Moon (RA 343 deg) is far from the Earth seen from here
 CAM = {"w": 64, "h": 48, "hfov": 6.0, "vfov": 4.5}
 LWIR = {
@@ -95,7 +96,7 @@ def scenario(cam_quat):
                                 horizontal_fov_deg=CAM["hfov"], vertical_fov_deg=CAM["vfov"])},
             {"name": "Wide", "parent": "Sat", "pointing": {"type": "nadir"},
              "parameters": dict(LWIR, horizontal_pixels=32, vertical_pixels=32,
-                                horizontal_fov_deg=20.0, vertical_fov_deg=20.0)},
+                                horizontal_fov_deg=20.0, vertical_fov_deg=20.0, samples_per_pixel=2)},
         ],
     }
 
@@ -224,6 +225,12 @@ def main():
         check(not errs, "summary.json validates against run_summary.schema.json")
         check(summary["time_steps"] == 2 and len(summary["frames"]) == 4, "2 time steps x 2 sensors")
         check(summary["scenario"] == "run test: Moon off-centre", "summary scenario name")
+        # Fidelity echoed per sensor (issue 7 item 3): the knobs as set.
+        fid = {x["name"]: x["fidelity"] for x in summary["sensors"]}
+        check(fid["Wide"].get("samples_per_pixel") == 2 and fid["Cam"].get("samples_per_pixel") == 4,
+              f"summary fidelity samples_per_pixel {fid}")
+        check(fid["Cam"].get("scene_mode") == "coarse" and fid["Cam"].get("band_integration") == "grid"
+              and fid["Cam"].get("psf_grid_size") == 512, "summary fidelity: scene_mode, band_integration, psf_grid_size")
 
         expected = {"summary.json"}
         for i in range(2):
@@ -239,7 +246,8 @@ def main():
             tag = f"{fr['sensor']} frame {fr['index']}"
             sw, sh = fr["sensor_size"]["width"], fr["sensor_size"]["height"]
             cw, ch = fr["scene_size"]["width"], fr["scene_size"]["height"]
-            check((cw, ch) == (4 * sw, 4 * sh), f"{tag}: scene is 4x4 samples per pixel")
+            n = SAMPLES[fr["sensor"]]
+            check((cw, ch) == (n * sw, n * sh), f"{tag}: scene is {n}x{n} samples per pixel")
             if fr["sensor"] == "Cam":
                 check((sw, sh) == (CAM["w"], CAM["h"]), f"{tag}: sensor size {sw}x{sh}")
             images = {}
@@ -259,6 +267,13 @@ def main():
                 check(cards.get("SCENARIO") == summary["scenario"], f"{tag} {key}: SCENARIO")
                 check(int(cards.get("FRAME", -1)) == fr["index"], f"{tag} {key}: FRAME")
                 check(cards.get("IMAGTYPE") == kind, f"{tag} {key}: IMAGTYPE")
+                check(int(cards.get("SAMPPIX", -1)) == (SAMPLES[fr["sensor"]] if key == "radiance" else 1),
+                      f"{tag} {key}: SAMPPIX {cards.get('SAMPPIX')}")
+                for name, v in fid[fr["sensor"]].items():
+                    card = cards.get("FID " + name.upper())
+                    same = card is not None and (card.strip("'").strip() == v if isinstance(v, str)
+                                                 else abs(float(card) - v) <= 1e-12 * abs(v))
+                    check(same, f"{tag} {key}: HIERARCH FID {name.upper()} = {card!r}, summary {v!r}")
                 for k, sk in (("BORE_RA", "boresight_ra_deg"), ("BORE_DEC", "boresight_dec_deg"),
                               ("UP_RA", "up_ra_deg"), ("UP_DEC", "up_dec_deg")):
                     check(abs(float(cards[k]) - fr[sk]) < 1e-9, f"{tag} {key}: {k}")

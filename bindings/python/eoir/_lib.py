@@ -114,7 +114,11 @@ class eoir_property_info(Structure):
                 ("type", c_int32),
                 ("unit", c_char_p),
                 ("description", c_char_p),
-                ("flags", c_uint32)]  # appended in 1.3
+                ("flags", c_uint32),  # appended in 1.3
+                ("range_open", c_uint32),
+                ("minimum", c_double),
+                ("maximum", c_double),
+                ("choices", c_char_p)]
 
 
 class eoir_element_info(Structure):

@@ -383,11 +383,13 @@ class Engine:
         }
 
     # -------------------------------------------------------- properties
-    def properties(self, obj: str) -> List[Dict[str, str]]:
+    def properties(self, obj: str) -> List[Dict[str, object]]:
         """Every property of an object as dicts with keys name, type
-        ("number", "integer", "bool", "string" or "array"), unit, description."""
-        return [{"name": n, "type": _type_name(t), "unit": u, "description": d}
-                for n, t, u, d in self._property_infos(obj)]
+        ("number", "integer", "bool", "string" or "array"), unit, description,
+        fidelity (a knob trading speed for accuracy), minimum and maximum
+        (None if unbounded; open bounds marked by minimum_open/maximum_open)
+        and choices (the closed set of a string property, else [])."""
+        return [dict(p, type=_type_name(p["type"])) for p in self._property_infos(obj)]
 
     def _property_infos(self, obj: str):
         out = []
@@ -400,21 +402,28 @@ class Engine:
             if status == _lib.EOIR_ERR_OUT_OF_RANGE and (index > 0 or obj in self):
                 return out
             check(status)
-            out.append((decode(info.name), int(info.type), decode(info.unit),
-                        decode(info.description)))
+            choices = decode(info.choices) if info.choices else ""
+            out.append({"name": decode(info.name), "type": int(info.type), "unit": decode(info.unit),
+                        "description": decode(info.description),
+                        "fidelity": bool(info.flags & _lib.EOIR_PROPERTY_FIDELITY),
+                        "minimum": info.minimum if math.isfinite(info.minimum) else None,
+                        "maximum": info.maximum if math.isfinite(info.maximum) else None,
+                        "minimum_open": bool(info.range_open & 1),
+                        "maximum_open": bool(info.range_open & 2),
+                        "choices": choices.split(",") if choices else []})
             index += 1
 
     def property_type(self, obj: str, prop: str) -> Optional[str]:
         """The type name of a property, or None if the object lacks it."""
-        for n, t, _, _ in self._property_infos(obj):
-            if n == prop:
-                return _type_name(t)
+        for p in self._property_infos(obj):
+            if p["name"] == prop:
+                return _type_name(p["type"])
         return None
 
     def _type_code(self, obj: str, prop: str, value=None) -> int:
-        for n, t, _, _ in self._property_infos(obj):
-            if n == prop:
-                return t
+        for p in self._property_infos(obj):
+            if p["name"] == prop:
+                return p["type"]
         # Not listed: guess from the value and let the library name the error.
         if value is None or isinstance(value, (float, numbers.Real)) and not isinstance(value, numbers.Integral):
             return _lib.EOIR_TYPE_NUMBER

@@ -232,8 +232,12 @@ typedef struct eoir_property_info {
   int32_t type;            /* eoir_value_type */
   const char* unit;        /* static, "" if none */
   const char* description; /* static */
-  /* appended in 1.3; written only when struct_size covers it */
+  /* appended in 1.3; each written only when struct_size covers it */
   uint32_t flags;          /* EOIR_PROPERTY_* bits */
+  uint32_t range_open;     /* bit 0: minimum excluded, bit 1: maximum excluded */
+  double minimum;          /* numbers, integers and array elements: -HUGE_VAL if unbounded */
+  double maximum;          /* +HUGE_VAL if unbounded; both infinite for strings and bools */
+  const char* choices;     /* static: strings with a closed set, "a,b,c"; "" otherwise */
 } eoir_property_info;
 
 /* The index-th property of an object (0-based); EOIR_ERR_OUT_OF_RANGE past

@@ -38,11 +38,24 @@ std::vector<std::uint8_t> scene_display(const radiometry::RadianceImage& scene, 
   const geometry::SampleGrid& g = scene.grid;
   const std::int64_t w = g.width(), fw = g.field_width(), fh = g.field_height(), guard = g.guard_samples();
   std::vector<double> irradiance(static_cast<std::size_t>(fw * fh));
-  for (std::int64_t r = 0; r < fh; ++r)
-    for (std::int64_t c = 0; c < fw; ++c)
-      irradiance[static_cast<std::size_t>(r * fw + c)] =
-          scene.radiance_W_cm2_sr[static_cast<std::size_t>((r + guard) * w + c + guard)] *
-          g.sample_solid_angle_sr(c + guard, r + guard);
+  // dOmega = dA' cos^3(theta) / f^2 (SampleGrid::sample_solid_angle_sr) with
+  // the tangents of each column and row computed once.
+  std::vector<double> tx(static_cast<std::size_t>(fw)), ty(static_cast<std::size_t>(fh));
+  for (std::int64_t c = 0; c < fw; ++c) tx[static_cast<std::size_t>(c)] = g.tan_x(c + guard);
+  for (std::int64_t r = 0; r < fh; ++r) ty[static_cast<std::size_t>(r)] = g.tan_y(r + guard);
+  const double k = static_cast<double>(g.per_pixel);
+  const double d_area = (g.pitch_x_cm / k) * (g.pitch_y_cm / k);
+  const double f2 = g.focal_length_cm * g.focal_length_cm;
+  for (std::int64_t r = 0; r < fh; ++r) {
+    const double ty2 = ty[static_cast<std::size_t>(r)] * ty[static_cast<std::size_t>(r)];
+    const double* radiance = scene.radiance_W_cm2_sr.data() + (r + guard) * w + guard;
+    double* out = irradiance.data() + r * fw;
+    for (std::int64_t c = 0; c < fw; ++c) {
+      const double t = tx[static_cast<std::size_t>(c)];
+      const double cos_theta = 1.0 / std::sqrt(1.0 + t * t + ty2);
+      out[c] = radiance[c] * (d_area * cos_theta * cos_theta * cos_theta / f2);
+    }
+  }
   for (const radiometry::PointSource& ps : scene.point_sources) {
     const std::int64_t c = std::clamp<std::int64_t>(std::lround(ps.column) - guard, 0, fw - 1);
     const std::int64_t r = std::clamp<std::int64_t>(std::lround(ps.row) - guard, 0, fh - 1);

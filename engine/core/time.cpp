@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -38,6 +39,16 @@ void to_tt(const JulianDate& d, double& tt1, double& tt2) {
 EngineTime EngineTime::from(const JulianDate& date) {
   require_finite(date.jd1, "time.jd1");
   require_finite(date.jd2, "time.jd2");
+  // Each part at most 1e7 days: every split of a date in the accepted range
+  // (JD + 0, 2400000.5 + MJD, 0 + JD) fits, and the two parts cannot cancel
+  // each other's precision away (1e308 - 1e308).
+  for (const auto& [part, name] : {std::pair{date.jd1, "time.jd1"}, std::pair{date.jd2, "time.jd2"}})
+    if (std::fabs(part) > 1.0e7) {
+      char text[160];
+      std::snprintf(text, sizeof text, "%s: %.10g days: each part of a two-part Julian date must be within +/-1e7", name,
+                    part);
+      throw Error(Status::out_of_range, text);
+    }
   double tt1 = 0, tt2 = 0;
   to_tt(date, tt1, tt2);
   EngineTime t;
@@ -48,6 +59,7 @@ EngineTime EngineTime::from(const JulianDate& date) {
   t.days_ = whole1 + whole2;
   t.fraction_ = (d1 - whole1) + (tt2 - whole2);
   t.normalise();
+  t.check_range("time.jd1 + time.jd2");
   return t;
 }
 
@@ -58,6 +70,7 @@ EngineTime EngineTime::from_tt_days(double days_since_j2000, double fraction_of_
   t.days_ = days_since_j2000;
   t.fraction_ = fraction_of_day;
   t.normalise();
+  t.check_range("time.days");
   return t;
 }
 
@@ -68,6 +81,17 @@ void EngineTime::normalise() {
   const double carry = std::floor(fraction_);
   days_ += carry;
   fraction_ -= carry;
+}
+
+void EngineTime::check_range(const char* field) const {
+  const double days = days_ + fraction_;
+  if (days >= min_tt_days_since_j2000 && days <= max_tt_days_since_j2000) return;
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "%s: TT JD %.10g is outside the dates the engine accepts, 1000-01-01 to 3000-01-01 TT (JD %.1f to "
+                "%.1f, where ERFA's planetary ephemerides are valid)",
+                field, j2000_jd + days, j2000_jd + min_tt_days_since_j2000, j2000_jd + max_tt_days_since_j2000);
+  throw Error(Status::out_of_range, text);
 }
 
 JulianDate EngineTime::to(TimeScale scale) const {
@@ -99,6 +123,7 @@ EngineTime EngineTime::plus_seconds(double seconds) const {
   t.days_ += whole_days;
   t.fraction_ += (seconds - whole_days * 86400.0) / 86400.0;
   t.normalise();
+  t.check_range("seconds");
   return t;
 }
 

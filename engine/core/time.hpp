@@ -15,11 +15,19 @@ struct JulianDate {
   double jd2 = 0.0;
 };
 
+// The dates the engine accepts, TT: 1000-01-01 to 3000-01-01 (JD 2086302.5 to
+// 2816787.5, J2000.0 -/+ 365,242.5 days), the span over which ERFA's
+// planetary ephemerides (eraPlan94) are valid; the Earth (eraEpv00) and the
+// Moon (eraMoon98) degrade gracefully over it. UTC before 1960 is TAI (ERFA
+// has no leap seconds before then).
+constexpr double min_tt_days_since_j2000 = 2086302.5 - 2451545.0;
+constexpr double max_tt_days_since_j2000 = 2816787.5 - 2451545.0;
+
 class EngineTime {
  public:
   EngineTime() = default;
-  // From any scale; throws eoir::Error(out_of_range) for non-finite parts or
-  // dates ERFA cannot convert.
+  // From any scale; throws eoir::Error(out_of_range) for non-finite parts,
+  // dates ERFA cannot convert and dates outside the accepted range above.
   static EngineTime from(const JulianDate& date);
   static EngineTime from_tt_days(double days_since_j2000, double fraction_of_day);
   JulianDate to(TimeScale scale) const;
@@ -28,11 +36,14 @@ class EngineTime {
   double fraction() const { return fraction_; }
   // Seconds from `other` to this (exact to well below a microsecond).
   double seconds_since(const EngineTime& other) const;
+  // Throws out_of_range if the result leaves the accepted range.
   EngineTime plus_seconds(double seconds) const;
   bool operator==(const EngineTime& o) const { return days_ == o.days_ && fraction_ == o.fraction_; }
 
  private:
   void normalise();
+  // Throws out_of_range naming `field` outside the accepted range.
+  void check_range(const char* field) const;
   double days_ = 0.0;
   double fraction_ = 0.0;
 };

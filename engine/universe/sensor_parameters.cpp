@@ -1,8 +1,12 @@
 #include "universe/sensor_parameters.hpp"
 
+#include <cmath>
 #include <sstream>
+#include <tuple>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
+#include "core/value.hpp"
 #include "core/limits.hpp"
 #include "universe/sensor_properties.hpp"
 
@@ -36,8 +40,11 @@ void validate_reference_pairs(const std::vector<ReferencePair>& pairs, const std
                                             " reference pairs, got " + std::to_string(pairs.size()));
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const std::string item = field + "[" + std::to_string(i) + "]";
-    require_positive(pairs[i].integration_time_ms, item + ".integration_time_ms");
-    require_positive(pairs[i].value, item + ".value");
+    check_range(pairs[i].integration_time_ms,
+                Range{sensor_bounds::min_integration_time_ms, sensor_bounds::max_integration_time_ms},
+                item + ".integration_time_ms", "ms");
+    check_range(pairs[i].value, Range{sensor_bounds::min_reference_value, sensor_bounds::max_reference_value},
+                item + ".value", "W/cm^2 or W/(cm^2 sr)");
     for (std::size_t j = 0; j < i; ++j)
       if (pairs[j].integration_time_ms == pairs[i].integration_time_ms)
         throw Error(Status::out_of_range, item + ".integration_time_ms: repeats the time of " + field + "[" +
@@ -55,6 +62,24 @@ void validate(const SensorParameters& p) {
     std::ostringstream s;
     s << "band_high_um: must be greater than band_low_um (" << p.band_high_um << " <= " << p.band_low_um << ")";
     throw Error(Status::out_of_range, s.str());
+  }
+  // The pixel pitch (eqs. 21-22) against the diffraction width lambda_diff F#.
+  const double width_cm = p.diffraction_wavelength_um * 1.0e-4 * p.f_number;
+  for (const auto& [fov_deg, pixels, axis] :
+       {std::tuple{p.horizontal_fov_deg, p.horizontal_pixels, "horizontal"},
+        std::tuple{p.vertical_fov_deg, p.vertical_pixels, "vertical"}}) {
+    const double pitch_cm = 2.0 * p.focal_length_cm * std::tan(0.5 * fov_deg * constants::rad_per_deg) /
+                            static_cast<double>(pixels);
+    const double widths = pitch_cm / width_cm;
+    if (widths > sensor_bounds::max_pitch_diffraction_widths) {
+      std::ostringstream s;
+      s << axis << "_fov_deg, " << axis << "_pixels, focal_length_cm: the pixel pitch (" << pitch_cm << " cm) spans "
+        << widths << " diffraction widths lambda_diff F# (" << width_cm << " cm), at most "
+        << sensor_bounds::max_pitch_diffraction_widths
+        << " (the energy on detector, eq. 40, would take too long): use more pixels, a narrower field, a shorter "
+           "focal length or a larger f_number or diffraction_wavelength_um";
+      throw Error(Status::out_of_range, s.str());
+    }
   }
 }
 

@@ -16,6 +16,39 @@ struct ReferencePair {
   double value;  // W/cm^2 (NEI/SEI) or W/(cm^2 sr) (NER/SER)
 };
 
+// Physical bounds of the sensor parameters: each keeps every derived quantity
+// (IFOV, pitch, responsivities, noise, the PSF grid) finite and the cost of a
+// frame bounded; sensor_properties.cpp and schemas/sensor.schema.json use them.
+namespace sensor_bounds {
+// Full field of view: 1e-6 deg (3.6 mas, below any imaging sensor's field):
+// with 16384 pixels of 16 samples a sample still spans ~1e3 ulp of a unit
+// direction in double, so neighbouring rays stay distinct.
+constexpr double min_fov_deg = 1.0e-6;
+constexpr double max_fov_deg = 179.9;
+// F/# >= 0.5: the limit of an aplanatic lens in vacuum (F/# = 1 / (2 NA), NA <= 1).
+constexpr double min_f_number = 0.5;
+constexpr double max_f_number = 1000.0;
+// 10 um to 10 km: below the focal length of any lens, above the largest telescopes.
+constexpr double min_focal_length_cm = 1.0e-3;
+constexpr double max_focal_length_cm = 1.0e6;
+// lambda_diff: from the shortest wavelength the engine models (spec 4.1.1).
+constexpr double min_diffraction_wavelength_um = 0.28;
+constexpr double max_diffraction_wavelength_um = 1000.0;
+// Integration times (and reference-pair times): 1 ns to 10^4 s.
+constexpr double min_integration_time_ms = 1.0e-6;
+constexpr double max_integration_time_ms = 1.0e7;
+// NEI/SEI (W/cm^2) and NER/SER (W/(cm^2 sr)) of reference pairs: 1e-40 to
+// 1e10, decades beyond any detector (the Sun gives 0.14 W/cm^2 and
+// 2e3 W/(cm^2 sr)) yet squares (noise variances) stay finite.
+constexpr double min_reference_value = 1.0e-40;
+constexpr double max_reference_value = 1.0e10;
+// A pixel spans at most 1e4 diffraction widths lambda_diff F# (its IFOV at
+// most 1e4 lambda / D): the energy on detector (eq. 40) folds the OTF onto
+// the pixel grid at a cost growing with the square of that ratio (about 3 s
+// at 1e4, hours at 1e6). Checked when the sensor is evaluated.
+constexpr double max_pitch_diffraction_widths = 1.0e4;
+}  // namespace sensor_bounds
+
 // Whether reference pairs are irradiance (NEI/SEI) or radiance (NER/SER).
 enum class ApertureQuantity : int { irradiance = 0, radiance = 1 };
 
@@ -67,12 +100,13 @@ const std::vector<std::string>& image_quality_names();  // the presets and "cust
 
 // Throws eoir::Error naming `field` (e.g. "sensitivity_pairs[2].value")
 // unless there are 1..limits::max_reference_pairs pairs (limit_exceeded past
-// it) with finite positive times and values and no repeated time.
+// it) with times and values within sensor_bounds and no repeated time.
 void validate_reference_pairs(const std::vector<ReferencePair>& pairs, const std::string& field);
 
 // The one place a sensor is validated: every parameter in its range (the
-// property table's), the reference pairs, the band edges in order and the
-// fidelity knobs. Throws eoir::Error naming the field.
+// property table's), the reference pairs, the band edges in order, the pixel
+// pitch against the diffraction width and the fidelity knobs. Throws
+// eoir::Error naming the field.
 void validate(const SensorParameters& p);
 
 }  // namespace eoir::universe

@@ -40,22 +40,23 @@ Spec pairs_property(const char* name, const char* description, std::vector<Refer
   return Spec{name, ValueType::array, "ms, W/cm^2 or W/(cm^2 sr)", description,
               [member](const P& p) { return flatten(p.*member); },
               [name, member](P& p, const Value& v) { p.*member = parse_pairs(v, name); },
-              Range{0, 1e300, true}};
+              Range{sensor_bounds::min_reference_value, sensor_bounds::max_reference_value}};
 }
 }  // namespace
 
 const std::vector<Spec>& sensor_properties() {
   static const std::vector<Spec> table = [] {
     std::vector<Spec> t;
+    const Range fov_range{sensor_bounds::min_fov_deg, sensor_bounds::max_fov_deg};
     t.push_back(integer_property<P>("horizontal_pixels", "count",
                                     "Number of pixels in the horizontal direction (spec 5.2)",
                                     [](P& p) -> auto& { return p.horizontal_pixels; }, Range{0, 16384, true}));
     t.push_back(integer_property<P>("vertical_pixels", "count", "Number of pixels in the vertical direction (spec 5.2)",
                                     [](P& p) -> auto& { return p.vertical_pixels; }, Range{0, 16384, true}));
     t.push_back(number_property<P>("horizontal_fov_deg", "deg", "Full-angle horizontal field of view (eq. 21)",
-                                   [](P& p) -> auto& { return p.horizontal_fov_deg; }, Range{0, 179.9, true}));
+                                   [](P& p) -> auto& { return p.horizontal_fov_deg; }, fov_range));
     t.push_back(number_property<P>("vertical_fov_deg", "deg", "Full-angle vertical field of view (eq. 22)",
-                                   [](P& p) -> auto& { return p.vertical_fov_deg; }, Range{0, 179.9, true}));
+                                   [](P& p) -> auto& { return p.vertical_fov_deg; }, fov_range));
     t.push_back(number_property<P>("band_low_um", "um", "Low band edge wavelength (spec 5.3; 0.28-28 um, spec 4.1.1)",
                                    [](P& p) -> auto& { return p.band_low_um; }, Range{0.28, 28.0}));
     t.push_back(number_property<P>("band_high_um", "um", "High band edge wavelength (spec 5.3; 0.28-28 um)",
@@ -63,11 +64,14 @@ const std::vector<Spec>& sensor_properties() {
     t.push_back(integer_property<P>("spectral_intervals", "count", "Number of spectral intervals N (spec 5.3)",
                                     [](P& p) -> auto& { return p.spectral_intervals; }, Range{1, 100000}));
     t.push_back(number_property<P>("f_number", "", "F-number F/# (spec 5.4)", [](P& p) -> auto& { return p.f_number; },
-                                   Range{0, 1000, true}));
+                                   Range{sensor_bounds::min_f_number, sensor_bounds::max_f_number}));
     t.push_back(number_property<P>("focal_length_cm", "cm", "Effective focal length f (spec 5.2)",
-                                   [](P& p) -> auto& { return p.focal_length_cm; }, Range{0, 1e6, true}));
+                                   [](P& p) -> auto& { return p.focal_length_cm; },
+                                   Range{sensor_bounds::min_focal_length_cm, sensor_bounds::max_focal_length_cm}));
     t.push_back(number_property<P>("diffraction_wavelength_um", "um", "Diffraction wavelength lambda_diff (eq. 34)",
-                                   [](P& p) -> auto& { return p.diffraction_wavelength_um; }, Range{0, 1000, true}));
+                                   [](P& p) -> auto& { return p.diffraction_wavelength_um; },
+                                   Range{sensor_bounds::min_diffraction_wavelength_um,
+                                         sensor_bounds::max_diffraction_wavelength_um}));
     t.push_back(number_property<P>("defocus_mm", "mm", "Longitudinal defocus delta (eqs. 36-37)",
                                    [](P& p) -> auto& { return p.defocus_mm; }, Range{0, 1e4}));
     Spec quality = enum_property<P, ImageQuality>(
@@ -100,7 +104,8 @@ const std::vector<Spec>& sensor_properties() {
     t.push_back(number_property<P>("jitter_mrad", "mrad", "RMS line-of-sight jitter sigma (eq. 38)",
                                    [](P& p) -> auto& { return p.jitter_mrad; }, Range{0, 1e3}));
     t.push_back(number_property<P>("integration_time_ms", "ms", "Integration time t_i (eq. 31)",
-                                   [](P& p) -> auto& { return p.integration_time_ms; }, Range{0, 1e7, true}));
+                                   [](P& p) -> auto& { return p.integration_time_ms; },
+                                   Range{sensor_bounds::min_integration_time_ms, sensor_bounds::max_integration_time_ms}));
     t.push_back(enum_property<P, ApertureQuantity>(
         "sensitivity_quantity", "Whether sensitivity_pairs hold NEI (irradiance, W/cm^2) or NER (radiance, W/(cm^2 sr))",
         [](P& p) -> auto& { return p.sensitivity_quantity; }, quantity_names()));

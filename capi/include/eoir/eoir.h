@@ -116,7 +116,10 @@ EOIR_API void eoir_engine_destroy(eoir_engine engine);
 /* --------------------------------------------------------------------- time */
 /* Two-part Julian date (jd1 + jd2, as ERFA) in an explicit time scale. The
  * engine keeps time internally as TT days since J2000.0 and a fraction of a
- * day (spec 3.2). */
+ * day (spec 3.2). Every call taking a time accepts 1000-01-01 to 3000-01-01
+ * TT (JD 2086302.5 to 2816787.5, where ERFA's planetary ephemerides are
+ * valid), each part within +/-1e7 days; other dates are EOIR_ERR_OUT_OF_RANGE
+ * naming the field. UTC before 1960 is taken as TAI (no leap seconds). */
 typedef enum eoir_time_scale {
   EOIR_TIME_UTC = 0,
   EOIR_TIME_TAI = 1,

@@ -575,10 +575,14 @@ class Engine:
 
     def truth(self, sensor: str) -> List[Dict[str, Any]]:
         """Per-frame truth of the last frame rendered for sensor
-        (eoir_truth_count / eoir_truth_get): one dict per object in the field
-        with keys object, pixel_x, pixel_y (sub-pixel, 0 = centre of pixel 0,
-        rows from the top), range_m, point_source (bool), visible (bool),
-        effective_irradiance (W/cm^2), effective_radiance (W/(cm^2 sr)), snr.
+        (eoir_truth_count / eoir_truth_get): one dict per object or catalogue
+        star in the field with keys kind ("object" or "star"), object (name
+        or catalogue id), pixel_x, pixel_y (sub-pixel, 0 = centre of pixel 0,
+        rows from the top), range_m (0 for stars), point_source (bool),
+        visible (bool), effective_irradiance (W/cm^2), effective_radiance
+        (W/(cm^2 sr)), snr, ra_deg, dec_deg (the apparent direction, J2000
+        axes), v_mag, b_v_mag (stars), start and end (pixel_x, pixel_y) at
+        the start and the end of the integration (a streak).
         Raises NoStateError if no frame was rendered."""
         s = encode(sensor)
         n = c_size_t()
@@ -598,6 +602,13 @@ class Engine:
                 "effective_irradiance": float(t.effective_irradiance),
                 "effective_radiance": float(t.effective_radiance),
                 "snr": float(t.snr),
+                "kind": "star" if t.kind == _lib.EOIR_TRUTH_STAR else "object",
+                "ra_deg": float(t.right_ascension_deg),
+                "dec_deg": float(t.declination_deg),
+                "v_mag": float(t.v_mag),
+                "b_v_mag": float(t.b_v_mag),
+                "start": (float(t.start_pixel_x), float(t.start_pixel_y)),
+                "end": (float(t.end_pixel_x), float(t.end_pixel_y)),
             })
         return out
 

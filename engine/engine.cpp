@@ -65,8 +65,8 @@ void Engine::remove_object(const std::string& name) {
 }
 
 void Engine::push_state(const std::string& name, const EngineTime& epoch, int frame, const double position[3],
-                        const double velocity[3], const double attitude_wxyz[4]) {
-  universe::push_state(universe_.get(name), epoch, frame, position, velocity, attitude_wxyz);
+                        const double velocity[3], const double attitude_wxyz[4], const double angular_velocity_rad_s[3]) {
+  universe::push_state(universe_.get(name), epoch, frame, position, velocity, attitude_wxyz, angular_velocity_rad_s);
   changed();
 }
 
@@ -75,7 +75,8 @@ void Engine::restore_state(const std::string& name, const universe::PushedState&
   const double r[3] = {s.position_m.x(), s.position_m.y(), s.position_m.z()};
   const double v[3] = {s.velocity_m_s.x(), s.velocity_m_s.y(), s.velocity_m_s.z()};
   const double q[4] = {s.attitude.w(), s.attitude.x(), s.attitude.y(), s.attitude.z()};
-  universe::push_state(o, s.epoch, s.frame == universe::StateFrame::j2000 ? 0 : 1, r, v, q);  // validates
+  const double w[3] = {s.angular_velocity_rad_s.x(), s.angular_velocity_rad_s.y(), s.angular_velocity_rad_s.z()};
+  universe::push_state(o, s.epoch, s.frame == universe::StateFrame::j2000 ? 0 : 1, r, v, q, w);  // validates
   o.state.attitude = s.attitude;  // bit for bit (push_state normalises)
   changed();
 }

@@ -39,6 +39,8 @@ struct PushedState {
   frames::Vec3 position_m = frames::Vec3::Zero();
   frames::Vec3 velocity_m_s = frames::Vec3::Zero();
   Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  // body -> frame
+  // About which the attitude turns between pushes, in the frame's axes (rad/s).
+  frames::Vec3 angular_velocity_rad_s = frames::Vec3::Zero();
 };
 
 // How an object's surface temperature varies (spec 4.3.1.3): uniform

@@ -287,10 +287,10 @@ class RunContext {
     for (auto it = knobs.begin(); it != knobs.end(); ++it) {
       const std::string key = "FID " + it.key();
       const nlohmann::ordered_json& v = it.value();
-      if (v.is_string()) h.set_string(key, v.get<std::string>(), "fidelity (README Fidelity)");
-      else if (v.is_number_integer()) h.set_integer(key, v.get<long long>(), "fidelity (README Fidelity)");
-      else if (v.is_boolean()) h.set_logical(key, v.get<bool>(), "fidelity (README Fidelity)");
-      else if (v.is_number()) h.set_double(key, v.get<double>(), "fidelity (README Fidelity)");
+      if (v.is_string()) h.set_string(key, v.get<std::string>(), "fidelity");
+      else if (v.is_number_integer()) h.set_integer(key, v.get<long long>(), "fidelity");
+      else if (v.is_boolean()) h.set_logical(key, v.get<bool>(), "fidelity");
+      else if (v.is_number()) h.set_double(key, v.get<double>(), "fidelity");
     }
     h.set_string("ORIGIN", "eoir " EOIR_CLI_VERSION, "eoir run");
     return h;

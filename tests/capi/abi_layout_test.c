@@ -36,7 +36,8 @@ int main(void) {
   CHECK_SIZE(eoir_time, 24);
   CHECK_LAYOUT(eoir_time, jd1, 8);
   CHECK_LAYOUT(eoir_time, jd2, 16);
-  CHECK_SIZE(eoir_state, 88);
+  CHECK_SIZE(eoir_state, 112);
+  CHECK_LAYOUT(eoir_state, angular_velocity, 88); /* 1.3 */
   CHECK_LAYOUT(eoir_state, frame, 4);
   CHECK_LAYOUT(eoir_state, position, 8);
   CHECK_LAYOUT(eoir_state, velocity, 32);

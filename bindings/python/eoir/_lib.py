@@ -107,7 +107,8 @@ class eoir_state(Structure):
                 ("frame", c_int32),
                 ("position", c_double * 3),
                 ("velocity", c_double * 3),
-                ("attitude", c_double * 4)]
+                ("attitude", c_double * 4),
+                ("angular_velocity", c_double * 3)]  # appended in 1.3
 
 
 class eoir_property_info(Structure):

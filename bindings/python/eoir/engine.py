@@ -355,22 +355,25 @@ class Engine:
 
     # ------------------------------------------------------------- state
     def set_state(self, name: str, position, velocity=(0.0, 0.0, 0.0),
-                  attitude=(1.0, 0.0, 0.0, 0.0), frame="j2000", time=None) -> None:
+                  attitude=(1.0, 0.0, 0.0, 0.0), frame="j2000", time=None,
+                  angular_velocity=(0.0, 0.0, 0.0)) -> None:
         """Push a state: position in metres (or lat deg, lon deg, height m for
         "geodetic"), velocity in m/s, attitude quaternion (w, x, y, z) body to
-        frame; time None means the engine time."""
+        frame, angular velocity in rad/s about the frame's axes (the attitude
+        turns at it between pushes); time None means the engine time."""
         st = _lib.eoir_state()
         st.struct_size = ctypes.sizeof(st)
         st.frame = _lookup(FRAMES, frame, "frame")
         st.position[:] = _vector(position, 3, "position")
         st.velocity[:] = _vector(velocity, 3, "velocity")
         st.attitude[:] = _vector(attitude, 4, "attitude")
+        st.angular_velocity[:] = _vector(angular_velocity, 3, "angular_velocity")
         t = None if time is None else byref(_to_c_time(time))
         check(lib.eoir_object_set_state(self.handle, encode(name), t, byref(st)))
 
     def get_state(self, name: str, frame="j2000") -> Dict[str, Any]:
         """The state at the engine time as a dict with numpy arrays position,
-        velocity, attitude and the frame name."""
+        velocity, attitude, angular_velocity (rad/s) and the frame name."""
         st = _lib.eoir_state()
         st.struct_size = ctypes.sizeof(st)
         st.frame = _lookup(FRAMES, frame, "frame")
@@ -380,6 +383,7 @@ class Engine:
             "position": np.array(st.position[:], dtype=np.float64),
             "velocity": np.array(st.velocity[:], dtype=np.float64),
             "attitude": np.array(st.attitude[:], dtype=np.float64),
+            "angular_velocity": np.array(st.angular_velocity[:], dtype=np.float64),
         }
 
     # -------------------------------------------------------- properties

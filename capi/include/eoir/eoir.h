@@ -176,13 +176,17 @@ typedef struct eoir_state {
   double position[3];   /* metres (or lat, lon, height for GEODETIC) */
   double velocity[3];   /* m/s */
   double attitude[4];   /* unit quaternion {w, x, y, z}: body to frame */
+  /* appended in 1.3; read and written only when struct_size covers it */
+  double angular_velocity[3]; /* rad/s about the frame's axes (at most 1000) */
 } eoir_state;
 
 /* State of an object at a time (NULL time = the engine time). Between pushes
  * the engine moves the object along its velocity (constant-velocity
- * extrapolation). Central bodies move on their own (ERFA ephemerides) and
- * refuse states. Sensors take their parent's position; a sensor's attitude
- * set here overrides the parent's. */
+ * extrapolation) and turns its attitude at the angular velocity (point
+ * sources streak across the focal plane during the integration time as both
+ * move). Central bodies move on their own (ERFA ephemerides) and refuse
+ * states. Sensors take their parent's position; a sensor's attitude set here
+ * overrides the parent's. */
 EOIR_API eoir_status eoir_object_set_state(eoir_engine engine, const char* name,
                                            const eoir_time* time, const eoir_state* state);
 /* State at the engine time in the requested frame (struct_size and frame set

@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <memory>
 
 #include "validation_support.hpp"
@@ -57,9 +59,22 @@ double km_to_segment(const LatLon& p, const LatLon& a, const LatLon& b) {
 
 // GSHHG high-resolution shorelines (all levels) in a box, as polylines.
 std::vector<std::vector<LatLon>> gshhg_shorelines(double west, double east, double south, double north) {
-  char cmd[512];
-  std::snprintf(cmd, sizeof cmd, "\"%s\" coast -R%.6f/%.6f/%.6f/%.6f -Dh -W -M 2>/dev/null", EOIR_GMT_EXECUTABLE, west,
-                east, south, north);
+  // GMT writes gmt.history into GMT_TMPDIR (else the working directory): a
+  // temporary folder, removed afterwards.
+  const std::string tmp = (std::filesystem::temp_directory_path() / "eoir_gmt_XXXXXX").string();
+  std::vector<char> dir(tmp.begin(), tmp.end());
+  dir.push_back('\0');
+  if (!mkdtemp(dir.data())) throw std::runtime_error("mkdtemp " + tmp);
+  struct Remove {
+    std::string path;
+    ~Remove() {
+      std::error_code ec;
+      std::filesystem::remove_all(path, ec);
+    }
+  } remove{dir.data()};
+  char cmd[1024];
+  std::snprintf(cmd, sizeof cmd, "GMT_TMPDIR='%s' \"%s\" coast -R%.6f/%.6f/%.6f/%.6f -Dh -W -M 2>/dev/null", dir.data(),
+                EOIR_GMT_EXECUTABLE, west, east, south, north);
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd, "r"), pclose);
   if (!pipe) throw std::runtime_error(std::string("cannot run ") + cmd);
   std::vector<std::vector<LatLon>> lines;

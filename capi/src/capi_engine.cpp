@@ -12,17 +12,20 @@ using eoir::capi::need_size;
 using eoir::capi::str;
 using eoir::capi::with_engine;
 
-namespace {
-TimeScale scale_of(int32_t s, const char* field) {
+using eoir::capi::scale_of;
+using eoir::capi::time_of;
+
+namespace eoir::capi {
+TimeScale scale_of(int32_t s, const std::string& field) {
   if (s < EOIR_TIME_UTC || s > EOIR_TIME_TDB)
-    throw Error(Status::out_of_range, std::string(field) + ": unknown time scale " + std::to_string(s));
+    throw Error(Status::out_of_range, field + ": unknown time scale " + std::to_string(s));
   return static_cast<TimeScale>(s);
 }
-EngineTime time_of(const eoir_time* t, const char* field) {
-  need(t, field);
-  return EngineTime::from(JulianDate{scale_of(t->scale, (std::string(field) + ".scale").c_str()), t->jd1, t->jd2});
+EngineTime time_of(const eoir_time* t, const std::string& field) {
+  need(t, field.c_str());
+  return EngineTime::from(JulianDate{scale_of(t->scale, field + ".scale"), t->jd1, t->jd2}, field);
 }
-}  // namespace
+}  // namespace eoir::capi
 
 extern "C" {
 

@@ -68,6 +68,11 @@ inline std::string str(const char* s, const char* field) {
   need(s, field);
   return s;
 }
+// A time scale of eoir.h; throws out_of_range naming `field` if unknown.
+TimeScale scale_of(int32_t scale, const std::string& field);
+// The engine time of *t; throws naming `field` ("time.jd1", "times[2].scale")
+// if t is NULL, of an unknown scale or outside the accepted dates (eoir.h).
+EngineTime time_of(const eoir_time* t, const std::string& field);
 // The host's callbacks (eoir_plugin_entry) as engine options.
 void attach_host_services(EngineOptions& options);
 

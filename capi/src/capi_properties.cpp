@@ -56,7 +56,8 @@ EOIR_API eoir_status eoir_set_integer(eoir_engine engine, const char* object, co
 EOIR_API eoir_status eoir_set_bool(eoir_engine engine, const char* object, const char* property, int32_t value) {
   if (value != 0 && value != 1)
     return guarded([&] {
-      throw Error(Status::out_of_range, "value: a bool is 0 or 1, got " + std::to_string(value));
+      throw Error(Status::out_of_range,
+                  (property ? property : "value") + std::string(": a bool is 0 or 1, got ") + std::to_string(value));
     });
   return set(engine, object, property, Value(value != 0));
 }
@@ -71,7 +72,8 @@ EOIR_API eoir_status eoir_set_array(eoir_engine engine, const char* object, cons
   if ((count > 0 && !values) || count > max_array)
     return guarded([&] {
       need(values, "values");
-      throw Error(Status::limit_exceeded, "count: at most " + std::to_string(max_array) + " values, got " +
+      throw Error(Status::limit_exceeded, (property ? property : "values") + std::string(": at most ") +
+                                              std::to_string(max_array) + " values, got a count of " +
                                               std::to_string(count));
     });
   return set(engine, object, property, Value(std::vector<double>(values, values + count)));

@@ -7,6 +7,9 @@ using eoir::capi::need;
 using eoir::capi::str;
 
 namespace {
+// Times of one eoir_provider_series call (eoir.h): 46 days at 1 s.
+constexpr size_t max_series_times = size_t{1} << 22;
+
 const std::vector<metrics::GroupSpec>& groups() { return metrics::provider_groups(); }
 const metrics::GroupSpec& group_named(const std::string& name) { return metrics::provider_group(name); }
 
@@ -94,14 +97,12 @@ EOIR_API eoir_status eoir_provider_series(eoir_engine engine, const char* group,
       need(times, "times");
       need(values_out, "values_out");
     }
+    if (count > max_series_times)
+      throw Error(Status::limit_exceeded, "count: at most " + std::to_string(max_series_times) + " times, got " +
+                                              std::to_string(count));
     std::vector<EngineTime> t;
     t.reserve(count);
-    for (size_t i = 0; i < count; ++i) {
-      const std::string field = "times[" + std::to_string(i) + "]";
-      if (times[i].scale < EOIR_TIME_UTC || times[i].scale > EOIR_TIME_TDB)
-        throw Error(Status::out_of_range, field + ".scale: unknown time scale " + std::to_string(times[i].scale));
-      t.push_back(EngineTime::from(JulianDate{static_cast<TimeScale>(times[i].scale), times[i].jd1, times[i].jd2}));
-    }
+    for (size_t i = 0; i < count; ++i) t.push_back(capi::time_of(&times[i], "times[" + std::to_string(i) + "]"));
     const std::vector<double> v =
         e.provider_series(str(group, "group"), str(element, "element"), str(sensor, "sensor"), target ? target : "", t);
     std::copy(v.begin(), v.end(), values_out);

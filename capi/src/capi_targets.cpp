@@ -18,11 +18,7 @@ EOIR_API eoir_status eoir_snr_constraint(eoir_engine engine, const char* sensor,
   return with_engine(engine, [&](Engine& e) {
     need(snr_out, "snr_out");
     const std::string s = str(sensor, "sensor"), t = str(target, "target");
-    if (time) {
-      if (time->scale < EOIR_TIME_UTC || time->scale > EOIR_TIME_TDB)
-        throw Error(Status::out_of_range, "time.scale: unknown time scale " + std::to_string(time->scale));
-      e.set_time(EngineTime::from(JulianDate{static_cast<TimeScale>(time->scale), time->jd1, time->jd2}));
-    }
+    if (time) e.set_time(capi::time_of(time, "time"));
     *snr_out = e.target_metrics(s, t).snr;
   });
 }

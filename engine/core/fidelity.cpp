@@ -41,8 +41,8 @@ const std::vector<Spec>& fidelity_properties() {
                                    [](F& f) -> auto& { return f.central_body_patch_size_m; }, Range{0, 1e8, true}, true));
     t.push_back(number_property<F>("object_patch_divisions", "",
                                    "Default patch edge of other objects: their largest part's diameter divided by "
-                                   "this",
-                                   [](F& f) -> auto& { return f.object_patch_divisions; }, Range{0, 1e4, true}, true));
+                                   "this (at least 1: a patch no larger than the object)",
+                                   [](F& f) -> auto& { return f.object_patch_divisions; }, Range{1, 1e4}, true));
     t.push_back(integer_property<F>("temperature_table_size", "count",
                                     "Entries of the L(T) table of smooth shading where the temperature varies",
                                     [](F& f) -> auto& { return f.temperature_table_size; }, Range{2, 1 << 20}, true));

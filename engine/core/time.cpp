@@ -12,19 +12,19 @@ namespace eoir {
 namespace {
 constexpr double j2000_jd = 2451545.0;
 
-void check(int erfa_status, const char* what) {
-  if (erfa_status < 0) throw Error(Status::out_of_range, std::string("time: ") + what + " failed (date out of range)");
+void check(int erfa_status, const char* what, const std::string& field = "time") {
+  if (erfa_status < 0) throw Error(Status::out_of_range, field + ": " + what + " failed (date out of range)");
 }
 
 // TT two-part JD from any scale.
-void to_tt(const JulianDate& d, double& tt1, double& tt2) {
+void to_tt(const JulianDate& d, double& tt1, double& tt2, const std::string& field) {
   double a1 = 0, a2 = 0;
   switch (d.scale) {
     case TimeScale::tt: tt1 = d.jd1; tt2 = d.jd2; return;
-    case TimeScale::tai: check(eraTaitt(d.jd1, d.jd2, &tt1, &tt2), "TAI to TT"); return;
+    case TimeScale::tai: check(eraTaitt(d.jd1, d.jd2, &tt1, &tt2), "TAI to TT", field); return;
     case TimeScale::utc:
-      check(eraUtctai(d.jd1, d.jd2, &a1, &a2), "UTC to TAI");
-      check(eraTaitt(a1, a2, &tt1, &tt2), "TAI to TT");
+      check(eraUtctai(d.jd1, d.jd2, &a1, &a2), "UTC to TAI", field);
+      check(eraTaitt(a1, a2, &tt1, &tt2), "TAI to TT", field);
       return;
     case TimeScale::tdb:
       // TDB-TT is below 2 ms; one fixed-point pass with the geocentric model.
@@ -32,25 +32,25 @@ void to_tt(const JulianDate& d, double& tt1, double& tt2) {
       tt2 = d.jd2 - eraDtdb(d.jd1, d.jd2, 0.0, 0.0, 0.0, 0.0) / 86400.0;
       return;
   }
-  throw Error(Status::out_of_range, "time.scale: unknown time scale");
+  throw Error(Status::out_of_range, field + ".scale: unknown time scale");
 }
 }  // namespace
 
-EngineTime EngineTime::from(const JulianDate& date) {
-  require_finite(date.jd1, "time.jd1");
-  require_finite(date.jd2, "time.jd2");
+EngineTime EngineTime::from(const JulianDate& date, const std::string& field) {
   // Each part at most 1e7 days: every split of a date in the accepted range
   // (JD + 0, 2400000.5 + MJD, 0 + JD) fits, and the two parts cannot cancel
   // each other's precision away (1e308 - 1e308).
-  for (const auto& [part, name] : {std::pair{date.jd1, "time.jd1"}, std::pair{date.jd2, "time.jd2"}})
-    if (std::fabs(part) > 1.0e7) {
+  for (const auto& [part, name] : {std::pair{date.jd1, field + ".jd1"}, std::pair{date.jd2, field + ".jd2"}}) {
+    require_finite(part, name);
+    if (std::fabs(part) > max_julian_date_part) {
       char text[160];
-      std::snprintf(text, sizeof text, "%s: %.10g days: each part of a two-part Julian date must be within +/-1e7", name,
-                    part);
-      throw Error(Status::out_of_range, text);
+      std::snprintf(text, sizeof text, ": %.10g days: each part of a two-part Julian date must be within +/-%.0e", part,
+                    max_julian_date_part);
+      throw Error(Status::out_of_range, name + text);
     }
+  }
   double tt1 = 0, tt2 = 0;
-  to_tt(date, tt1, tt2);
+  to_tt(date, tt1, tt2, field);
   EngineTime t;
   // Split into whole days since J2000.0 and a fraction, keeping precision.
   const double d1 = tt1 - j2000_jd;
@@ -59,7 +59,7 @@ EngineTime EngineTime::from(const JulianDate& date) {
   t.days_ = whole1 + whole2;
   t.fraction_ = (d1 - whole1) + (tt2 - whole2);
   t.normalise();
-  t.check_range("time.jd1 + time.jd2");
+  t.check_range(field + ".jd1 + " + field + ".jd2");
   return t;
 }
 
@@ -83,14 +83,14 @@ void EngineTime::normalise() {
   fraction_ -= carry;
 }
 
-void EngineTime::check_range(const char* field) const {
+void EngineTime::check_range(const std::string& field) const {
   const double days = days_ + fraction_;
   if (days >= min_tt_days_since_j2000 && days <= max_tt_days_since_j2000) return;
   char text[256];
   std::snprintf(text, sizeof text,
                 "%s: TT JD %.10g is outside the dates the engine accepts, 1000-01-01 to 3000-01-01 TT (JD %.1f to "
                 "%.1f, where ERFA's planetary ephemerides are valid)",
-                field, j2000_jd + days, j2000_jd + min_tt_days_since_j2000, j2000_jd + max_tt_days_since_j2000);
+                field.c_str(), j2000_jd + days, j2000_jd + min_tt_days_since_j2000, j2000_jd + max_tt_days_since_j2000);
   throw Error(Status::out_of_range, text);
 }
 
@@ -123,7 +123,10 @@ EngineTime EngineTime::plus_seconds(double seconds) const {
   t.days_ += whole_days;
   t.fraction_ += (seconds - whole_days * 86400.0) / 86400.0;
   t.normalise();
-  t.check_range("seconds");
+  // Derived times (light time, the integration window) may leave the
+  // accepted range; they only need to stay where the split is exact.
+  if (!(std::fabs(t.days_) <= max_julian_date_part))
+    throw Error(Status::out_of_range, "seconds: " + std::to_string(seconds) + " s leaves the span of two-part dates");
   return t;
 }
 

@@ -22,13 +22,17 @@ struct JulianDate {
 // has no leap seconds before then).
 constexpr double min_tt_days_since_j2000 = 2086302.5 - 2451545.0;
 constexpr double max_tt_days_since_j2000 = 2816787.5 - 2451545.0;
+// Each part of a two-part Julian date, in days.
+constexpr double max_julian_date_part = 1.0e7;
 
 class EngineTime {
  public:
   EngineTime() = default;
-  // From any scale; throws eoir::Error(out_of_range) for non-finite parts,
-  // dates ERFA cannot convert and dates outside the accepted range above.
-  static EngineTime from(const JulianDate& date);
+  // From any scale; throws eoir::Error(out_of_range) naming `field` (e.g.
+  // "time.jd1", "times[3].jd2") for non-finite parts, parts beyond
+  // max_julian_date_part, dates ERFA cannot convert and dates outside the
+  // accepted range above.
+  static EngineTime from(const JulianDate& date, const std::string& field = "time");
   static EngineTime from_tt_days(double days_since_j2000, double fraction_of_day);
   JulianDate to(TimeScale scale) const;
   // Whole TT days since J2000.0 and fraction of a day in [0, 1).
@@ -36,14 +40,16 @@ class EngineTime {
   double fraction() const { return fraction_; }
   // Seconds from `other` to this (exact to well below a microsecond).
   double seconds_since(const EngineTime& other) const;
-  // Throws out_of_range if the result leaves the accepted range.
+  // Throws out_of_range for non-finite seconds or a result beyond
+  // max_julian_date_part from J2000.0 (derived times may leave the accepted
+  // range: light times, integration windows).
   EngineTime plus_seconds(double seconds) const;
   bool operator==(const EngineTime& o) const { return days_ == o.days_ && fraction_ == o.fraction_; }
 
  private:
   void normalise();
   // Throws out_of_range naming `field` outside the accepted range.
-  void check_range(const char* field) const;
+  void check_range(const std::string& field) const;
   double days_ = 0.0;
   double fraction_ = 0.0;
 };

@@ -16,6 +16,7 @@
 //  - none: no patches.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -188,7 +189,7 @@ std::int32_t frustum_cell(const std::vector<std::int32_t>& grid, const ShapeGeom
 }  // namespace
 
 Tessellation tessellate(const std::vector<ShapePart>& parts, double target_patch_size_m) {
-  require_positive(target_patch_size_m, "target_patch_size_m");
+  require_positive(target_patch_size_m, "patch_size_m");
   Tessellation t;
   t.target_patch_size_m = target_patch_size_m;
   t.grid.resize(parts.size());
@@ -196,9 +197,14 @@ Tessellation tessellate(const std::vector<ShapePart>& parts, double target_patch
     const auto part = static_cast<std::int32_t>(k);
     const ShapeGeom& g = parts[k].geom;
     const double estimate = shape_surface_area_m2(g) / (target_patch_size_m * target_patch_size_m);
-    if (estimate > kMaxPatchesPerPart)
-      throw Error(Status::limit_exceeded, "target_patch_size_m: " + std::to_string(target_patch_size_m) +
-                                              " m gives too many patches for part " + std::to_string(k));
+    if (!(estimate <= kMaxPatchesPerPart)) {
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    "patch_size_m: a patch edge of %g m gives about %.3g patches on part %zu, at most %.0e: raise "
+                    "patch_size_m (or the sensor's central_body_patch_size_m / object_patch_divisions)",
+                    target_patch_size_m, estimate, k, kMaxPatchesPerPart);
+      throw Error(Status::limit_exceeded, text);
+    }
     t.first_patch.push_back(static_cast<std::int32_t>(t.patches.size()));
     auto& grid = t.grid[k];
     const double target = target_patch_size_m;

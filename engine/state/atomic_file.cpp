@@ -139,36 +139,4 @@ void write_file_atomically(const std::string& path, const std::string& contents)
   }
 }
 
-std::string read_file(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) fail("open", path, errno);
-  struct stat st {};
-  if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
-    const int err = S_ISDIR(st.st_mode) ? EISDIR : errno;
-    ::close(fd);
-    fail("read", path, err);
-  }
-  const auto too_large = [&] {
-    ::close(fd);
-    throw Error(Status::corrupt_file, "file: '" + path + "' is larger than " + std::to_string(max_file_bytes >> 20) +
-                                          " MiB, the limit of state and sensor files");
-  };
-  if (S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > max_file_bytes) too_large();
-  std::string out;
-  char buf[65536];
-  for (;;) {
-    const ssize_t n = ::read(fd, buf, sizeof buf);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      const int err = errno;
-      ::close(fd);
-      fail("read", path, err);
-    }
-    if (n == 0) break;
-    if (out.size() + static_cast<std::size_t>(n) > max_file_bytes) too_large();
-    out.append(buf, static_cast<std::size_t>(n));
-  }
-  ::close(fd);
-  return out;
-}
 }  // namespace eoir::state

@@ -1,5 +1,5 @@
-// Whole-file reads and atomic writes: write a temporary file beside the
-// target, flush it to disk, then rename over the target. A crash or error at
+// Atomic writes: write a temporary file beside the target, flush it to disk,
+// then rename over the target. A crash or error at
 // any point leaves the old file intact (house rule 5).
 //
 // Writes keep what the user set up: a symbolic link is written through (its
@@ -17,14 +17,7 @@
 
 namespace eoir::state {
 
-// Largest state or sensor file read: 64 MiB (a state of every object the
-// limits allow is under 1 MiB; /dev/zero is refused instead of read forever).
-constexpr std::size_t max_file_bytes = std::size_t{64} << 20;
-
 // Throws eoir::Error(io) naming the path and the system error.
 void write_file_atomically(const std::string& path, const std::string& contents);
-// Throws eoir::Error(io) if the file cannot be read, Error(corrupt_file)
-// if it is larger than max_file_bytes.
-std::string read_file(const std::string& path);
 
 }  // namespace eoir::state

@@ -6,7 +6,9 @@
 
 #include "core/error.hpp"
 #include "universe/sensor_properties.hpp"
+#include "core/read_file.hpp"
 #include "state/atomic_file.hpp"
+#include "universe/json_document.hpp"
 #include "universe/object_motion.hpp"
 #include "universe/object_properties.hpp"
 
@@ -129,83 +131,17 @@ ObjectKind kind_from(const std::string& s, const std::string& where) {
 }  // namespace
 
 namespace {
-// One streaming pass before the document is built: refuses nesting deeper
-// than max_depth, a key given twice in one object and numbers beyond the
-// range of a double (1e999), naming the JSON path of the value.
-class Guard : public nlohmann::json_sax<json> {
- public:
-  static constexpr std::size_t max_depth = 64;
-  std::string error;
-  bool null() override { return next(); }
-  bool boolean(bool) override { return next(); }
-  bool number_integer(number_integer_t) override { return next(); }
-  bool number_unsigned(number_unsigned_t) override { return next(); }
-  bool number_float(number_float_t, const string_t&) override { return next(); }
-  bool string(string_t&) override { return next(); }
-  bool binary(binary_t&) override { return next(); }
-  bool start_object(std::size_t) override { return open(true); }
-  bool start_array(std::size_t) override { return open(false); }
-  bool end_object() override { return close(); }
-  bool end_array() override { return close(); }
-  bool key(string_t& k) override {
-    levels_.back().key = k;
-    if (levels_.back().keys.insert(k).second) return true;
-    error = where() + ": duplicate key";
-    return false;
-  }
-  bool parse_error(std::size_t at, const std::string& token, const nlohmann::json::exception& e) override {
-    if (e.id == 406) {  // number overflow: the value about to be read
-      if (!levels_.empty() && !levels_.back().object) ++levels_.back().count;
-      error = where() + ": number out of range (" + token + ")";
-    } else {
-      error = "not valid JSON (truncated or corrupt) at byte " + std::to_string(at) + ": " + e.what();
-    }
-    return false;
-  }
+// Largest state or sensor file read: 64 MiB (a state of every object the
+// limits allow is under 1 MiB; /dev/zero is refused instead of read forever).
+constexpr std::size_t max_file_bytes = std::size_t{64} << 20;
 
- private:
-  struct Level {
-    bool object;
-    std::set<std::string> keys;
-    std::string key;
-    std::size_t count = 0;
-  };
-  bool next() {
-    if (!levels_.empty() && !levels_.back().object) ++levels_.back().count;
-    return true;
-  }
-  bool open(bool object) {
-    next();
-    if (levels_.size() >= max_depth) {
-      error = where() + ": nested deeper than " + std::to_string(max_depth) + " arrays/objects";
-      return false;
-    }
-    levels_.push_back(Level{object, {}, {}, 0});
-    return true;
-  }
-  bool close() {
-    levels_.pop_back();
-    return true;
-  }
-  std::string where() const {
-    std::string p;
-    for (const Level& l : levels_)
-      p += l.object ? (p.empty() ? "" : ".") + l.key : "[" + std::to_string(l.count ? l.count - 1 : 0) + "]";
-    return p.empty() ? "(document)" : p;
-  }
-  std::vector<Level> levels_;
-};
+std::string read_state_file(const std::string& path) {
+  return read_file(path, max_file_bytes, "state and sensor files");
+}
 }  // namespace
 
 json parse_document(const std::string& text, const std::string& path) {
-  Guard guard;
-  if (!json::sax_parse(text, &guard, json::input_format_t::json, true) || !guard.error.empty())
-    throw Error(Status::corrupt_file, "file '" + path + "': " + (guard.error.empty() ? "not valid JSON" : guard.error));
-  try {
-    return json::parse(text);
-  } catch (const json::exception& e) {
-    throw Error(Status::corrupt_file, "file: '" + path + "' is not valid JSON (truncated or corrupt): " + e.what());
-  }
+  return universe::parse_json_document(text, "file '" + path + "'");
 }
 
 json engine_to_json(const Engine& engine) {
@@ -352,7 +288,7 @@ void save_engine(const Engine& engine, const std::string& path) {
 }
 
 std::unique_ptr<Engine> load_engine(const std::string& path, const EngineOptions& options) {
-  return engine_from_json(parse_document(read_file(path), path), options);
+  return engine_from_json(parse_document(read_state_file(path), path), options);
 }
 
 void save_sensor(const Object& sensor, const std::string& path) {
@@ -360,7 +296,7 @@ void save_sensor(const Object& sensor, const std::string& path) {
 }
 
 sensor::SensorParameters load_sensor(const std::string& path) {
-  return sensor_from_json(parse_document(read_file(path), path));
+  return sensor_from_json(parse_document(read_state_file(path), path));
 }
 
 }  // namespace eoir::state

@@ -23,8 +23,9 @@ nlohmann::json sensor_to_json(const universe::Object& sensor);
 // Returns the parameters the file describes (validated, consistent).
 sensor::SensorParameters sensor_from_json(const nlohmann::json& doc);
 
-// Parse text as JSON; a syntax error or truncation is corrupt_file naming the
-// byte offset.
+// Parse text as JSON (universe/json_document.hpp); a syntax error,
+// truncation, duplicate key, deep nesting or overflow is corrupt_file naming
+// the file and the JSON path.
 nlohmann::json parse_document(const std::string& text, const std::string& path);
 
 void save_engine(const Engine& engine, const std::string& path);

@@ -4,6 +4,9 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/value.hpp"
+#include "universe/json_document.hpp"
+#include "universe/object_bounds.hpp"
 
 namespace eoir::universe {
 namespace {
@@ -46,6 +49,9 @@ void flatten(const json& parts, const std::string& where, const Eigen::Vector3d&
     Eigen::Vector3d local_offset = Eigen::Vector3d::Zero();
     if (p.contains("offset_m")) {
       const auto o = numbers(p["offset_m"], at + ".offset_m", 3);
+      for (std::size_t k = 0; k < 3; ++k)
+        check_range(o[k], Range{-object_bounds::max_length_m, object_bounds::max_length_m},
+                    at + ".offset_m[" + std::to_string(k) + "]", "m");
       local_offset = Eigen::Vector3d(o[0], o[1], o[2]);
     }
     Eigen::Quaterniond local = Eigen::Quaterniond::Identity();
@@ -65,13 +71,12 @@ void flatten(const json& parts, const std::string& where, const Eigen::Vector3d&
     if (p.contains("temperature_K")) {
       if (!p["temperature_K"].is_number()) bad(at + ".temperature_K", "expected a number");
       t = p["temperature_K"].get<double>();
-      require_non_negative(*t, at + ".temperature_K");
+      check_range(*t, Range{0, object_bounds::max_temperature_K}, at + ".temperature_K", "K");
     }
     if (p.contains("reflectance")) {
       if (!p["reflectance"].is_number()) bad(at + ".reflectance", "expected a number");
       r = p["reflectance"].get<double>();
-      require_finite(*r, at + ".reflectance");
-      if (*r < 0 || *r > 1) bad(at + ".reflectance", "must be in [0, 1]");
+      check_range(*r, Range{0, 1}, at + ".reflectance");
     }
     // Compose: the part's frame inside its parent, inside the object.
     const Eigen::Vector3d body_offset = offset + orientation * local_offset;
@@ -95,12 +100,7 @@ void flatten(const json& parts, const std::string& where, const Eigen::Vector3d&
 }  // namespace
 
 std::vector<ShapePart> parse_composite(const std::string& text, const std::string& field) {
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    bad(field, std::string("not valid JSON: ") + e.what());
-  }
+  const json doc = parse_json_document(text, field, Status::out_of_range);
   std::vector<ShapePart> out;
   flatten(doc, field, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity(), std::nullopt, std::nullopt, std::nullopt, 1,
           out);

@@ -4,7 +4,9 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/value.hpp"
 #include "universe/central_bodies.hpp"
+#include "universe/object_bounds.hpp"
 
 namespace eoir::universe {
 
@@ -12,8 +14,19 @@ void push_state(Object& object, const EngineTime& epoch, int frame, const double
                 const double velocity[3], const double q[4], const double angular_velocity[3]) {
   if (object.kind == ObjectKind::central_body || object.kind == ObjectKind::star_field)
     throw Error(Status::not_allowed, "state: '" + object.name + "' moves on its own ephemeris and takes no state");
-  for (int i = 0; i < 3; ++i) require_finite(position[i], "position[" + std::to_string(i) + "]");
+  namespace b = object_bounds;
+  const Range metres{-b::max_position_m, b::max_position_m};
+  for (int i = 0; i < 3; ++i) {
+    const std::string field = "position[" + std::to_string(i) + "]";
+    if (frame == 2 && i == 0) check_range(position[0], Range{-90, 90}, field + " (latitude)", "deg");
+    else if (frame == 2 && i == 1)
+      check_range(position[1], Range{-b::max_abs_longitude_deg, b::max_abs_longitude_deg}, field + " (longitude)", "deg");
+    else check_range(position[i], metres, field + (frame == 2 ? " (height)" : ""), "m");
+  }
   for (int i = 0; i < 3; ++i) require_finite(velocity[i], "velocity[" + std::to_string(i) + "]");
+  const double speed = std::sqrt(velocity[0] * velocity[0] + velocity[1] * velocity[1] + velocity[2] * velocity[2]);
+  if (!(speed < b::max_speed_m_s))
+    throw Error(Status::out_of_range, "velocity: must be below the speed of light, |v| = " + std::to_string(speed) + " m/s");
   for (int i = 0; i < 4; ++i) require_finite(q[i], "attitude[" + std::to_string(i) + "]");
   frames::Vec3 omega = frames::Vec3::Zero();
   if (angular_velocity) {
@@ -21,8 +34,8 @@ void push_state(Object& object, const EngineTime& epoch, int frame, const double
       require_finite(angular_velocity[i], "angular_velocity[" + std::to_string(i) + "]");
       omega[i] = angular_velocity[i];
     }
-    if (!(omega.norm() <= max_angular_rate_rad_s))
-      throw Error(Status::out_of_range, "angular_velocity: at most " + std::to_string(max_angular_rate_rad_s) +
+    if (!(omega.norm() <= b::max_angular_rate_rad_s))
+      throw Error(Status::out_of_range, "angular_velocity: at most " + std::to_string(b::max_angular_rate_rad_s) +
                                             " rad/s, got " + std::to_string(omega.norm()));
   }
   const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
@@ -45,9 +58,6 @@ void push_state(Object& object, const EngineTime& epoch, int frame, const double
       s.position_m = frames::Vec3(position[0], position[1], position[2]);
       break;
     case 2:
-      if (position[0] < -90.0 || position[0] > 90.0)
-        throw Error(Status::out_of_range, "position[0] (latitude): must be in [-90, 90] deg, got " +
-                                              std::to_string(position[0]));
       s.frame = StateFrame::earth_fixed;
       s.position_m = frames::geodetic_to_earth_fixed(position[0], position[1], position[2]);
       break;

@@ -9,8 +9,6 @@
 
 namespace eoir::universe {
 
-constexpr double max_angular_rate_rad_s = 1.0e3;
-
 struct Kinematics {
   frames::Vec3 position_m;    // geocentric J2000
   frames::Vec3 velocity_m_s;  // J2000
@@ -23,8 +21,8 @@ Kinematics kinematics_at(const Universe& universe, const Object& object, const E
 
 // Validates and stores a state pushed by the host. frame: 0 J2000, 1
 // Earth-fixed, 2 geodetic (position = lat deg, lon deg, height m); the
-// angular velocity (NULL = none) is about the frame's axes, at most
-// max_angular_rate_rad_s. Throws eoir::Error naming the field (position[1],
+// angular velocity (NULL = none) is about the frame's axes. Positions,
+// speeds and rates within object_bounds. Throws eoir::Error naming the field (position[1],
 // attitude, angular_velocity[2], frame, ...).
 void push_state(Object& object, const EngineTime& epoch, int frame, const double position[3],
                 const double velocity[3], const double attitude_wxyz[4],

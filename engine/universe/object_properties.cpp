@@ -5,16 +5,17 @@
 #include "core/error.hpp"
 #include "core/limits.hpp"
 #include "universe/composite.hpp"
+#include "universe/object_bounds.hpp"
 #include "universe/sensor_properties.hpp"
 
 namespace eoir::universe {
 namespace {
 using Spec = PropertySpec<Object>;
 
-// Physical bounds: every value a property takes stays finite through the
-// whole model (Planck to 1e6 K, geometry in double relative to the observer).
-constexpr double max_temperature_K = 1.0e6;
-constexpr double max_length_m = 1.0e12;
+// Physical bounds (object_bounds.hpp): every value a property takes stays
+// finite through the whole model.
+constexpr double max_temperature_K = object_bounds::max_temperature_K;
+constexpr double max_length_m = object_bounds::max_length_m;
 
 void refuse_central_body(const Object& o, const char* field) {
   if (o.kind == ObjectKind::central_body)
@@ -52,11 +53,9 @@ std::vector<Spec> body_properties(bool missile) {
                      refuse_central_body(o, "dimensions_m");
                      const auto& a = array_of(v, "dimensions_m");
                      check_dimensions(o.body.shape, a, "dimensions_m");
-                     for (std::size_t i = 0; i < a.size(); ++i)
-                       check_range(a[i], Range{0, max_length_m, true}, "dimensions_m[" + std::to_string(i) + "]", "m");
                      o.body.dimensions_m = a;
                    },
-                   Range{0, max_length_m, true}});
+                   Range{object_bounds::min_length_m, max_length_m}});
   t.push_back(Spec{"material", ValueType::string, "",
                    "Surface material (spec 4.1.4.1, 4.3.3-4.3.5, Appendix A): gray_body (flat SRF = reflectance, "
                    "Lambertian) or a material of the data folder or the user's (eoir_material_add)",

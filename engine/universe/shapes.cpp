@@ -1,6 +1,8 @@
 #include "universe/shapes.hpp"
 
 #include "core/error.hpp"
+#include "core/value.hpp"
+#include "universe/object_bounds.hpp"
 
 namespace eoir::universe {
 
@@ -36,7 +38,8 @@ void check_dimensions(ShapeKind kind, const std::vector<double>& dims, const std
                                           std::to_string(shape.dimensions.size()) + " dimensions, got " +
                                           std::to_string(dims.size()));
   for (size_t i = 0; i < dims.size(); ++i)
-    require_positive(dims[i], field + "[" + std::to_string(i) + "] (" + shape.dimensions[i] + ")");
+    check_range(dims[i], Range{object_bounds::min_length_m, object_bounds::max_length_m},
+                field + "[" + std::to_string(i) + "] (" + shape.dimensions[i] + ")", "m");
 }
 
 }  // namespace eoir::universe

@@ -23,7 +23,8 @@ const std::vector<ShapeInfo>& shapes();
 const ShapeInfo& shape_info(ShapeKind kind);
 // Throws eoir::Error(unknown_name) naming `field` with the list of shapes.
 ShapeKind parse_shape(const std::string& name, const std::string& field);
-// Throws eoir::Error(out_of_range) unless dims fits the shape (count, > 0, finite).
+// Throws eoir::Error(out_of_range) unless dims fits the shape (count, each
+// within object_bounds' lengths).
 void check_dimensions(ShapeKind kind, const std::vector<double>& dims, const std::string& field);
 
 // One simple shape placed in its object's body frame (a composite's part, or

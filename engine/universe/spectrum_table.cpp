@@ -7,6 +7,7 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "core/value.hpp"
 
 namespace eoir::universe {
 
@@ -45,8 +46,10 @@ SpectrumTable SpectrumTable::load(const std::string& data_dir) {
 void SpectrumTable::add(const NamedSpectrum& spectrum) {
   if (spectrum.name.empty()) throw Error(Status::out_of_range, "spectrum.name: must not be empty");
   if (spectrum.name == sun_spectrum) throw Error(Status::not_allowed, "spectrum.name: 'sun' is the measured solar spectrum");
-  for (double v : spectrum.radiance_W_cm2_sr_um.values())
-    if (v < 0) throw Error(Status::out_of_range, "spectrum.radiance: must be >= 0");
+  const auto& values = spectrum.radiance_W_cm2_sr_um.values();
+  for (std::size_t i = 0; i < values.size(); ++i)
+    check_range(values[i], Range{0, max_spectral_radiance_W_cm2_sr_um},
+                spectrum.name + ": radiance_W_cm2_sr_um[" + std::to_string(i) + "]", "W/(cm^2 sr um)");
   for (auto& e : entries_)
     if (e.name == spectrum.name) {
       e = spectrum;

@@ -22,6 +22,10 @@ struct NamedSpectrum {
 };
 
 constexpr const char* sun_spectrum = "sun";
+// Largest tabulated spectral radiance, W/(cm^2 sr um): above a 1e6 K
+// blackbody at 0.28 um (1.4e8, object_bounds' hottest), so every image sum
+// stays finite.
+constexpr double max_spectral_radiance_W_cm2_sr_um = 1.0e10;
 
 class SpectrumTable {
  public:

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <iterator>
 #include <sstream>
 #include <unordered_map>
@@ -15,6 +14,7 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "core/read_file.hpp"
 
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
 #error "the binary star catalogue is little-endian; add byte swapping for this host"
@@ -35,6 +35,10 @@ constexpr std::uint32_t kFormatVersion = 1;
 constexpr std::size_t kFixedHeaderBytes = 56;
 constexpr std::size_t kRecordBytes = 48;
 constexpr std::uint32_t kNoName = 0xFFFFFFFFu;
+// Largest catalogue file read (binary or CSV): 256 MiB, three million stars
+// in CSV; the Hipparcos/Tycho file is 6 MB. /dev/zero is refused, not read
+// forever.
+constexpr std::size_t kMaxFileBytes = std::size_t{256} << 20;
 
 template <typename T>
 T read_le(const char* p) {
@@ -113,14 +117,8 @@ void StarCatalog::finish() {
 }
 
 StarCatalog StarCatalog::load_binary(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(Status::io, path + ": cannot open the star catalogue");
-  in.seekg(0, std::ios::end);
-  const auto file_bytes = static_cast<std::size_t>(in.tellg());
-  in.seekg(0, std::ios::beg);
-  std::vector<char> bytes(file_bytes);
-  if (file_bytes > 0 && !in.read(bytes.data(), static_cast<std::streamsize>(file_bytes)))
-    throw Error(Status::io, path + ": read failed");
+  const std::string bytes = read_file(path, kMaxFileBytes, "star catalogues");
+  const std::size_t file_bytes = bytes.size();
 
   if (file_bytes < kFixedHeaderBytes) corrupt(path, "header: file shorter than the 56-byte header");
   const char* p = bytes.data();
@@ -191,8 +189,7 @@ StarCatalog StarCatalog::load_binary(const std::string& path) {
 
 StarCatalog StarCatalog::load_csv(const std::string& path, double epoch_julian_year) {
   require_finite(epoch_julian_year, "star_catalogue.epoch_julian_year");
-  std::ifstream in(path);
-  if (!in) throw Error(Status::io, path + ": cannot open the star catalogue");
+  std::istringstream in(read_file(path, kMaxFileBytes, "star catalogues"));
 
   static const char* const kColumns[] = {"id",           "ra_deg",  "dec_deg", "pm_ra_mas_yr", "pm_dec_mas_yr",
                                          "parallax_mas", "v_mag",   "b_v"};
@@ -212,6 +209,7 @@ StarCatalog StarCatalog::load_csv(const std::string& path, double epoch_julian_y
     const std::string content = trim(line);
     if (content.empty() || content[0] == '#') continue;
     const std::string where = path + ":" + std::to_string(line_number) + ": ";
+    if (content.find('\0') != std::string::npos) throw Error(Status::corrupt_file, where + "line: a NUL byte (not text)");
     const auto fields = split_commas(content);
     if (!have_header) {
       header_fields = fields.size();

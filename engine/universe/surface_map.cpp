@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/read_file.hpp"
+#include "universe/json_document.hpp"
 
 namespace eoir::universe {
 namespace {
@@ -18,13 +20,7 @@ using nlohmann::json;
 }
 
 json read_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(Status::io, "map: cannot read '" + path + "'");
-  try {
-    return json::parse(in);
-  } catch (const json::exception& e) {
-    corrupt(path, std::string("not valid JSON: ") + e.what());
-  }
+  return parse_json_document(read_file(path, std::size_t{1} << 20, "map sidecar files"), path);
 }
 }  // namespace
 

@@ -160,11 +160,11 @@ const std::vector<CommandSpec>& commands() {
       {"properties",
        "usage: eoir properties KIND [--format table|json]\n"
        "\n"
-       "Every property of a kind of object, with its type, unit, default and meaning.\n"
-       "KIND: sensor, satellite, aircraft, ground_vehicle, missile, star_field,\n"
-       "central_body (the Earth's defaults) or a central body's name (Sun, Moon...).\n"
-       "Defaults are read from a fresh engine. Ranges are checked by the engine when a\n"
-       "value is set; C ABI 1.2 does not list them.\n",
+       "Every property of a kind of object, with its type, unit, default, range and\n"
+       "meaning. KIND: sensor, satellite, aircraft, ground_vehicle, missile,\n"
+       "star_field, central_body (the Earth's defaults) or a central body's name\n"
+       "(Sun, Moon...). Defaults are read from a fresh engine; ranges are the\n"
+       "engine's (eoir_property_info): a value outside one is refused when set.\n",
        {"--format"},
        {}},
       {"save-state",

@@ -3,6 +3,7 @@
 #define EOIR_TEST_CHECK_H
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "eoir/eoir.h"
@@ -54,6 +55,36 @@ static int check_count = 0;
               #actual, a_, e_, (double)(rel));                                                   \
     }                                                                                            \
   } while (0)
+
+/* Writes text to a new file; exits the test if it cannot. */
+static inline void write_text(const char* path, const char* text) {
+  FILE* f = fopen(path, "wb");
+  if (f == NULL) {
+    perror(path);
+    exit(2);
+  }
+  fputs(text, f);
+  fclose(f);
+}
+
+/* A state at rest at (x, y, z) of `frame`, identity attitude. */
+static inline eoir_state state_at(int32_t frame, double x, double y, double z) {
+  eoir_state s;
+  memset(&s, 0, sizeof s);
+  s.struct_size = sizeof s;
+  s.frame = frame;
+  s.position[0] = x;
+  s.position[1] = y;
+  s.position[2] = z;
+  s.attitude[0] = 1;
+  return s;
+}
+
+/* Pushes a J2000 state at rest, identity attitude. */
+static inline eoir_status put_j2000(eoir_engine e, const char* name, double x, double y, double z) {
+  const eoir_state s = state_at(EOIR_FRAME_J2000, x, y, z);
+  return eoir_object_set_state(e, name, NULL, &s);
+}
 
 #define CHECK_SUMMARY()                                                                  \
   (printf("%d checks, %d failed\n", check_count, check_failures), check_failures ? 1 : 0)

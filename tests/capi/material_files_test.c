@@ -6,7 +6,9 @@
  * eq. 1 out of range with EOIR_ERR_CORRUPT_FILE and a message naming the
  * field and the file; a missing file is EOIR_ERR_IO naming the path; an
  * unknown material name on an object is EOIR_ERR_UNKNOWN_NAME naming the
- * field and the name. A refused file adds nothing; a good one is used by
+ * field and the name. Missing arrays, truncated, empty, binary, deeply
+ * nested files and duplicated keys name the file and the JSON path (and
+ * line) where they fail; files over 16 MiB and devices are refused unread. A refused file adds nothing; a good one is used by
  * the render. */
 #define _XOPEN_SOURCE 700
 #include <stdlib.h>
@@ -47,22 +49,9 @@ static const char* lambert = "{\"k0\": 1.0, \"k1\": 0.0, \"alpha\": 1.0, \"beta\
 static const char* wl4 = "[0.28, 1.0, 10.0, 28.0]";
 static const char* r4 = "[0.5, 0.5, 0.5, 0.5]";
 
-static void set_state(eoir_engine e, const char* name, double x, double y, double z, const double q[4]) {
-  eoir_state s;
-  memset(&s, 0, sizeof s);
-  s.struct_size = sizeof s;
-  s.frame = EOIR_FRAME_J2000;
-  s.position[0] = x;
-  s.position[1] = y;
-  s.position[2] = z;
-  memcpy(s.attitude, q, sizeof s.attitude);
-  OK(eoir_object_set_state(e, name, NULL, &s));
-}
-
 int main(void) {
   eoir_engine e = NULL;
   eoir_time t;
-  const double identity[4] = {1, 0, 0, 0};
   double radiance_good = 0;
   size_t count = 0;
 
@@ -83,8 +72,8 @@ int main(void) {
   OK(eoir_set_bool(e, "Cam", "noise_enabled", 0));
   OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Sat"));
   OK(eoir_set_array(e, "Sat", "dimensions_m", (const double[]){100.0}, 1));
-  set_state(e, "Host", 5.0e7, 0, 0, identity);
-  set_state(e, "Sat", 5.0e7, 0, 1.0e4, identity);
+  OK(put_j2000(e, "Host", 5.0e7, 0, 0));
+  OK(put_j2000(e, "Sat", 5.0e7, 0, 1.0e4));
 
   /* A good file loads and the render uses it: emissivity 1 - 0.5. */
   OK(eoir_material_load(e, material("good.json", "test_gray_half", lambert, wl4, r4, "")));
@@ -158,6 +147,44 @@ int main(void) {
         EOIR_ERR_CORRUPT_FILE, "reflectence");
   FAILS(eoir_material_load(e, at("no_such_file.json")), EOIR_ERR_IO, "no_such_file.json");
 
+  /* Missing arrays, truncated, empty, duplicated keys, deep nesting, binary,
+   * huge files and devices (issue 11, item 8): refused naming the file and
+   * where it stops, without reading more than 16 MiB. */
+  FAILS(eoir_material_load(e, material("nowl.json", "bad6", lambert, "[0.28, 28.0]", "[0.5, 0.5]",
+                                       ", \"wavelength_um\": [1.0, 2.0]")),
+        EOIR_ERR_CORRUPT_FILE, "wavelength_um: duplicate key");
+  write_text(at("missing.json"), "{\"format\": \"eoir-material\", \"version\": 1, \"name\": \"bad6\", "
+                                 "\"sources\": [\"x\"], \"brdf\": {\"k0\": 1, \"k1\": 0, \"alpha\": 1, \"beta\": 1}, "
+                                 "\"reflectance\": [0.5, 0.5]}");
+  FAILS(eoir_material_load(e, at("missing.json")), EOIR_ERR_CORRUPT_FILE, "wavelength_um");
+  FAILS(eoir_material_load(e, at("missing.json")), EOIR_ERR_CORRUPT_FILE, "missing.json");
+  write_text(at("truncated.json"), "{\"format\": \"eoir-material\", \"version\": 1, \"name\": \"bad6\",\n"
+                                   " \"wavelength_um\": [0.28, 1.0, 1");
+  FAILS(eoir_material_load(e, at("truncated.json")), EOIR_ERR_CORRUPT_FILE, "wavelength_um[3]: not valid JSON");
+  FAILS(eoir_material_load(e, at("truncated.json")), EOIR_ERR_CORRUPT_FILE, "line 2");
+  FAILS(eoir_material_load(e, at("truncated.json")), EOIR_ERR_CORRUPT_FILE, "truncated.json");
+  write_text(at("empty.json"), "");
+  FAILS(eoir_material_load(e, at("empty.json")), EOIR_ERR_CORRUPT_FILE, "empty.json");
+  write_text(at("binary.json"), "\x7f" "ELF\x02\x01\x01");
+  FAILS(eoir_material_load(e, at("binary.json")), EOIR_ERR_CORRUPT_FILE, "not valid JSON");
+  {
+    char deep[2 * 100000 + 1];
+    memset(deep, '[', 100000);
+    memset(deep + 100000, ']', 100000);
+    deep[2 * 100000] = '\0';
+    write_text(at("deep.json"), deep);
+    FAILS(eoir_material_load(e, at("deep.json")), EOIR_ERR_CORRUPT_FILE, "nested deeper than 64");
+  }
+  {
+    /* a sparse 17 MiB file: refused by its size, not read */
+    FILE* f = fopen(at("huge.json"), "wb");
+    CHECK(f != NULL && fseek(f, 17L << 20, SEEK_SET) == 0 && fputc('}', f) != EOF);
+    if (f) fclose(f);
+    FAILS(eoir_material_load(e, at("huge.json")), EOIR_ERR_CORRUPT_FILE, "huge.json' is larger than 16 MiB");
+  }
+  FAILS(eoir_material_load(e, "/dev/zero"), EOIR_ERR_CORRUPT_FILE, "'/dev/zero' is larger than 16 MiB");
+  FAILS(eoir_material_load(e, dir), EOIR_ERR_IO, dir);
+
   /* None of the refused files added a material: naming one is an unknown
    * name, refused when set (the message names the field and the name, and
    * lists the known materials); so is a name that was never loaded, and the
@@ -183,5 +210,10 @@ int main(void) {
   }
 
   eoir_engine_destroy(e);
+  {
+    char cmd[4200];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    CHECK(system(cmd) == 0);
+  }
   return CHECK_SUMMARY();
 }

@@ -33,12 +33,6 @@ static size_t snapshot(eoir_engine e, const char* sensor, double* out, size_t ca
   return n;
 }
 
-static void write_text(const char* path, const char* text) {
-  FILE* f = fopen(path, "wb");
-  fputs(text, f);
-  fclose(f);
-}
-
 static char* read_text(const char* path) {
   FILE* f = fopen(path, "rb");
   long size;

@@ -26,16 +26,6 @@ static const char* at(const char* name) {
   return buf[k];
 }
 
-static void write_text(const char* path, const char* text) {
-  FILE* f = fopen(path, "wb");
-  if (f == NULL) {
-    perror(path);
-    exit(2);
-  }
-  fputs(text, f);
-  fclose(f);
-}
-
 static char* read_text(const char* path) {
   FILE* f = fopen(path, "rb");
   long n;

@@ -1,18 +1,6 @@
 /* C ABI: time scales, states in the three frames, and bad states. */
 #include "check.h"
 
-static eoir_state make_state(int32_t frame, double x, double y, double z) {
-  eoir_state s;
-  memset(&s, 0, sizeof s);
-  s.struct_size = sizeof s;
-  s.frame = frame;
-  s.position[0] = x;
-  s.position[1] = y;
-  s.position[2] = z;
-  s.attitude[0] = 1.0;
-  return s;
-}
-
 static void time_scales(void) {
   eoir_engine e = NULL;
   eoir_time t, back;
@@ -48,21 +36,21 @@ static void frames(void) {
   OK(eoir_engine_set_time(e, &t));
   OK(eoir_object_add(e, EOIR_KIND_AIRCRAFT, "Aircraft1"));
   FAILS(eoir_object_get_state(e, "Aircraft1", NULL), EOIR_ERR_NULL_ARGUMENT, "state");
-  out = make_state(EOIR_FRAME_J2000, 0, 0, 0);
+  out = state_at(EOIR_FRAME_J2000, 0, 0, 0);
   FAILS(eoir_object_get_state(e, "Aircraft1", &out), EOIR_ERR_NO_STATE, "Aircraft1");
   /* geodetic in, geodetic out (GeographicLib round trip) */
-  s = make_state(EOIR_FRAME_GEODETIC, 33.705, -118.294, 1600.0);
+  s = state_at(EOIR_FRAME_GEODETIC, 33.705, -118.294, 1600.0);
   OK(eoir_object_set_state(e, "Aircraft1", NULL, &s));
-  out = make_state(EOIR_FRAME_GEODETIC, 0, 0, 0);
+  out = state_at(EOIR_FRAME_GEODETIC, 0, 0, 0);
   OK(eoir_object_get_state(e, "Aircraft1", &out));
   NEAR_REL(out.position[0], 33.705, 1e-9);
   NEAR_REL(out.position[1], -118.294, 1e-9);
   NEAR_REL(out.position[2], 1600.0, 1e-6);
   /* J2000 radius equals Earth-fixed radius */
-  out = make_state(EOIR_FRAME_J2000, 0, 0, 0);
+  out = state_at(EOIR_FRAME_J2000, 0, 0, 0);
   OK(eoir_object_get_state(e, "Aircraft1", &out));
   {
-    eoir_state ef = make_state(EOIR_FRAME_EARTH_FIXED, 0, 0, 0);
+    eoir_state ef = state_at(EOIR_FRAME_EARTH_FIXED, 0, 0, 0);
     double rj, re;
     OK(eoir_object_get_state(e, "Aircraft1", &ef));
     rj = sqrt(out.position[0] * out.position[0] + out.position[1] * out.position[1] + out.position[2] * out.position[2]);
@@ -74,24 +62,24 @@ static void frames(void) {
              7.292115146706979e-5 * sqrt(ef.position[0] * ef.position[0] + ef.position[1] * ef.position[1]), 1e-9);
   }
   /* constant-velocity extrapolation in J2000 */
-  s = make_state(EOIR_FRAME_J2000, 7000e3, 0, 0);
+  s = state_at(EOIR_FRAME_J2000, 7000e3, 0, 0);
   s.velocity[1] = 7500.0;
   OK(eoir_object_set_state(e, "Aircraft1", NULL, &s));
   t.jd2 += 10.0 / 86400.0;
   OK(eoir_engine_set_time(e, &t));
-  out = make_state(EOIR_FRAME_J2000, 0, 0, 0);
+  out = state_at(EOIR_FRAME_J2000, 0, 0, 0);
   OK(eoir_object_get_state(e, "Aircraft1", &out));
   NEAR_REL(out.position[1], 75000.0, 1e-6);
   /* central bodies: the Moon about 356,000-407,000 km away; they refuse states */
   OK(eoir_object_add(e, EOIR_KIND_CENTRAL_BODY, "Moon"));
-  out = make_state(EOIR_FRAME_J2000, 0, 0, 0);
+  out = state_at(EOIR_FRAME_J2000, 0, 0, 0);
   OK(eoir_object_get_state(e, "Moon", &out));
   {
     double r = sqrt(out.position[0] * out.position[0] + out.position[1] * out.position[1] +
                     out.position[2] * out.position[2]);
     CHECK(r > 356e6 && r < 407e6);
   }
-  out = make_state(EOIR_FRAME_J2000, 0, 0, 0);
+  out = state_at(EOIR_FRAME_J2000, 0, 0, 0);
   OK(eoir_object_get_state(e, "Sun", &out));
   {
     double r = sqrt(out.position[0] * out.position[0] + out.position[1] * out.position[1] +
@@ -104,7 +92,7 @@ static void frames(void) {
 
 static void bad_states(void) {
   eoir_engine e = NULL;
-  eoir_state s = make_state(EOIR_FRAME_J2000, 7000e3, 0, 0);
+  eoir_state s = state_at(EOIR_FRAME_J2000, 7000e3, 0, 0);
   OK(eoir_engine_create(NULL, &e));
   OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Satellite1"));
   s.position[1] = 0.0 / 0.0;

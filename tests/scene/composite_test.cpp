@@ -83,5 +83,7 @@ TEST(Composite, BadPartsNameTheirPath) {
   refuse(R"([{"shape": "sphere", "dimensions_m": [1], "colour": "red"}])", EOIR_ERR_UNKNOWN_NAME, "composite[0].colour");
   refuse(R"([{"shape": "sphere", "dimensions_m": [1], "orientation_wxyz": [1, 1, 0, 0]}])", EOIR_ERR_OUT_OF_RANGE,
          "orientation_wxyz");
-  refuse("[{", EOIR_ERR_OUT_OF_RANGE, "composite: not valid JSON");
+  refuse("[{", EOIR_ERR_OUT_OF_RANGE, "composite: [0]: not valid JSON (truncated or corrupt)");
+  refuse(R"([{"shape": "sphere", "dimensions_m": [1e999]}])", EOIR_ERR_OUT_OF_RANGE,
+         "composite: [0].dimensions_m[0]: number out of range");
 }

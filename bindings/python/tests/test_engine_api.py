@@ -107,7 +107,7 @@ def test_properties_listing(table3):
     assert table3.property_type("Sensor", "nope") is None
     # Ranges, closed sets and fidelity flags (C ABI 1.3).
     fov = props["horizontal_fov_deg"]
-    assert fov["minimum"] == 0.0 and fov["minimum_open"] and fov["maximum"] == 179.9 and not fov["maximum_open"]
+    assert fov["minimum"] == 1e-6 and not fov["minimum_open"] and fov["maximum"] == 179.9 and not fov["maximum_open"]
     assert props["image_quality"]["choices"][:2] == ["diffraction_limited", "negligible"]
     assert props["samples_per_pixel"]["fidelity"] and not props["f_number"]["fidelity"]
     assert props["noise_enabled"]["minimum"] is None and props["noise_enabled"]["choices"] == []

@@ -212,7 +212,10 @@ typedef enum eoir_value_type {
 } eoir_value_type;
 
 /* Integers are accepted where numbers are expected, and whole numbers where
- * integers are; any other type mismatch is EOIR_ERR_TYPE_MISMATCH. */
+ * integers are; any other type mismatch is EOIR_ERR_TYPE_MISMATCH. A value
+ * outside the property's range (eoir_property_info), NaN or infinite, a bool
+ * other than 0 or 1 is EOIR_ERR_OUT_OF_RANGE naming the property; an array
+ * of more than 2^20 values is EOIR_ERR_LIMIT_EXCEEDED. */
 EOIR_API eoir_status eoir_set_number(eoir_engine engine, const char* object, const char* property, double value);
 EOIR_API eoir_status eoir_set_integer(eoir_engine engine, const char* object, const char* property, int64_t value);
 EOIR_API eoir_status eoir_set_bool(eoir_engine engine, const char* object, const char* property, int32_t value);
@@ -276,7 +279,8 @@ EOIR_API eoir_status eoir_provider_get(eoir_engine engine, const char* group, co
 EOIR_API eoir_status eoir_provider_get_curve(eoir_engine engine, const char* group, const char* element,
                                              const char* sensor, const char* target,
                                              double* x, double* y, size_t capacity, size_t* count_out);
-/* A scalar element at each of `count` times (1.3): values_out[i] at times[i].
+/* A scalar element at each of `count` times (1.3): values_out[i] at times[i]
+ * (at most 2^22 times, else EOIR_ERR_LIMIT_EXCEEDED naming count).
  * The engine time is left at the last time. Reports progress to the host and
  * stops with EOIR_ERR_CANCELLED when asked. */
 EOIR_API eoir_status eoir_provider_series(eoir_engine engine, const char* group, const char* element,

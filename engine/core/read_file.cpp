@@ -1,0 +1,62 @@
+#include "core/read_file.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
+#include "core/error.hpp"
+
+namespace eoir {
+namespace {
+// Closes the descriptor on every way out.
+struct Descriptor {
+  int fd;
+  ~Descriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+[[noreturn]] void fail(const std::string& what, const std::string& path, int err) {
+  throw Error(Status::io, "path: cannot " + what + " '" + path + "': " + std::strerror(err));
+}
+}  // namespace
+
+std::string read_file(const std::string& path, std::size_t max_bytes, const std::string& kind) {
+  const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  if (file.fd < 0) fail("open", path, errno);
+  struct stat st {};
+  if (::fstat(file.fd, &st) != 0) fail("read", path, errno);
+  if (S_ISDIR(st.st_mode)) fail("read", path, EISDIR);
+  const auto too_large = [&] {
+    throw Error(Status::corrupt_file, "file: '" + path + "' is larger than " + std::to_string(max_bytes >> 20) +
+                                          " MiB, the limit of " + kind);
+  };
+  if (S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > max_bytes) too_large();
+  // Read in place: a regular file into storage of its size (one allocation,
+  // no copies: the 6 MB star catalogue loads in milliseconds), anything else
+  // in growing chunks up to the cap.
+  std::string out(S_ISREG(st.st_mode) ? static_cast<std::size_t>(st.st_size) + 1 : std::size_t{65536}, '\0');
+  std::size_t size = 0;
+  for (;;) {
+    if (size == out.size()) {
+      if (size > max_bytes) too_large();
+      out.resize(std::min(2 * size, max_bytes + 1));
+    }
+    const ssize_t n = ::read(file.fd, &out[size], out.size() - size);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail("read", path, errno);
+    }
+    if (n == 0) break;
+    size += static_cast<std::size_t>(n);
+    if (size > max_bytes) too_large();
+  }
+  out.resize(size);
+  return out;
+}
+
+}  // namespace eoir

@@ -99,11 +99,12 @@ def test_point_fermin_within_one_cell_of_the_coast():
 
 def _gmt_reference(region, res):
     """GSHHG land mask at the L2 cell centres, computed afresh by GMT."""
+    # gmt and gmt-gshhg-high are installed by .ci/setup (the full resolution,
+    # gmt-gshhg-full, is optional: its test skips before calling this).
     gmt = shutil.which("gmt")
-    if not gmt:
-        pytest.skip("gmt not installed")
-    if not os.path.exists(f"/usr/share/gmt-gshhg/binned_GSHHS_{res}.nc"):
-        pytest.skip(f"GSHHG resolution {res} not installed")
+    assert gmt, "gmt missing: the Debian package gmt is installed by .ci/setup"
+    grid = f"/usr/share/gmt-gshhg/binned_GSHHS_{res}.nc"
+    assert os.path.exists(grid), f"{grid} missing: gmt-gshhg-high is installed by .ci/setup"
     w, e, s, n = region
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "ref.bin")

@@ -91,6 +91,9 @@ void Engine::set_property(const std::string& object, const std::string& property
     if (!name.empty() && !library().spectra.find(name))
       throw Error(Status::unknown_name, "spectrum: no spectrum named '" + name + "' in the spectrum table");
   }
+  if (property == "catalog_file" && std::holds_alternative<std::string>(value) && o.kind == universe::ObjectKind::star_field &&
+      !std::get<std::string>(value).empty())  // read and checked now (corrupt_file names file, line and field)
+    library().star_catalog(std::get<std::string>(value), o.stars.catalog_epoch_year);
   if (property == "composite" && std::holds_alternative<std::string>(value)) {
     const auto parts = universe::parse_composite(std::get<std::string>(value), "composite");
     for (std::size_t i = 0; i < parts.size(); ++i)

@@ -91,6 +91,9 @@ void Engine::set_property(const std::string& object, const std::string& property
     if (!name.empty() && !library().spectra.find(name))
       throw Error(Status::unknown_name, "spectrum: no spectrum named '" + name + "' in the spectrum table");
   }
+  if (property == "catalog_file" && std::holds_alternative<std::string>(value) &&
+      !std::get<std::string>(value).empty())
+    library().star_catalog(std::get<std::string>(value), o.stars.catalog_epoch_year);  // read and checked now
   if (property == "composite" && std::holds_alternative<std::string>(value)) {
     // A predefined satellite's name (spec 4.3.3) stands for its parts.
     const std::string& given = std::get<std::string>(value);

@@ -10,18 +10,6 @@
 
 #include "check.h"
 
-static void set_state(eoir_engine e, const char* name, double x, double y, double z) {
-  eoir_state s;
-  memset(&s, 0, sizeof s);
-  s.struct_size = sizeof s;
-  s.frame = EOIR_FRAME_J2000;
-  s.position[0] = x;
-  s.position[1] = y;
-  s.position[2] = z;
-  s.attitude[0] = 1.0;
-  OK(eoir_object_set_state(e, name, NULL, &s));
-}
-
 int main(void) {
   static char parts[1 << 16];
   eoir_engine e = NULL;
@@ -69,7 +57,7 @@ int main(void) {
    * 1e6 km from the Earth toward it, the host 10 km away on the Sun's side
    * (direction (0.8, 0, -0.6)), its body +z turned toward the satellite by
    * a rotation about y. */
-  set_state(e, "Sat", 1.0e9, 0, 0);
+  OK(put_j2000(e, "Sat", 1.0e9, 0, 0));
   {
     eoir_state s;
     const double half = 0.5 * atan2(-0.8, 0.6);

@@ -11,11 +11,14 @@
 namespace eoir::radiometry {
 
 // An object smaller than a scene sample (spec 4.1.6.1), kept apart from the
-// sample grid at its exact focal-plane position.
+// sample grid at its exact focal-plane position. A source moving during the
+// integration time draws a streak: its energy spread uniformly along the
+// segment from (column, row) - streak / 2 to (column, row) + streak / 2.
 struct PointSource {
   std::int32_t object_id = -1;
-  double column = 0, row = 0;   // fractional sample coordinates in the full grid
+  double column = 0, row = 0;   // fractional sample coordinates in the full grid (the streak's middle)
   double irradiance_W_cm2 = 0;  // band-integrated at the aperture (eq. 52)
+  double streak_columns = 0, streak_rows = 0;  // displacement during the integration (end - start), samples; 0 at rest
 };
 
 struct RadianceImage {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/constants.hpp"
 #include "core/data_dir.hpp"
 #include "core/error.hpp"
 #include "universe/composite.hpp"
@@ -64,8 +65,8 @@ void Engine::remove_object(const std::string& name) {
 }
 
 void Engine::push_state(const std::string& name, const EngineTime& epoch, int frame, const double position[3],
-                        const double velocity[3], const double attitude_wxyz[4]) {
-  universe::push_state(universe_.get(name), epoch, frame, position, velocity, attitude_wxyz);
+                        const double velocity[3], const double attitude_wxyz[4], const double angular_velocity_rad_s[3]) {
+  universe::push_state(universe_.get(name), epoch, frame, position, velocity, attitude_wxyz, angular_velocity_rad_s);
   changed();
 }
 
@@ -74,7 +75,8 @@ void Engine::restore_state(const std::string& name, const universe::PushedState&
   const double r[3] = {s.position_m.x(), s.position_m.y(), s.position_m.z()};
   const double v[3] = {s.velocity_m_s.x(), s.velocity_m_s.y(), s.velocity_m_s.z()};
   const double q[4] = {s.attitude.w(), s.attitude.x(), s.attitude.y(), s.attitude.z()};
-  universe::push_state(o, s.epoch, s.frame == universe::StateFrame::j2000 ? 0 : 1, r, v, q);  // validates
+  const double w[3] = {s.angular_velocity_rad_s.x(), s.angular_velocity_rad_s.y(), s.angular_velocity_rad_s.z()};
+  universe::push_state(o, s.epoch, s.frame == universe::StateFrame::j2000 ? 0 : 1, r, v, q, w);  // validates
   o.state.attitude = s.attitude;  // bit for bit (push_state normalises)
   changed();
 }
@@ -155,7 +157,8 @@ std::shared_ptr<const scene::World> Engine::world(const std::string& sensor) {
   auto it = worlds_.find(sensor);
   if (it != worlds_.end() && it->second.revision == revision_ && it->second.time == time_) return it->second.world;
   auto w = scene::build_world(universe_, library(), time_, universe_.sensor(sensor),
-                              scene::ViewDefinition{model->grid, model->spectral, model->fidelity()});
+                              scene::ViewDefinition{model->grid, model->spectral, model->fidelity(),
+                                                    model->parameters.integration_time_ms * 1e-3});
   ++world_builds_;
   worlds_[sensor] = CachedWorld{revision_, time_, w};
   return w;
@@ -223,13 +226,39 @@ const Frame& Engine::render(const std::string& name) {
   frame->sensor_display =
       sensor::compress_for_display(frame->sensor.electrons, p.display_agc, p.display_gain_step, full_scale);
   const auto t3 = clock_type::now();
-  // Per-frame truth: the target metrics of every object in the field,
-  // evaluated on the same world.
+  // Per-frame truth: the target metrics of every object and star in the
+  // field, evaluated on the same world.
+  const geometry::SampleGrid& grid = w.grid();
+  const auto add_truth = [&](TruthEntry e, const Eigen::Vector3d& direction, double streak_c, double streak_r) {
+    e.ra_deg = std::atan2(direction.y(), direction.x()) * constants::deg_per_rad;
+    if (e.ra_deg < 0) e.ra_deg += 360.0;
+    e.dec_deg = std::asin(std::clamp(direction.normalized().z(), -1.0, 1.0)) * constants::deg_per_rad;
+    const double dx = 0.5 * streak_c / static_cast<double>(grid.per_pixel);
+    const double dy = 0.5 * streak_r / static_cast<double>(grid.per_pixel);
+    e.start_x = e.metrics.pixel_x - dx;
+    e.start_y = e.metrics.pixel_y - dy;
+    e.end_x = e.metrics.pixel_x + dx;
+    e.end_y = e.metrics.pixel_y + dy;
+    frame->truth.push_back(std::move(e));
+  };
   for (const auto& o : w.objects) {
-    if (o->central_body || o->imaging == scene::Imaging::outside) continue;
-    metrics::TargetMetrics t = metrics::target_metrics(w, model, *o);
-    if (t.in_field) frame->truth.push_back(TruthEntry{o->name, t});
+    if (o->imaging == scene::Imaging::outside) continue;
+    if (o->central_body && o->imaging != scene::Imaging::point_source) continue;
+    TruthEntry e;
+    e.object = o->name;
+    e.metrics = metrics::target_metrics(w, model, *o);
+    if (e.metrics.in_field) add_truth(std::move(e), o->placed.position_m, o->streak_columns, o->streak_rows);
   }
+  for (const scene::WorldStar& s : w.sky.stars) {
+    TruthEntry e;
+    e.kind = TruthEntry::Kind::star;
+    e.object = s.id;
+    e.metrics = metrics::star_metrics(w, model, s);
+    e.v_mag = s.v_mag;
+    e.b_v_mag = s.b_v_mag;
+    add_truth(std::move(e), s.direction_j2000, s.streak_columns, s.streak_rows);
+  }
+  if (!w.sky.warning.empty() && options_.log) options_.log(2, w.sky.star_field + ": " + w.sky.warning);
   const auto t4 = clock_type::now();
   FrameTimings& tm = frame->timings;
   tm.setup_s = seconds_between(t0, t1);

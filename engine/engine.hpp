@@ -51,7 +51,8 @@ class Engine {
   void remove_object(const std::string& name);
   // frame: 0 J2000, 1 Earth-fixed, 2 geodetic (universe/object_motion.hpp).
   void push_state(const std::string& name, const EngineTime& epoch, int frame, const double position[3],
-                  const double velocity[3], const double attitude_wxyz[4]);
+                  const double velocity[3], const double attitude_wxyz[4],
+                  const double angular_velocity_rad_s[3] = nullptr);
   // A saved state restored exactly (validated as push_state validates).
   void restore_state(const std::string& name, const universe::PushedState& state);
   void set_property(const std::string& object, const std::string& property, const Value& value);

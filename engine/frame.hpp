@@ -33,11 +33,19 @@ struct FrameTimings {
   }
 };
 
-// The target metrics of one object in the field (central bodies are
-// backgrounds, not targets).
+// One entry of the per-frame truth: an object in the field (central bodies
+// only where imaged as point sources: resolved ones are backgrounds, not
+// targets) or a catalogue star, with its target metrics.
 struct TruthEntry {
-  std::string object;
+  enum class Kind { object = 0, star = 1 };
+  Kind kind = Kind::object;
+  std::string object;  // the object's name or the star's catalogue id
   metrics::TargetMetrics metrics;
+  double ra_deg = 0, dec_deg = 0;    // direction from the sensor (apparent place), J2000 axes
+  double v_mag = 0, b_v_mag = 0;     // stars
+  // Pixel coordinates at the start and the end of the integration (a point
+  // source's streak; equal to the frame-time position for extended objects).
+  double start_x = 0, start_y = 0, end_x = 0, end_y = 0;
 };
 
 struct Frame {

@@ -132,9 +132,12 @@ EOIR_API eoir_status eoir_object_set_state(eoir_engine engine, const char* name,
   return with_engine(engine, [&](Engine& e) {
     const std::string n = str(name, "name");
     need(state, "state");
-    need_size(state->struct_size, sizeof(eoir_state), "state");
+    constexpr size_t v12_size = offsetof(eoir_state, angular_velocity);  // before 1.3 appended it
+    need_size(state->struct_size, v12_size, "state");
+    const bool has_rate = state->struct_size >= offsetof(eoir_state, angular_velocity) + sizeof state->angular_velocity;
     const EngineTime epoch = time ? time_of(time, "time") : e.time();
-    e.push_state(n, epoch, state->frame, state->position, state->velocity, state->attitude);
+    e.push_state(n, epoch, state->frame, state->position, state->velocity, state->attitude,
+                 has_rate ? state->angular_velocity : nullptr);
   });
 }
 
@@ -142,7 +145,8 @@ EOIR_API eoir_status eoir_object_get_state(eoir_engine engine, const char* name,
   return with_engine(engine, [&](Engine& e) {
     const universe::Object& o = e.universe().get(str(name, "name"));
     need(state, "state");
-    need_size(state->struct_size, sizeof(eoir_state), "state");
+    need_size(state->struct_size, offsetof(eoir_state, angular_velocity), "state");
+    const bool has_rate = state->struct_size >= offsetof(eoir_state, angular_velocity) + sizeof state->angular_velocity;
     const universe::Kinematics k = universe::kinematics_at(e.universe(), o, e.time());
     frames::Vec3 r = k.position_m, v = k.velocity_m_s;
     Eigen::Quaterniond q = k.attitude;
@@ -161,6 +165,20 @@ EOIR_API eoir_status eoir_object_get_state(eoir_engine engine, const char* name,
     state->attitude[1] = q.x();
     state->attitude[2] = q.y();
     state->attitude[3] = q.z();
+    if (has_rate) {
+      // The pushed angular velocity (the object's, or a sensor's own), in the
+      // frame asked for (central bodies and objects without one: zero).
+      const universe::Object* carrier = &o;
+      if (o.kind == universe::ObjectKind::sensor && !o.state.valid) carrier = &e.universe().get(o.parent);
+      frames::Vec3 w = carrier->state.valid ? carrier->state.angular_velocity_rad_s : frames::Vec3::Zero();
+      const bool pushed_j2000 = !carrier->state.valid || carrier->state.frame == universe::StateFrame::j2000;
+      const bool want_j2000 = state->frame == EOIR_FRAME_J2000;
+      // The Earth-fixed frame itself turns at the Earth's rate about its z.
+      const frames::Vec3 earth_rate(0.0, 0.0, 7.292115e-5);
+      if (pushed_j2000 && !want_j2000) w = frames::j2000_to_earth_fixed(e.time()) * w - earth_rate;
+      if (!pushed_j2000 && want_j2000) w = frames::j2000_to_earth_fixed(e.time()).transpose() * (w + earth_rate);
+      for (int i = 0; i < 3; ++i) state->angular_velocity[i] = w[i];
+    }
   });
 }
 }

@@ -1,5 +1,6 @@
 // The SNR access constraint and the per-frame truth (spec 5.13, 7.8).
 #include <algorithm>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 
@@ -55,15 +56,18 @@ EOIR_API eoir_status eoir_truth_get(eoir_engine engine, const char* sensor, size
   return with_engine(engine, [&](Engine& e) {
     const auto& rows = e.truth(str(sensor, "sensor"));
     need(out, "truth_out");
-    capi::need_size(out->struct_size, sizeof(eoir_truth), "truth_out");
+    constexpr size_t v12_size = offsetof(eoir_truth, kind);  // the struct before 1.3 appended kind
+    capi::need_size(out->struct_size, v12_size, "truth_out");
     if (index >= rows.size())
       throw Error(Status::out_of_range, "index: " + std::to_string(index) + " >= truth count " +
                                             std::to_string(rows.size()));
     const TruthEntry& row = rows[index];
     const metrics::TargetMetrics& t = row.metrics;
     const uint32_t size = out->struct_size;
-    std::memset(out, 0, sizeof(eoir_truth));
-    out->struct_size = size;
+    eoir_truth full{};
+    full.struct_size = size;
+    eoir_truth* const caller = out;
+    out = &full;
     std::snprintf(out->object, sizeof out->object, "%s", row.object.c_str());
     out->pixel_x = t.pixel_x;
     out->pixel_y = t.pixel_y;
@@ -73,6 +77,16 @@ EOIR_API eoir_status eoir_truth_get(eoir_engine engine, const char* sensor, size
     out->effective_irradiance = t.effective_target_irradiance_W_cm2;
     out->effective_radiance = t.effective_target_radiance_W_cm2_sr;
     out->snr = t.snr;
+    out->kind = row.kind == TruthEntry::Kind::star ? EOIR_TRUTH_STAR : EOIR_TRUTH_OBJECT;
+    out->right_ascension_deg = row.ra_deg;
+    out->declination_deg = row.dec_deg;
+    out->v_mag = row.v_mag;
+    out->b_v_mag = row.b_v_mag;
+    out->start_pixel_x = row.start_x;
+    out->start_pixel_y = row.start_y;
+    out->end_pixel_x = row.end_x;
+    out->end_pixel_y = row.end_y;
+    std::memcpy(caller, &full, std::min<size_t>(size, sizeof full));  // what the caller's version holds
   });
 }
 }

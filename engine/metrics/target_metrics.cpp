@@ -9,10 +9,29 @@ namespace eoir::metrics {
 namespace {
 using geometry::Vec3;
 
-// The radiance a hit sees (the sky: no background terms yet).
+// The radiance a hit sees (the sky's background light where it meets nothing).
 double radiance_of(const scene::World& world, const geometry::Hit& hit) {
-  if (hit.object_id < 0) return 0.0;
+  if (hit.object_id < 0) return world.sky.background_radiance_W_cm2_sr;
   return world.objects[static_cast<std::size_t>(hit.object_id)]->radiance_at(hit.part, hit.point_body_m);
+}
+
+// Eqs. 59-71 of a point target of irradiance E_tgt against the background
+// radiance L_bkg, the target filling omega_ratio of the effective IFOV.
+void point_target_terms(const sensor::StaticMetrics& m, double E_tgt, double L_bkg, double omega_ratio,
+                        TargetMetrics& r) {
+  const double R_L = m.peak_radiance_responsivity, R_E = m.peak_irradiance_responsivity;
+  const double ne_dark = m.dark_noise_electrons, SEe = m.saturation_electrons;
+  const double r_tgt = std::min(E_tgt * R_E + L_bkg * (1.0 - omega_ratio) * R_L, SEe);  // eq. 59
+  const double r_bkg = std::min(L_bkg * R_L, SEe);                                     // eq. 60
+  const double sigma = std::sqrt(ne_dark * ne_dark + L_bkg * R_L);                     // eq. 64
+  r.effective_target_irradiance_W_cm2 = E_tgt;
+  r.effective_background_radiance_W_cm2_sr = L_bkg;
+  r.scene_photon_nei_W_cm2 = std::sqrt(L_bkg * R_L) / R_E;  // eq. 70
+  r.total_nei_W_cm2 = sigma / R_E;                          // eq. 69
+  // Table 2 notes: NER from NEI through the equal noise electrons.
+  r.scene_photon_ner_W_cm2_sr = r.scene_photon_nei_W_cm2 * R_E / R_L;
+  r.total_ner_W_cm2_sr = r.total_nei_W_cm2 * R_E / R_L;
+  r.snr = r.visible ? std::fabs(r_tgt - r_bkg) / sigma : 0.0;  // eq. 65
 }
 
 // Visible: some line of sight toward one of the target's parts (each part's
@@ -66,25 +85,14 @@ TargetMetrics target_metrics(const scene::World& world, const sensor::SensorMode
   r.visible = r.in_field && unobstructed(world, tp);
   const Vec3 los = tp.placed.position_m.normalized();
 
-  const double R_L = m.peak_radiance_responsivity, R_E = m.peak_irradiance_responsivity;
+  const double R_L = m.peak_radiance_responsivity;
   const double ne_dark = m.dark_noise_electrons, SEe = m.saturation_electrons;
   if (r.point_source) {
     // Background: what the line of sight meets beyond the target (eq. 62).
     const double L_bkg = radiance_of(world, world.caster.cast(los, geometry::RayQuery{geometry::ray_mask_all, tp.id}));
-    const double E_tgt = tp.point_irradiance_W_cm2();  // eq. 61
-    const double omega_ratio = r.target_solid_angle_sr / m.effective_ifov_solid_angle_sr;
-    const double r_tgt = std::min(E_tgt * R_E + L_bkg * (1.0 - omega_ratio) * R_L, SEe);  // eq. 59
-    const double r_bkg = std::min(L_bkg * R_L, SEe);                                     // eq. 60
-    const double sigma = std::sqrt(ne_dark * ne_dark + L_bkg * R_L);                     // eq. 64
-    r.effective_target_irradiance_W_cm2 = E_tgt;
     r.point_target_solid_angle_sr = r.target_solid_angle_sr;
-    r.effective_background_radiance_W_cm2_sr = L_bkg;
-    r.scene_photon_nei_W_cm2 = std::sqrt(L_bkg * R_L) / R_E;  // eq. 70
-    r.total_nei_W_cm2 = sigma / R_E;                          // eq. 69
-    // Table 2 notes: NER from NEI through the equal noise electrons.
-    r.scene_photon_ner_W_cm2_sr = r.scene_photon_nei_W_cm2 * R_E / R_L;
-    r.total_ner_W_cm2_sr = r.total_nei_W_cm2 * R_E / R_L;
-    r.snr = r.visible ? std::fabs(r_tgt - r_bkg) / sigma : 0.0;  // eq. 65
+    point_target_terms(m, tp.point_irradiance_W_cm2() /* eq. 61 */, L_bkg,
+                       r.target_solid_angle_sr / m.effective_ifov_solid_angle_sr, r);
     return r;
   }
   // Extended target (5.13.3): average radiances over the samples of a
@@ -123,9 +131,20 @@ TargetMetrics target_metrics(const scene::World& world, const sensor::SensorMode
   r.scene_photon_ner_W_cm2_sr = std::sqrt(L_bkg / R_L);                                          // eq. 78
   r.total_ner_W_cm2_sr = std::sqrt(ner_dark * ner_dark + r.scene_photon_ner_W_cm2_sr * r.scene_photon_ner_W_cm2_sr);  // eq. 77
   // Table 2 notes: NEI from NER through the equal noise electrons.
-  r.scene_photon_nei_W_cm2 = r.scene_photon_ner_W_cm2_sr * R_L / R_E;
-  r.total_nei_W_cm2 = r.total_ner_W_cm2_sr * R_L / R_E;
+  r.scene_photon_nei_W_cm2 = r.scene_photon_ner_W_cm2_sr * R_L / m.peak_irradiance_responsivity;
+  r.total_nei_W_cm2 = r.total_ner_W_cm2_sr * R_L / m.peak_irradiance_responsivity;
   r.snr = r.visible ? L_signal / r.total_ner_W_cm2_sr : 0.0;  // eq. 76
+  return r;
+}
+
+TargetMetrics star_metrics(const scene::World& world, const sensor::SensorModel& sensor, const scene::WorldStar& star) {
+  TargetMetrics r;
+  const geometry::SampleGrid& grid = world.grid();
+  r.point_source = true;
+  r.pixel_x = grid.pixel_x_of(star.column);
+  r.pixel_y = grid.pixel_y_of(star.row);
+  r.in_field = r.visible = true;  // the sky holds the stars in the field that nothing hides
+  point_target_terms(sensor.metrics, star.irradiance_W_cm2, world.sky.background_radiance_W_cm2_sr, 0.0, r);
   return r;
 }
 

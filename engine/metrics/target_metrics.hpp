@@ -43,4 +43,8 @@ const scene::WorldObject& find_target(const scene::World& world, const universe:
 TargetMetrics target_metrics(const scene::World& world, const sensor::SensorModel& sensor,
                              const scene::WorldObject& target);
 
+// The point-target metrics (eqs. 59-71) of a catalogue star of the world's
+// sky (range 0: stars are at infinity; no solid angle).
+TargetMetrics star_metrics(const scene::World& world, const sensor::SensorModel& sensor, const scene::WorldStar& star);
+
 }  // namespace eoir::metrics

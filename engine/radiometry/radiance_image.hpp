@@ -15,10 +15,13 @@ namespace eoir::radiometry {
 // integration time draws a streak: its energy spread uniformly along the
 // segment from (column, row) - streak / 2 to (column, row) + streak / 2.
 struct PointSource {
-  std::int32_t object_id = -1;
-  double column = 0, row = 0;   // fractional sample coordinates in the full grid (the streak's middle)
+  std::int32_t object_id = -1;  // the world's object, or -1 for a star
+  std::int32_t star = -1;       // index of a star in the world's sky, or -1
+  double column = 0, row = 0;   // fractional sample coordinates in the full grid, at the frame time
   double irradiance_W_cm2 = 0;  // band-integrated at the aperture (eq. 52)
-  double streak_columns = 0, streak_rows = 0;  // displacement during the integration (end - start), samples; 0 at rest
+  // Displacement over the integration time (end minus start), in samples: the
+  // streak is centred on (column, row); 0, 0 for a source at rest.
+  double streak_columns = 0, streak_rows = 0;
 };
 
 struct RadianceImage {

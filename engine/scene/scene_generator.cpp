@@ -21,7 +21,14 @@ SceneImage generate_scene(const World& world, unsigned threads) {
     if (!grid.sample_of(j2000_to_body * o->placed.position_m, c, r) || !grid.in_field(c, r, 1e-4)) continue;
     const geometry::RayQuery others{geometry::ray_mask_all, o->id};
     if (world.caster.occluded(o->placed.position_m / o->range_m, o->range_m, others)) continue;
-    out.image.point_sources.push_back(radiometry::PointSource{o->id, c, r, o->point_irradiance_W_cm2()});
+    out.image.point_sources.push_back(
+        radiometry::PointSource{o->id, -1, c, r, o->point_irradiance_W_cm2(), o->streak_columns, o->streak_rows});
+  }
+  // Catalogue stars (spec 4.1.6.1), placed and culled with the world's sky.
+  for (std::size_t k = 0; k < world.sky.stars.size(); ++k) {
+    const WorldStar& s = world.sky.stars[k];
+    out.image.point_sources.push_back(radiometry::PointSource{-1, static_cast<std::int32_t>(k), s.column, s.row,
+                                                              s.irradiance_W_cm2, s.streak_columns, s.streak_rows});
   }
   const auto t1 = clock::now();
 
@@ -31,6 +38,7 @@ SceneImage generate_scene(const World& world, unsigned threads) {
   const std::size_t count = static_cast<std::size_t>(w * h);
   out.hits.assign(count, SampleHit{});
   out.image.radiance_W_cm2_sr.assign(count, 0.0);
+  const double sky_radiance = world.sky.background_radiance_W_cm2_sr;
   const auto direction = [&](std::size_t i) {
     const auto r = static_cast<std::int64_t>(i) / w, c = static_cast<std::int64_t>(i) % w;
     return world.sample_direction(c, r);
@@ -39,7 +47,10 @@ SceneImage generate_scene(const World& world, unsigned threads) {
       count, direction,
       [&](std::size_t i, std::int32_t object, std::int32_t part, double range_m) {
         out.hits[i] = SampleHit{object, part};
-        if (object < 0) return;
+        if (object < 0) {
+          out.image.radiance_W_cm2_sr[i] = sky_radiance;  // the background light (spec 4.1.4), 0 without a sky
+          return;
+        }
         const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];
         if (o.surface->plain()) {
           out.image.radiance_W_cm2_sr[i] = o.surface->part_radiance(part);

@@ -125,8 +125,23 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
   if (o.kind != ObjectKind::central_body && !o.state.valid) return nullptr;
   const std::vector<universe::ShapePart> shape = universe::shape_parts(o.body);
   if (shape.empty()) return nullptr;
-  const universe::Kinematics k = universe::kinematics_at(universe, o, t);
+  universe::Kinematics k = universe::kinematics_at(universe, o, t);
   auto w = std::make_unique<WorldObject>();
+  EngineTime seen = t;  // when the light the sensor receives left the object
+  const Vec3 observer = world.observer.position_m;
+  const bool apparent = o.kind == ObjectKind::central_body && o.central_body != universe::CentralBody::earth &&
+                        o.central_body != universe::CentralBody::sun;
+  if (apparent) {
+    // The Moon and the planets at their apparent places: where they were one
+    // light time ago (iterated), displaced by the aberration of the
+    // observer's geocentric velocity (first order; the Earth's orbital
+    // velocity cancels against the light time of geocentric positions).
+    for (int i = 0; i < 3; ++i) {
+      w->light_time_s = (k.position_m - observer).norm() / constants::speed_of_light_m_per_s;
+      seen = t.plus_seconds(-w->light_time_s);
+      k = universe::kinematics_at(universe, o, seen);
+    }
+  }
   w->name = o.name;
   w->kind = o.kind;
   w->central_body = o.kind == ObjectKind::central_body;
@@ -137,12 +152,17 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
                                   : o.name + ".shape";
     po.parts.push_back(geometry::make_part(shape[i], field));
   }
-  po.position_m = k.position_m - world.observer.position_m;
+  po.position_m = k.position_m - observer;
+  if (apparent) {
+    const Vec3 beta = world.observer.velocity_m_s / constants::speed_of_light_m_per_s;
+    const Vec3 u = po.position_m.normalized();
+    po.position_m += po.position_m.norm() * (beta - beta.dot(u) * u);
+  }
   w->geocentric_position_m = k.position_m;
   if (w->central_body) {
     const universe::CentralBodyInfo& info = universe::central_body_info(o.central_body);
-    po.body_to_frame = info.axes == universe::BodyAxes::earth_fixed ? Mat3(frames::j2000_to_earth_fixed(t).transpose())
-                                                                     : universe::body_to_j2000(o.central_body, t);
+    po.body_to_frame = info.axes == universe::BodyAxes::earth_fixed ? Mat3(frames::j2000_to_earth_fixed(seen).transpose())
+                                                                     : universe::body_to_j2000(o.central_body, seen);
     w->equatorial_radius_m = o.body.dimensions_m[0];
     w->polar_radius_m = o.body.dimensions_m[1];
   } else {
@@ -212,6 +232,9 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     }
   }
   if (sun_only) return;
+  // The background light (eq. 4): E_bkg / pi, reflected whatever the BRDF.
+  if (w.sky.background)
+    for (std::size_t i = 0; i < count; ++i) out[i] += w.sky.background_irradiance[i] / constants::pi;
   // Every other object: a Lambertian sphere (eq. 7) or its tessellation (eq. 8).
   for (std::size_t k = 0; k < w.lights.size(); ++k) {
     const ObjectLight& src = w.lights[k];
@@ -394,6 +417,16 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   world->view = view;
   const universe::Kinematics k = universe::kinematics_at(universe, sensor, t);
   world->observer = Observer{k.position_m, k.velocity_m_s, k.attitude.toRotationMatrix()};
+  const double half_integration_s = 0.5 * view.integration_time_s;
+  const EngineTime start = t.plus_seconds(-half_integration_s), end = t.plus_seconds(half_integration_s);
+  {
+    const universe::Kinematics k0 = universe::kinematics_at(universe, sensor, start);
+    const universe::Kinematics k1 = universe::kinematics_at(universe, sensor, end);
+    world->observer.position_start_m = k0.position_m;
+    world->observer.position_end_m = k1.position_m;
+    world->observer.body_to_j2000_start = k0.attitude.toRotationMatrix();
+    world->observer.body_to_j2000_end = k1.attitude.toRotationMatrix();
+  }
   frames::Vec3 sun_r, sun_v;
   universe::central_body_state_j2000(universe::central_body_info(universe::CentralBody::sun), t, sun_r, sun_v);
   const radiometry::SpectralBand& band = world->view.spectral.band;
@@ -423,6 +456,20 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     else
       w->imaging = Imaging::extended;
     w->placed.ray_mask = w->imaging == Imaging::extended ? geometry::ray_mask_extended : geometry::ray_mask_other;
+    if (w->imaging == Imaging::point_source && half_integration_s > 0) {
+      // Displacement on the grid over the integration: the object's and the
+      // sensor's motion and the sensor's rotation (positions as the host pushed them).
+      const Vec3 p0 = universe::kinematics_at(universe, o, start.plus_seconds(-w->light_time_s)).position_m -
+                      world->observer.position_start_m;
+      const Vec3 p1 = universe::kinematics_at(universe, o, end.plus_seconds(-w->light_time_s)).position_m -
+                      world->observer.position_end_m;
+      double c0 = 0, r0 = 0, c1 = 0, r1 = 0;
+      if (grid.sample_of(world->observer.body_to_j2000_start.transpose() * p0, c0, r0) &&
+          grid.sample_of(world->observer.body_to_j2000_end.transpose() * p1, c1, r1)) {
+        w->streak_columns = c1 - c0;
+        w->streak_rows = r1 - r0;
+      }
+    }
     if (o.kind == ObjectKind::central_body && o.central_body == universe::CentralBody::sun) world->sun.object = w->id;
     world->objects.push_back(std::move(w));
     sources.push_back(&o);
@@ -572,6 +619,13 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   std::vector<const geometry::PlacedObject*> cast_against;
   for (const auto& w : world->objects) cast_against.push_back(&w->placed);
   world->caster.build(cast_against);
+
+  // 5. The sky, if the universe has a star field.
+  for (const universe::Object& o : universe.objects())
+    if (o.kind == ObjectKind::star_field) {
+      build_sky(*world, o, library);
+      break;
+    }
   return world;
 }
 

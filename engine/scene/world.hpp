@@ -26,6 +26,7 @@
 #include "geometry/scene_geometry.hpp"
 #include "radiometry/spectral_view.hpp"
 #include "scene/light_environment.hpp"
+#include "scene/sky.hpp"
 #include "scene/surface_model.hpp"
 #include "universe/library.hpp"
 #include "universe/universe.hpp"
@@ -47,12 +48,16 @@ struct ViewDefinition {
   geometry::SampleGrid grid;
   radiometry::SpectralView spectral;
   Fidelity fidelity;
+  double integration_time_s = 0;  // point sources streak over it (centred on the frame time)
 };
 
 struct Observer {
   Vec3 position_m = Vec3::Zero();    // geocentric J2000
   Vec3 velocity_m_s = Vec3::Zero();  // J2000
   Mat3 body_to_j2000 = Mat3::Identity();
+  // At the start and the end of the integration (frame time -/+ half of it).
+  Vec3 position_start_m = Vec3::Zero(), position_end_m = Vec3::Zero();
+  Mat3 body_to_j2000_start = Mat3::Identity(), body_to_j2000_end = Mat3::Identity();
 };
 
 // The Sun as the light of eq. 6.
@@ -79,6 +84,8 @@ class WorldObject {
   double volumetric_radius_m = 0; // the sphere of equal volume (eq. 7; plates: of equal area)
   Imaging imaging = Imaging::outside;
   bool detailed_point_source = true;  // spec 4.1.6.1: detailed or simple
+  double light_time_s = 0;        // the Moon and the planets: seen where they were (apparent place)
+  double streak_columns = 0, streak_rows = 0;  // point sources: displacement on the grid over the integration
   double patch_size_m = 0;        // target edge of the tessellation's patches
   std::unique_ptr<SurfaceModel> surface;
 
@@ -164,6 +171,7 @@ class World {
   std::vector<ObjectLight> lights;                     // every object but the Sun, as eq. 7 sources
   std::vector<std::unique_ptr<SurfaceSpectrum>> spectra;  // the materials in use, through the view
   geometry::RayCaster caster;  // every placed object; ray masks tell how each is imaged
+  Sky sky;                     // background light and catalogue stars (a star field in the universe)
 
   const geometry::SampleGrid& grid() const { return view.grid; }
   const radiometry::SpectralView& spectral() const { return view.spectral; }

@@ -72,8 +72,14 @@ std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::R
   const std::int64_t nx = g.pixels_x, ny = g.pixels_y, guard = g.guard_samples();
   std::vector<double> out(static_cast<std::size_t>(nx * ny), 0.0);
   const auto& radiance = scene.radiance_W_cm2_sr;
-  const bool any_extended = std::any_of(radiance.begin(), radiance.end(), [](double v) { return v != 0.0; });
-  if (!any_extended) return out;  // no extended sources: skip the scene FFT (DESIGN.md 4)
+  // A uniform scene (no extended source, black or lit by the background
+  // light alone) stays uniform: the OTF is 1 at zero frequency and the FFT
+  // padding repeats the border. Skip the scene FFT (DESIGN.md 4).
+  const double first = radiance.empty() ? 0.0 : radiance.front();
+  if (std::all_of(radiance.begin(), radiance.end(), [first](double v) { return v == first; })) {
+    std::fill(out.begin(), out.end(), first);
+    return out;
+  }
   const Blurred blurred = convolve_with_otf(model, scene);
   const std::int64_t k = g.per_pixel;
   for (std::int64_t m = 0; m < ny; ++m)

@@ -233,6 +233,7 @@ json engine_to_json(const Engine& engine) {
                     {"position_m", vec(s.position_m)},
                     {"velocity_m_s", vec(s.velocity_m_s)},
                     {"attitude_wxyz", json::array({s.attitude.w(), s.attitude.x(), s.attitude.y(), s.attitude.z()})}};
+      if (s.angular_velocity_rad_s != frames::Vec3::Zero()) j["state"]["angular_velocity_rad_s"] = vec(s.angular_velocity_rad_s);
     }
     objects.push_back(j);
   }
@@ -296,7 +297,7 @@ std::unique_ptr<Engine> engine_from_json(const json& doc, const EngineOptions& r
       const std::string sw = where + ".state";
       check_fields(s, sw,
                    {"epoch_days_since_j2000", "epoch_fraction_of_day", "frame", "position_m", "velocity_m_s",
-                    "attitude_wxyz"},
+                    "attitude_wxyz", "angular_velocity_rad_s"},
                    {"epoch_days_since_j2000", "epoch_fraction_of_day", "frame", "position_m", "velocity_m_s",
                     "attitude_wxyz"});
       const auto frame = field<std::string>(s, "frame", sw);
@@ -313,6 +314,7 @@ std::unique_ptr<Engine> engine_from_json(const json& doc, const EngineOptions& r
         state.position_m = r;
         state.velocity_m_s = v;
         state.attitude = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);  // kept bit for bit
+        if (s.contains("angular_velocity_rad_s")) state.angular_velocity_rad_s = vec_from(s, "angular_velocity_rad_s", sw);
         engine->restore_state(name, state);
       } catch (const Error& err) {
         corrupt(sw, err.what());

@@ -26,6 +26,17 @@ Library Library::load(const std::string& data_dir) {
   return lib;
 }
 
+std::shared_ptr<const StarCatalog> Library::star_catalog(const std::string& csv_path, double epoch_julian_year) const {
+  const auto key = std::make_pair(csv_path, csv_path.empty() ? 2000.0 : epoch_julian_year);
+  std::lock_guard<std::mutex> lock(catalogues_->mutex);
+  auto& slot = catalogues_->loaded[key];
+  if (!slot)
+    slot = std::make_shared<const StarCatalog>(csv_path.empty()
+                                                   ? StarCatalog::load_binary(data_dir + "/stars/hipparcos_tycho_v9.eoirstars")
+                                                   : StarCatalog::load_csv(csv_path, epoch_julian_year));
+  return slot;
+}
+
 const BodyMaps* Library::maps_of(CentralBody body) const {
   auto it = maps.find(body);
   return it == maps.end() ? nullptr : &it->second;

@@ -6,11 +6,13 @@
 #pragma once
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include "universe/central_bodies.hpp"
 #include "universe/material.hpp"
 #include "universe/spectrum_table.hpp"
+#include "universe/star_catalog.hpp"
 #include "universe/surface_climatology.hpp"
 #include "universe/surface_map.hpp"
 
@@ -27,6 +29,20 @@ struct Library {
   // the climatology tables (throws io or corrupt_file naming the file).
   static Library load(const std::string& data_dir);
   const BodyMaps* maps_of(CentralBody body) const;
+
+  // A star catalogue, read on first use and kept (thread-safe; shared by the
+  // copies of this library): csv_path "" is the data folder's
+  // stars/hipparcos_tycho_v9.eoirstars, else a user CSV whose positions are
+  // at epoch_julian_year. Throws io / corrupt_file naming the file and line.
+  std::shared_ptr<const StarCatalog> star_catalog(const std::string& csv_path = "",
+                                                  double epoch_julian_year = 2000.0) const;
+
+ private:
+  struct Catalogues {
+    std::mutex mutex;
+    std::map<std::pair<std::string, double>, std::shared_ptr<const StarCatalog>> loaded;
+  };
+  std::shared_ptr<Catalogues> catalogues_ = std::make_shared<Catalogues>();
 };
 
 }  // namespace eoir::universe

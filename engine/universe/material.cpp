@@ -25,6 +25,61 @@ double number(const json& j, const std::string& key, const std::string& where) {
   return v;
 }
 
+// Where a document stops being JSON, as the path of the value being read
+// ("reflectance[3]"): a bare NaN or Infinity (what Python's json.dump writes)
+// or a number beyond a double (1e999) is named like any other bad field.
+class ParseErrorPath : public nlohmann::json_sax<json> {
+ public:
+  std::string error;
+  bool null() override { return next(); }
+  bool boolean(bool) override { return next(); }
+  bool number_integer(number_integer_t) override { return next(); }
+  bool number_unsigned(number_unsigned_t) override { return next(); }
+  bool number_float(number_float_t, const string_t&) override { return next(); }
+  bool string(string_t&) override { return next(); }
+  bool binary(binary_t&) override { return next(); }
+  bool start_object(std::size_t) override { return open(true); }
+  bool start_array(std::size_t) override { return open(false); }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
+  bool key(string_t& k) override {
+    levels_.back().key = k;
+    return true;
+  }
+  bool parse_error(std::size_t at, const std::string& token, const nlohmann::json::exception& e) override {
+    next();  // the value that failed
+    std::string p;
+    for (const Level& l : levels_)
+      p += l.object ? (p.empty() ? "" : ".") + l.key : "[" + std::to_string(l.count ? l.count - 1 : 0) + "]";
+    error = (p.empty() ? "(document)" : p) + ": " +
+            (e.id == 406 ? "number out of range (" + token + ")"
+                         : "not valid JSON at byte " + std::to_string(at) + " (last read '" + token +
+                               "'; NaN and Infinity are not JSON numbers): " + e.what());
+    return false;
+  }
+
+ private:
+  struct Level {
+    bool object;
+    std::string key;
+    std::size_t count = 0;
+  };
+  bool next() {
+    if (!levels_.empty() && !levels_.back().object) ++levels_.back().count;
+    return true;
+  }
+  bool open(bool object) {
+    next();
+    levels_.push_back(Level{object, {}, 0});
+    return true;
+  }
+  bool close() {
+    levels_.pop_back();
+    return true;
+  }
+  std::vector<Level> levels_;
+};
+
 std::vector<double> numbers(const json& j, const std::string& key, const std::string& where) {
   if (!j.contains(key) || !j.at(key).is_array()) corrupt(where + "." + key, "expected an array of numbers");
   std::vector<double> out;
@@ -111,6 +166,9 @@ Material load_material(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
+  ParseErrorPath parse;
+  if (!json::sax_parse(text.str(), &parse) && !parse.error.empty())
+    throw Error(Status::corrupt_file, path + ": " + parse.error);
   json doc;
   try {
     doc = json::parse(text.str());

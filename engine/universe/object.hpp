@@ -39,6 +39,8 @@ struct PushedState {
   frames::Vec3 position_m = frames::Vec3::Zero();
   frames::Vec3 velocity_m_s = frames::Vec3::Zero();
   Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  // body -> frame
+  // About which the attitude turns between pushes, in the frame's axes (rad/s).
+  frames::Vec3 angular_velocity_rad_s = frames::Vec3::Zero();
 };
 
 // How an object's surface temperature varies (spec 4.3.1.3): uniform
@@ -84,8 +86,15 @@ struct BodyProperties {
 // for a simple shape, none for shape none.
 std::vector<ShapePart> shape_parts(const BodyProperties& body);
 
+// The sky (spec 4.1.4, 4.1.6.1, 4.3.2): catalogue stars and the background
+// light. Without a star field object the sky is black and no surface
+// receives background light.
 struct StarFieldProperties {
   double limiting_magnitude = 9.0;
+  std::string catalog_file;              // "" = the data folder's Hipparcos/Tycho; else a CSV (star_catalog.hpp)
+  double catalog_epoch_year = 2000.0;    // TDB Julian year of the CSV's positions
+  bool background_light = true;          // E_bkg of eq. 4 on surfaces, E_bkg / pi as sky radiance
+  double zodiacal_light_scale = 1.0;     // 1 = Leinert Table 19 (90 deg elongation in the ecliptic)
 };
 
 struct Object {

@@ -9,12 +9,22 @@
 namespace eoir::universe {
 
 void push_state(Object& object, const EngineTime& epoch, int frame, const double position[3],
-                const double velocity[3], const double q[4]) {
+                const double velocity[3], const double q[4], const double angular_velocity[3]) {
   if (object.kind == ObjectKind::central_body || object.kind == ObjectKind::star_field)
     throw Error(Status::not_allowed, "state: '" + object.name + "' moves on its own ephemeris and takes no state");
   for (int i = 0; i < 3; ++i) require_finite(position[i], "position[" + std::to_string(i) + "]");
   for (int i = 0; i < 3; ++i) require_finite(velocity[i], "velocity[" + std::to_string(i) + "]");
   for (int i = 0; i < 4; ++i) require_finite(q[i], "attitude[" + std::to_string(i) + "]");
+  frames::Vec3 omega = frames::Vec3::Zero();
+  if (angular_velocity) {
+    for (int i = 0; i < 3; ++i) {
+      require_finite(angular_velocity[i], "angular_velocity[" + std::to_string(i) + "]");
+      omega[i] = angular_velocity[i];
+    }
+    if (!(omega.norm() <= max_angular_rate_rad_s))
+      throw Error(Status::out_of_range, "angular_velocity: at most " + std::to_string(max_angular_rate_rad_s) +
+                                            " rad/s, got " + std::to_string(omega.norm()));
+  }
   const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   if (std::fabs(norm - 1.0) > 1e-6)
     throw Error(Status::out_of_range, "attitude: quaternion must have unit norm (|q| - 1 within 1e-6), |q| = " +
@@ -24,6 +34,7 @@ void push_state(Object& object, const EngineTime& epoch, int frame, const double
   s.epoch = epoch;
   s.attitude = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
   s.velocity_m_s = frames::Vec3(velocity[0], velocity[1], velocity[2]);
+  s.angular_velocity_rad_s = omega;
   switch (frame) {
     case 0:
       s.frame = StateFrame::j2000;
@@ -45,6 +56,16 @@ void push_state(Object& object, const EngineTime& epoch, int frame, const double
   object.state = s;
 }
 
+namespace {
+// The pushed attitude turned at the pushed angular velocity for dt seconds
+// (body -> the state's frame): exp(omega dt) q.
+Eigen::Quaterniond turned(const PushedState& s, double dt) {
+  const double angle = s.angular_velocity_rad_s.norm() * dt;
+  if (angle == 0.0) return s.attitude;
+  return Eigen::Quaterniond(Eigen::AngleAxisd(angle, s.angular_velocity_rad_s.normalized())) * s.attitude;
+}
+}  // namespace
+
 Kinematics kinematics_at(const Universe& universe, const Object& object, const EngineTime& t) {
   Kinematics k{frames::Vec3::Zero(), frames::Vec3::Zero(), Eigen::Quaterniond::Identity()};
   if (object.kind == ObjectKind::central_body) {
@@ -57,9 +78,8 @@ Kinematics kinematics_at(const Universe& universe, const Object& object, const E
     k = kinematics_at(universe, parent, t);
     if (object.state.valid) {
       const PushedState& s = object.state;
-      k.attitude = s.frame == StateFrame::j2000
-                       ? s.attitude
-                       : Eigen::Quaterniond(frames::j2000_to_earth_fixed(t).transpose()) * s.attitude;
+      const Eigen::Quaterniond q = turned(s, t.seconds_since(s.epoch));
+      k.attitude = s.frame == StateFrame::j2000 ? q : Eigen::Quaterniond(frames::j2000_to_earth_fixed(t).transpose()) * q;
     }
     return k;
   }
@@ -67,13 +87,14 @@ Kinematics kinematics_at(const Universe& universe, const Object& object, const E
   if (!s.valid) throw Error(Status::no_state, "state: object '" + object.name + "' has no state; push one first");
   const double dt = t.seconds_since(s.epoch);
   const frames::Vec3 r = s.position_m + s.velocity_m_s * dt;  // constant-velocity extrapolation
+  const Eigen::Quaterniond q = turned(s, dt);
   if (s.frame == StateFrame::j2000) {
     k.position_m = r;
     k.velocity_m_s = s.velocity_m_s;
-    k.attitude = s.attitude;
+    k.attitude = q;
   } else {
     frames::earth_fixed_to_j2000(t, r, s.velocity_m_s, k.position_m, k.velocity_m_s);
-    k.attitude = Eigen::Quaterniond(frames::j2000_to_earth_fixed(t).transpose()) * s.attitude;
+    k.attitude = Eigen::Quaterniond(frames::j2000_to_earth_fixed(t).transpose()) * q;
   }
   return k;
 }

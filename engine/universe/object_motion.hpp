@@ -1,5 +1,6 @@
 // Where an object is at the engine time: pushed states moved along their
-// velocity, central bodies from their ephemerides, sensors on their parents.
+// velocity and turned at their angular velocity, central bodies from their
+// ephemerides, sensors on their parents.
 #pragma once
 #include <Eigen/Geometry>
 
@@ -7,6 +8,8 @@
 #include "universe/universe.hpp"
 
 namespace eoir::universe {
+
+constexpr double max_angular_rate_rad_s = 1.0e3;
 
 struct Kinematics {
   frames::Vec3 position_m;    // geocentric J2000
@@ -19,9 +22,12 @@ struct Kinematics {
 Kinematics kinematics_at(const Universe& universe, const Object& object, const EngineTime& t);
 
 // Validates and stores a state pushed by the host. frame: 0 J2000, 1
-// Earth-fixed, 2 geodetic (position = lat deg, lon deg, height m). Throws
-// eoir::Error naming the field (position[1], attitude, frame, ...).
+// Earth-fixed, 2 geodetic (position = lat deg, lon deg, height m); the
+// angular velocity (NULL = none) is about the frame's axes, at most
+// max_angular_rate_rad_s. Throws eoir::Error naming the field (position[1],
+// attitude, angular_velocity[2], frame, ...).
 void push_state(Object& object, const EngineTime& epoch, int frame, const double position[3],
-                const double velocity[3], const double attitude_wxyz[4]);
+                const double velocity[3], const double attitude_wxyz[4],
+                const double angular_velocity_rad_s[3] = nullptr);
 
 }  // namespace eoir::universe

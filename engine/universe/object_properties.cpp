@@ -134,8 +134,34 @@ std::vector<Spec> body_properties(bool missile) {
 }
 
 std::vector<Spec> star_field_properties() {
-  return {number_property<Object>("limiting_magnitude", "mag", "Faintest visual magnitude imaged",
-                                  [](Object& o) -> auto& { return o.stars.limiting_magnitude; }, Range{-30, 30})};
+  std::vector<Spec> t;
+  t.push_back(number_property<Object>(
+      "limiting_magnitude", "mag",
+      "Faintest Johnson V magnitude of the catalogue stars imaged (spec 4.3.2); past the catalogue's faintest star "
+      "every star is used and the engine logs a warning",
+      [](Object& o) -> auto& { return o.stars.limiting_magnitude; }, Range{-30, 30}));
+  t.push_back(Spec{"catalog_file", ValueType::string, "",
+                   "Star catalogue: \"\" for the data folder's Hipparcos/Tycho catalogue (kstars-data, V <= 9), or "
+                   "the path of a CSV file with columns id, ra_deg, dec_deg, pm_ra_mas_yr, pm_dec_mas_yr, "
+                   "parallax_mas, v_mag, b_v (README \"Stars\"); read and checked when set",
+                   [](const Object& o) { return Value(o.stars.catalog_file); },
+                   [](Object& o, const Value& v) { o.stars.catalog_file = string_of(v, "catalog_file"); }});
+  t.push_back(number_property<Object>("catalog_epoch_year", "yr",
+                                      "Epoch of the CSV catalogue's positions and origin of its proper motions "
+                                      "(TDB Julian year, e.g. 2016.0 for Gaia DR3)",
+                                      [](Object& o) -> auto& { return o.stars.catalog_epoch_year; },
+                                      Range{1000, 3000}));
+  t.push_back(bool_property<Object>(
+      "background_light",
+      "Background light of spec 4.1.4 (integrated starlight, zodiacal light, airglow): E_bkg SRF / pi on every "
+      "surface (eq. 4) and E_bkg / pi as the radiance of samples that see no object",
+      [](Object& o) -> auto& { return o.stars.background_light; }));
+  t.push_back(number_property<Object>(
+      "zodiacal_light_scale", "-",
+      "Scale of the zodiacal light: 1 = Leinert et al. (1998) Table 19, 90 deg elongation in the ecliptic (202 S10); "
+      "0.297 = the ecliptic pole (60 S10)",
+      [](Object& o) -> auto& { return o.stars.zodiacal_light_scale; }, Range{0, 100}));
+  return t;
 }
 
 std::vector<Spec> sensor_object_properties() {

@@ -101,6 +101,15 @@ void StarCatalog::finish() {
   }
   sorted_by_v_ = std::is_sorted(stars_.begin(), stars_.end(),
                                 [](const CatalogStar& a, const CatalogStar& b) { return a.v_mag < b.v_mag; });
+  unit_vectors_.resize(stars_.size());
+  max_proper_motion_mas_yr_ = 0.0;
+  for (std::size_t i = 0; i < stars_.size(); ++i) {
+    const CatalogStar& s = stars_[i];
+    unit_vectors_[i] = Vec3(std::cos(s.dec_rad) * std::cos(s.ra_rad), std::cos(s.dec_rad) * std::sin(s.ra_rad),
+                            std::sin(s.dec_rad));
+    max_proper_motion_mas_yr_ =
+        std::max(max_proper_motion_mas_yr_, std::hypot(s.pm_ra_cosdec_mas_per_yr, s.pm_dec_mas_per_yr));
+  }
 }
 
 StarCatalog StarCatalog::load_binary(const std::string& path) {
@@ -271,7 +280,9 @@ StarSelection StarCatalog::select_brighter_than(double limiting_v_mag) const {
     for (std::size_t i = 0; i < stars_.size(); ++i)
       if (stars_[i].v_mag <= limiting_v_mag) selection.indices.push_back(i);
   }
-  if (stars_.empty() || limiting_v_mag > faintest_v_mag_) {
+  // Magnitudes are given to 0.01 mag: a limit within kCatalogueCutTolerance
+  // of the faintest star is the catalogue's own cut (V <= 9 for Hipparcos/Tycho).
+  if (stars_.empty() || limiting_v_mag > faintest_v_mag_ + kCatalogueCutTolerance_mag) {
     selection.limit_beyond_catalogue = true;
     std::ostringstream msg;
     msg << "limiting_v_mag: " << limiting_v_mag << " is fainter than the faintest star of the catalogue (V = "

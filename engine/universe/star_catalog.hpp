@@ -48,6 +48,9 @@ constexpr double kMinBV = -1.0;
 constexpr double kMaxBV = 6.0;
 constexpr double kMaxParallax_mas = 1.0e4;
 constexpr double kMaxProperMotion_mas_yr = 1.0e5;
+// A limiting magnitude up to this much fainter than the catalogue's faintest
+// star is not reported as beyond the catalogue (magnitudes are given to 0.01).
+constexpr double kCatalogueCutTolerance_mag = 0.05;
 
 struct CatalogStar {
   std::string id;                        // "HT<n>" for the converted catalogue (n = rank in V), user id otherwise
@@ -94,6 +97,10 @@ class StarCatalog {
 
   // All stars with V <= limiting_v_mag. Throws out_of_range for NaN.
   StarSelection select_brighter_than(double limiting_v_mag) const;
+  // Unit vectors of the catalogue positions (ICRS, at the epoch), for culling.
+  const std::vector<Vec3>& unit_vectors() const { return unit_vectors_; }
+  // The largest total proper motion of the catalogue [mas/yr].
+  double max_proper_motion_mas_yr() const { return max_proper_motion_mas_yr_; }
 
  private:
   void finish();
@@ -103,6 +110,8 @@ class StarCatalog {
   double brightest_v_mag_ = 0.0;
   double faintest_v_mag_ = 0.0;
   bool sorted_by_v_ = false;
+  std::vector<Vec3> unit_vectors_;
+  double max_proper_motion_mas_yr_ = 0.0;
 };
 
 // The observer-dependent part of the apparent-place chain for one instant

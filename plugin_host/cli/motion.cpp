@@ -186,6 +186,28 @@ Vec3 rotate(const Quat& q, const Vec3& v) {
   return add(add(v, scale(t, q[0])), cross(u, t));
 }
 
+Quat multiply(const Quat& a, const Quat& b) {
+  return {a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3], a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
+          a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1], a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0]};
+}
+
+Quat conjugate(const Quat& q) { return {q[0], -q[1], -q[2], -q[3]}; }
+
+Quat axis_angle(const Vec3& axis, double angle_rad) {
+  const Vec3 u = normalize(axis);
+  const double s = std::sin(0.5 * angle_rad);
+  return {std::cos(0.5 * angle_rad), u[0] * s, u[1] * s, u[2] * s};
+}
+
+Vec3 angular_velocity(const Quat& q0, const Quat& q1, double dt_s) {
+  Quat d = multiply(q1, conjugate(q0));  // q1 = d q0: d turns frame vectors
+  if (d[0] < 0) d = {-d[0], -d[1], -d[2], -d[3]};
+  const double s = std::sqrt(d[1] * d[1] + d[2] * d[2] + d[3] * d[3]);
+  if (s == 0) return {0, 0, 0};
+  const double angle = 2.0 * std::atan2(s, d[0]);
+  return scale(Vec3{d[1] / s, d[2] / s, d[3] / s}, angle / dt_s);
+}
+
 Quat point_z_axis(const Vec3& boresight, const Vec3& hint) {
   const Vec3 z = normalize(boresight);
   Vec3 x = sub(hint, scale(z, dot(hint, z)));

@@ -100,6 +100,12 @@ Vec3 normalize(const Vec3& a);  // throws std::domain_error for a zero vector
 // orthonormal right-handed body triad expressed in the frame).
 Quat quat_from_axes(const Vec3& x, const Vec3& y, const Vec3& z);
 Vec3 rotate(const Quat& q, const Vec3& v);  // body -> frame
+Quat multiply(const Quat& a, const Quat& b);  // the rotation b, then a
+Quat conjugate(const Quat& q);
+// The rotation by `angle_rad` about the unit vector `axis`.
+Quat axis_angle(const Vec3& axis, double angle_rad);
+// The angular velocity (rad/s, frame axes) that turns q0 into q1 in dt seconds.
+Vec3 angular_velocity(const Quat& q0, const Quat& q1, double dt_s);
 Quat normalize(const Quat& q);              // throws std::domain_error for zero
 
 // Body +Z along `boresight`; body +X along `hint` projected perpendicular to

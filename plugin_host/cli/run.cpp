@@ -157,6 +157,9 @@ class RunContext {
       throw EngineError(where + ": the engine library has no per-frame truth (C ABI 1.2 needed)", EOIR_ERR_ABI_MISMATCH);
     std::size_t n = 0;
     engine_.check(api.truth_count(engine_.handle(), sensor.c_str(), &n), where);
+    // C ABI 1.3 truth: kind, apparent RA/Dec, magnitudes, streak ends.
+    const bool v13 = api.struct_size >= offsetof(eoir_api_v1, target_spectrum_get) + sizeof api.target_spectrum_get &&
+                     api.target_spectrum_get != nullptr;
     const auto num = [](double x) { return std::isfinite(x) ? ojson(x) : ojson(nullptr); };
     ojson out = ojson::array();
     for (std::size_t k = 0; k < n; ++k) {
@@ -172,21 +175,38 @@ class RunContext {
       // 1 at the bottom (the FITS files are written bottom row first).
       o["x_fits"] = num(t.pixel_x + 1.0);
       o["y_fits"] = num(static_cast<double>(pixels.height) - t.pixel_y);
-      // Geometric J2000 direction from the sensor to the object.
-      const std::string name(t.object);
-      const auto target = j2000_position(name, where);
-      const auto self = j2000_position(sensor, where);
-      const double dx = target[0] - self[0], dy = target[1] - self[1], dz = target[2] - self[2];
-      double ra = std::atan2(dy, dx) / kDeg;
-      if (ra < 0) ra += 360.0;
-      o["ra_deg"] = num(ra);
-      o["dec_deg"] = num(std::atan2(dz, std::hypot(dx, dy)) / kDeg);
+      if (v13) {
+        // The engine's direction (the apparent place of stars, the Moon and planets).
+        o["kind"] = t.kind == EOIR_TRUTH_STAR ? "star" : "object";
+        o["ra_deg"] = num(t.right_ascension_deg);
+        o["dec_deg"] = num(t.declination_deg);
+      } else {
+        // Geometric J2000 direction from the sensor to the object.
+        const std::string name(t.object);
+        const auto target = j2000_position(name, where);
+        const auto self = j2000_position(sensor, where);
+        const double dx = target[0] - self[0], dy = target[1] - self[1], dz = target[2] - self[2];
+        double ra = std::atan2(dy, dx) / kDeg;
+        if (ra < 0) ra += 360.0;
+        o["kind"] = "object";
+        o["ra_deg"] = num(ra);
+        o["dec_deg"] = num(std::atan2(dz, std::hypot(dx, dy)) / kDeg);
+      }
       o["range_m"] = num(t.range_m);
       o["point_source"] = t.point_source != 0;
       o["visible"] = t.visible != 0;
       o["effective_irradiance"] = num(t.effective_irradiance);
       o["effective_radiance"] = num(t.effective_radiance);
       o["snr"] = num(t.snr);
+      if (v13 && t.kind == EOIR_TRUTH_STAR) {
+        o["v_mag"] = num(t.v_mag);
+        o["b_v_mag"] = num(t.b_v_mag);
+      }
+      // The streak (start and end of the integration) in FITS pixels.
+      const double sx = v13 ? t.start_pixel_x : t.pixel_x, sy = v13 ? t.start_pixel_y : t.pixel_y;
+      const double ex = v13 ? t.end_pixel_x : t.pixel_x, ey = v13 ? t.end_pixel_y : t.pixel_y;
+      o["start_fits"] = {num(sx + 1.0), num(static_cast<double>(pixels.height) - sy)};
+      o["end_fits"] = {num(ex + 1.0), num(static_cast<double>(pixels.height) - ey)};
       out.push_back(std::move(o));
     }
     return out;
@@ -267,10 +287,10 @@ class RunContext {
     for (auto it = knobs.begin(); it != knobs.end(); ++it) {
       const std::string key = "FID " + it.key();
       const nlohmann::ordered_json& v = it.value();
-      if (v.is_string()) h.set_string(key, v.get<std::string>(), "fidelity (README Fidelity)");
-      else if (v.is_number_integer()) h.set_integer(key, v.get<long long>(), "fidelity (README Fidelity)");
-      else if (v.is_boolean()) h.set_logical(key, v.get<bool>(), "fidelity (README Fidelity)");
-      else if (v.is_number()) h.set_double(key, v.get<double>(), "fidelity (README Fidelity)");
+      if (v.is_string()) h.set_string(key, v.get<std::string>(), "fidelity");
+      else if (v.is_number_integer()) h.set_integer(key, v.get<long long>(), "fidelity");
+      else if (v.is_boolean()) h.set_logical(key, v.get<bool>(), "fidelity");
+      else if (v.is_number()) h.set_double(key, v.get<double>(), "fidelity");
     }
     h.set_string("ORIGIN", "eoir " EOIR_CLI_VERSION, "eoir run");
     return h;
@@ -295,7 +315,8 @@ class RunContext {
 };
 
 // A ds9 region file of a frame's truth: a labelled circle (3 pixels) at each
-// object's RA/Dec in ICRS, green if visible, red if hidden behind another.
+// object's RA/Dec in ICRS, green if visible, red if hidden behind another;
+// catalogue stars in yellow.
 std::string region_text(const ojson& truth, const std::string& sensor, const std::string& time, double radius_deg) {
   std::string out = "# Region file format: DS9 version 4.1\n";
   out += "# eoir run: truth of " + sensor + " at " + time + " (circles of 3 pixels at the objects' RA/Dec)\n";
@@ -308,8 +329,10 @@ std::string region_text(const ojson& truth, const std::string& sensor, const std
     for (char& c : name)
       if (c == '{' || c == '}' || c == '\n') c = '_';
     const bool visible = t["visible"].get<bool>();
+    const bool star = t.contains("kind") && t["kind"] == "star";
     std::snprintf(line, sizeof line, "circle(%.9f,%.9f,%.4f\") # text={%s}%s\n", t["ra_deg"].get<double>(),
-                  t["dec_deg"].get<double>(), radius_deg * 3600.0, name.c_str(), visible ? "" : " color=red");
+                  t["dec_deg"].get<double>(), radius_deg * 3600.0, name.c_str(),
+                  star ? " color=yellow" : visible ? "" : " color=red");
     out += line;
   }
   return out;

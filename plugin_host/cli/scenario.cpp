@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <set>
 #include <sstream>
 
@@ -113,6 +114,19 @@ Attitude parse_attitude(const json& j, const std::string& path) {
       fail(path + ".quaternion", "must be a non-zero quaternion");
     }
     a.type = Attitude::Type::fixed_inertial;
+  } else if (type == "spinning_inertial") {
+    only_keys(j, path, {"type", "quaternion", "axis_body", "rate_deg_s", "epoch"});
+    a = parse_attitude(json{{"type", "fixed_inertial"}, {"quaternion", need(j, path, "quaternion")}}, path);
+    a.type = Attitude::Type::spinning_inertial;
+    a.axis_body = get_vec3(j, path, "axis_body");
+    try {
+      a.axis_body = normalize(a.axis_body);
+    } catch (const std::domain_error&) {
+      fail(path + ".axis_body", "must be a non-zero vector");
+    }
+    a.rate_deg_s = get_number(j, path, "rate_deg_s");
+    if (!(std::fabs(a.rate_deg_s) <= 1e4)) fail(path + ".rate_deg_s", "must be within +-1e4 deg/s");
+    a.epoch_s = j.contains("epoch") ? get_time(j, path, "epoch") : std::nan("");
   } else if (type == "nadir") {
     only_keys(j, path, {"type"});
     a.type = Attitude::Type::nadir;
@@ -121,7 +135,7 @@ Attitude parse_attitude(const json& j, const std::string& path) {
     a.target = get_string(j, path, "target");
     a.type = Attitude::Type::target;
   } else {
-    fail(path + ".type", "'" + type + "' is not one of fixed_inertial, nadir, target");
+    fail(path + ".type", "'" + type + "' is not one of fixed_inertial, spinning_inertial, nadir, target");
   }
   return a;
 }
@@ -281,8 +295,27 @@ Scenario parse_scenario(const json& doc, const std::string& file) {
     }
   }
   if (doc.contains("stars")) {
-    if (!doc["stars"].is_boolean()) fail("stars", "must be true or false");
-    sc.stars = doc["stars"].get<bool>();
+    // true, false, or {"properties": {...}} of the star field "Stars".
+    const json& st = doc["stars"];
+    if (st.is_object()) {
+      only_keys(st, "stars", {"properties"});
+      sc.stars = true;
+      if (st.contains("properties")) {
+        if (!st["properties"].is_object()) fail("stars.properties", "must be an object");
+        json props = st["properties"];
+        // A relative catalogue path is relative to the scenario file.
+        if (props.contains("catalog_file") && props["catalog_file"].is_string()) {
+          const std::string f = props["catalog_file"].get<std::string>();
+          if (!f.empty() && std::filesystem::path(f).is_relative())
+            props["catalog_file"] = (std::filesystem::path(file).parent_path() / f).lexically_normal().string();
+        }
+        sc.body_properties.push_back({"Stars", props, "stars"});
+      }
+    } else if (st.is_boolean()) {
+      sc.stars = st.get<bool>();
+    } else {
+      fail("stars", "must be true, false or {\"properties\": {...}}");
+    }
     if (sc.stars) names.insert("Stars");
   }
 

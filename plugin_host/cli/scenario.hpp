@@ -23,10 +23,13 @@ class ScenarioError : public std::runtime_error {
 };
 
 struct Attitude {
-  enum class Type { none, fixed_inertial, nadir, target };
+  enum class Type { none, fixed_inertial, nadir, target, spinning_inertial };
   Type type = Type::none;
-  Quat quaternion{1, 0, 0, 0};  // body -> J2000 (fixed_inertial)
+  Quat quaternion{1, 0, 0, 0};  // body -> J2000 (fixed_inertial; spinning_inertial at the epoch)
   std::string target;           // object name (target)
+  Vec3 axis_body{0, 0, 1};      // spinning_inertial: the body axis it turns about
+  double rate_deg_s = 0;        //   and how fast
+  double epoch_s = 0;           //   when it has `quaternion` (default: the scenario's start)
 };
 
 // Where the host pushes an object's state from.

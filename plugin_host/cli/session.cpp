@@ -34,8 +34,8 @@ Session::Session(Engine& engine, const Scenario& sc) : engine_(engine), scenario
   for (std::size_t i = 0; i < sc.central_bodies.size(); ++i)
     engine_.check(api.object_add(e, EOIR_KIND_CENTRAL_BODY, sc.central_bodies[i].c_str()),
                   "central_bodies[" + std::to_string(i) + "]");
-  for (const auto& b : sc.body_properties) apply_properties(b.name, b.properties, b.path + ".properties");
   if (sc.stars) engine_.check(api.object_add(e, EOIR_KIND_STAR_FIELD, "Stars"), "stars");
+  for (const auto& b : sc.body_properties) apply_properties(b.name, b.properties, b.path + ".properties");
   for (const auto& o : sc.objects) {
     engine_.check(api.object_add(e, kind_code(o.kind), o.name.c_str()), o.path + ".name");
     apply_properties(o.name, o.properties, o.path + ".properties");
@@ -112,13 +112,15 @@ void Session::apply_properties(const std::string& object, const nlohmann::json& 
   }
 }
 
-void Session::push(const std::string& name, int32_t frame, const PosVel& st, const Quat& q, const std::string& where) {
+void Session::push(const std::string& name, int32_t frame, const PosVel& st, const Quat& q, const std::string& where,
+                   const Vec3& angular_velocity) {
   eoir_state s{};
   s.struct_size = sizeof s;
   s.frame = frame;
   for (int k = 0; k < 3; ++k) {
     s.position[k] = st.position[k];
     s.velocity[k] = st.velocity[k];
+    s.angular_velocity[k] = angular_velocity[k];
   }
   for (int k = 0; k < 4; ++k) s.attitude[k] = q[k];
   engine_.check(engine_.api().object_set_state(engine_.handle(), name.c_str(), nullptr, &s), where);
@@ -140,17 +142,25 @@ PosVel Session::j2000_state(const std::string& name, const std::string& where) {
   return out;
 }
 
-Quat Session::attitude_j2000(const Attitude& a, const PosVel& self, const std::string& where) {
+Quat Session::attitude_j2000(const Attitude& a, const PosVel& self_now, const std::string& where, double dt_s) {
+  PosVel self = self_now;
+  self.position = add(self.position, scale(self.velocity, dt_s));
   try {
     switch (a.type) {
       case Attitude::Type::none:
         return {1, 0, 0, 0};
       case Attitude::Type::fixed_inertial:
         return a.quaternion;
+      case Attitude::Type::spinning_inertial: {
+        const double epoch = std::isnan(a.epoch_s) ? scenario_.start_s : a.epoch_s;
+        const double angle = a.rate_deg_s * (t_s_ + dt_s - epoch) * (3.14159265358979323846 / 180.0);
+        return normalize(multiply(a.quaternion, axis_angle(a.axis_body, angle)));
+      }
       case Attitude::Type::nadir:
         return nadir_attitude(self);
       case Attitude::Type::target: {
-        const PosVel target = j2000_state(a.target, where + ".target");
+        PosVel target = j2000_state(a.target, where + ".target");
+        target.position = add(target.position, scale(target.velocity, dt_s));
         return point_z_axis(sub(target.position, self.position), self.velocity);
       }
     }
@@ -158,6 +168,20 @@ Quat Session::attitude_j2000(const Attitude& a, const PosVel& self, const std::s
     throw ScenarioError(where + ": " + e.what() + " at " + format_iso(t_s_));
   }
   return {1, 0, 0, 0};
+}
+
+Vec3 Session::angular_velocity_j2000(const Attitude& a, const PosVel& self, const std::string& where) {
+  switch (a.type) {
+    case Attitude::Type::none:
+    case Attitude::Type::fixed_inertial:
+      return {0, 0, 0};
+    case Attitude::Type::spinning_inertial:
+      return scale(rotate(attitude_j2000(a, self, where), a.axis_body), a.rate_deg_s * (3.14159265358979323846 / 180.0));
+    default: {
+      constexpr double h = 0.5;  // s
+      return angular_velocity(attitude_j2000(a, self, where, -h), attitude_j2000(a, self, where, h), 2 * h);
+    }
+  }
 }
 
 void Session::set_time(double t) {
@@ -178,8 +202,10 @@ void Session::set_time(double t) {
     if (j2000) host_j2000_[o.name] = st;
     const bool final_now = o.attitude.type == Attitude::Type::none ||
                            (j2000 && o.attitude.type != Attitude::Type::target);
-    const Quat q = final_now && j2000 ? attitude_j2000(o.attitude, st, o.path + ".attitude") : Quat{1, 0, 0, 0};
-    push(o.name, natural_frame(o), st, q, o.path + ".motion");
+    const bool turning = final_now && j2000;
+    const Quat q = turning ? attitude_j2000(o.attitude, st, o.path + ".attitude") : Quat{1, 0, 0, 0};
+    const Vec3 w = turning ? angular_velocity_j2000(o.attitude, st, o.path + ".attitude") : Vec3{0, 0, 0};
+    push(o.name, natural_frame(o), st, q, o.path + ".motion", w);
     if (!final_now) later.push_back(&o);
   }
   // 2. Attitudes that need other objects' positions or a frame change: the
@@ -187,14 +213,14 @@ void Session::set_time(double t) {
   for (const ObjectSpec* o : later) {
     const PosVel self = j2000_state(o->name, o->path + ".motion");
     push(o->name, EOIR_FRAME_J2000, self, attitude_j2000(o->attitude, self, o->path + ".attitude"),
-         o->path + ".attitude");
+         o->path + ".attitude", angular_velocity_j2000(o->attitude, self, o->path + ".attitude"));
   }
   // 3. Sensor pointing (position is the parent's; the engine ignores it).
   for (const auto& s : scenario_.sensors) {
     if (s.pointing.type == Attitude::Type::none) continue;
     const PosVel parent = j2000_state(s.parent, s.path + ".parent");
     push(s.name, EOIR_FRAME_J2000, parent, attitude_j2000(s.pointing, parent, s.path + ".pointing"),
-         s.path + ".pointing");
+         s.path + ".pointing", angular_velocity_j2000(s.pointing, parent, s.path + ".pointing"));
   }
 }
 

@@ -25,8 +25,14 @@ class Session {
  private:
   void apply_properties(const std::string& object, const nlohmann::json& props, const std::string& path);
   PosVel j2000_state(const std::string& name, const std::string& where);
-  Quat attitude_j2000(const Attitude& a, const PosVel& self, const std::string& where);
-  void push(const std::string& name, int32_t frame, const PosVel& s, const Quat& q, const std::string& where);
+  // The attitude (body -> J2000) at this step moved by dt_s seconds, the
+  // states of self and a target extrapolated linearly.
+  Quat attitude_j2000(const Attitude& a, const PosVel& self, const std::string& where, double dt_s = 0);
+  // Its angular velocity (J2000 axes, rad/s): exact for spinning_inertial,
+  // by central differences over +-0.5 s for nadir and target pointing.
+  Vec3 angular_velocity_j2000(const Attitude& a, const PosVel& self, const std::string& where);
+  void push(const std::string& name, int32_t frame, const PosVel& s, const Quat& q, const std::string& where,
+            const Vec3& angular_velocity = {0, 0, 0});
 
   Engine& engine_;
   const Scenario& scenario_;

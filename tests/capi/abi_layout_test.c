@@ -36,7 +36,8 @@ int main(void) {
   CHECK_SIZE(eoir_time, 24);
   CHECK_LAYOUT(eoir_time, jd1, 8);
   CHECK_LAYOUT(eoir_time, jd2, 16);
-  CHECK_SIZE(eoir_state, 88);
+  CHECK_SIZE(eoir_state, 112);
+  CHECK_LAYOUT(eoir_state, angular_velocity, 88); /* 1.3 */
   CHECK_LAYOUT(eoir_state, frame, 4);
   CHECK_LAYOUT(eoir_state, position, 8);
   CHECK_LAYOUT(eoir_state, velocity, 32);
@@ -78,7 +79,7 @@ int main(void) {
   CHECK_LAYOUT(eoir_pick, right_ascension_deg, 112);
   CHECK_LAYOUT(eoir_pick, effective_radiance, 128);
   CHECK_LAYOUT(eoir_pick, temperature_K, 136);
-  CHECK_SIZE(eoir_truth, 128);
+  CHECK_SIZE(eoir_truth, 200);
   CHECK_LAYOUT(eoir_truth, object, 4);
   CHECK_LAYOUT(eoir_truth, pixel_x, 72);
   CHECK_LAYOUT(eoir_truth, range_m, 88);
@@ -86,6 +87,11 @@ int main(void) {
   CHECK_LAYOUT(eoir_truth, visible, 100);
   CHECK_LAYOUT(eoir_truth, effective_irradiance, 104);
   CHECK_LAYOUT(eoir_truth, snr, 120);
+  CHECK_LAYOUT(eoir_truth, kind, 128); /* 1.3 */
+  CHECK_LAYOUT(eoir_truth, right_ascension_deg, 136);
+  CHECK_LAYOUT(eoir_truth, v_mag, 152);
+  CHECK_LAYOUT(eoir_truth, start_pixel_x, 168);
+  CHECK_LAYOUT(eoir_truth, end_pixel_y, 192);
   CHECK_LAYOUT(eoir_api_v1, abi_major, 4);
   CHECK_LAYOUT(eoir_api_v1, version, 16);
   CHECK_LAYOUT(eoir_api_v1, engine_create, 40);

@@ -27,12 +27,38 @@ std::unique_ptr<ScenarioHost> moon_view(const char* mode, const char* band_integ
 }
 
 using Vec = std::array<double, 3>;
-Vec position(ScenarioHost& host, const char* name) {
+eoir_state state(ScenarioHost& host, const char* name) {
   eoir_state s{};
   s.struct_size = sizeof s;
   s.frame = EOIR_FRAME_J2000;
   EXPECT_EQ(host.api().object_get_state(host.handle(), name, &s), EOIR_OK);
+  return s;
+}
+Vec position(ScenarioHost& host, const char* name) {
+  const eoir_state s = state(host, name);
   return {s.position[0], s.position[1], s.position[2]};
+}
+// Where the sensor sees the Moon's centre: one light time ago (linear in its
+// velocity), displaced by the aberration of the sensor's velocity (first
+// order), as astronomers' apparent places of the Moon are.
+Vec apparent_moon_centre(ScenarioHost& host) {
+  const eoir_state m = state(host, "Moon"), s = state(host, "Sensor1");
+  const double c = 299792458.0;
+  Vec p{}, beta{};
+  double range = 0;
+  for (int i = 0; i < 3; ++i) range += (m.position[i] - s.position[i]) * (m.position[i] - s.position[i]);
+  const double tau = std::sqrt(range) / c;
+  range = 0;
+  for (int i = 0; i < 3; ++i) {
+    p[i] = m.position[i] - m.velocity[i] * tau - s.position[i];
+    range += p[i] * p[i];
+    beta[i] = s.velocity[i] / c;
+  }
+  range = std::sqrt(range);
+  const double along = (beta[0] * p[0] + beta[1] * p[1] + beta[2] * p[2]) / range;
+  return {s.position[0] + p[0] + range * (beta[0] - along * p[0] / range),
+          s.position[1] + p[1] + range * (beta[1] - along * p[1] / range),
+          s.position[2] + p[2] + range * (beta[2] - along * p[2] / range)};
 }
 Vec unit_difference(const Vec& a, const Vec& b) {
   const double n = std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
@@ -44,7 +70,7 @@ Vec unit_difference(const Vec& a, const Vec& b) {
 // Smooth mode: each sample's temperature is T_ss cos^(1/4) of its own angle
 // from the subsolar point (eq. 12) on the day side, computed here from the
 // pick's surface point (the sensor's position plus the range along the
-// sample's RA/Dec) and the Sun's direction (within 0.05 K); with exact band integration its radiance equals
+// sample's RA/Dec) about the Moon's apparent centre and the Sun's direction (within 0.05 K); with exact band integration its radiance equals
 // the band integral of that temperature within 0.1 % (the L(T) table). On
 // the night side (the Sun below 0.7 deg, where the night branch starts) the
 // surface cools from the dusk value 390 sin^(1/4)(0.7 deg) = 129.7 K toward
@@ -52,7 +78,7 @@ Vec unit_difference(const Vec& a, const Vec& b) {
 // tested in tests/scene_units).
 TEST(Thermal_4_3_1_3, SmoothModeFollowsEquation12) {
   auto host = moon_view("smooth", "exact");
-  const Vec moon = position(*host, "Moon"), sensor = position(*host, "Sensor1");
+  const Vec moon = apparent_moon_centre(*host), sensor = position(*host, "Sensor1");
   const Vec sun = unit_difference(position(*host, "Sun"), moon);
   int checked = 0;
   for (int y = 16; y < 512; y += 32)

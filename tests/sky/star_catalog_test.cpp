@@ -94,6 +94,9 @@ TEST(StarCatalogBinary, SelectionBeyondTheFaintestStarIsReported) {
   EXPECT_TRUE(deep.limit_beyond_catalogue);
   EXPECT_EQ(deep.indices.size(), catalogue.size());
   EXPECT_NE(deep.warning.find("fainter than the faintest star"), std::string::npos) << deep.warning;
+  // The catalogue's own cut (V <= 9, faintest 8.99) is not beyond it; 9.1 is.
+  EXPECT_FALSE(catalogue.select_brighter_than(9.0).limit_beyond_catalogue);
+  EXPECT_TRUE(catalogue.select_brighter_than(9.1).limit_beyond_catalogue);
 }
 
 TEST(StarCatalogBinary, CorruptFilesNameTheField) {

@@ -42,6 +42,8 @@ EOIR_ERR_FILE_VERSION = -302
 EOIR_ERR_ABI_MISMATCH = -400
 EOIR_ERR_CANCELLED = -500
 EOIR_PROPERTY_FIDELITY = 1
+EOIR_TRUTH_OBJECT = 0
+EOIR_TRUTH_STAR = 1
 EOIR_ERR_INTERNAL = -900
 
 EOIR_MAX_SATELLITES = 16
@@ -105,7 +107,8 @@ class eoir_state(Structure):
                 ("frame", c_int32),
                 ("position", c_double * 3),
                 ("velocity", c_double * 3),
-                ("attitude", c_double * 4)]
+                ("attitude", c_double * 4),
+                ("angular_velocity", c_double * 3)]  # appended in 1.3
 
 
 class eoir_property_info(Structure):
@@ -167,7 +170,17 @@ class eoir_truth(Structure):
                 ("visible", c_int32),
                 ("effective_irradiance", c_double),
                 ("effective_radiance", c_double),
-                ("snr", c_double)]
+                ("snr", c_double),
+                ("kind", c_int32),  # appended in 1.3
+                ("reserved", c_int32),
+                ("right_ascension_deg", c_double),
+                ("declination_deg", c_double),
+                ("v_mag", c_double),
+                ("b_v_mag", c_double),
+                ("start_pixel_x", c_double),
+                ("start_pixel_y", c_double),
+                ("end_pixel_x", c_double),
+                ("end_pixel_y", c_double)]
 
 
 eoir_log_fn = CFUNCTYPE(None, c_void_p, c_int32, c_char_p)

@@ -355,22 +355,25 @@ class Engine:
 
     # ------------------------------------------------------------- state
     def set_state(self, name: str, position, velocity=(0.0, 0.0, 0.0),
-                  attitude=(1.0, 0.0, 0.0, 0.0), frame="j2000", time=None) -> None:
+                  attitude=(1.0, 0.0, 0.0, 0.0), frame="j2000", time=None,
+                  angular_velocity=(0.0, 0.0, 0.0)) -> None:
         """Push a state: position in metres (or lat deg, lon deg, height m for
         "geodetic"), velocity in m/s, attitude quaternion (w, x, y, z) body to
-        frame; time None means the engine time."""
+        frame, angular velocity in rad/s about the frame's axes (the attitude
+        turns at it between pushes); time None means the engine time."""
         st = _lib.eoir_state()
         st.struct_size = ctypes.sizeof(st)
         st.frame = _lookup(FRAMES, frame, "frame")
         st.position[:] = _vector(position, 3, "position")
         st.velocity[:] = _vector(velocity, 3, "velocity")
         st.attitude[:] = _vector(attitude, 4, "attitude")
+        st.angular_velocity[:] = _vector(angular_velocity, 3, "angular_velocity")
         t = None if time is None else byref(_to_c_time(time))
         check(lib.eoir_object_set_state(self.handle, encode(name), t, byref(st)))
 
     def get_state(self, name: str, frame="j2000") -> Dict[str, Any]:
         """The state at the engine time as a dict with numpy arrays position,
-        velocity, attitude and the frame name."""
+        velocity, attitude, angular_velocity (rad/s) and the frame name."""
         st = _lib.eoir_state()
         st.struct_size = ctypes.sizeof(st)
         st.frame = _lookup(FRAMES, frame, "frame")
@@ -380,6 +383,7 @@ class Engine:
             "position": np.array(st.position[:], dtype=np.float64),
             "velocity": np.array(st.velocity[:], dtype=np.float64),
             "attitude": np.array(st.attitude[:], dtype=np.float64),
+            "angular_velocity": np.array(st.angular_velocity[:], dtype=np.float64),
         }
 
     # -------------------------------------------------------- properties
@@ -575,10 +579,14 @@ class Engine:
 
     def truth(self, sensor: str) -> List[Dict[str, Any]]:
         """Per-frame truth of the last frame rendered for sensor
-        (eoir_truth_count / eoir_truth_get): one dict per object in the field
-        with keys object, pixel_x, pixel_y (sub-pixel, 0 = centre of pixel 0,
-        rows from the top), range_m, point_source (bool), visible (bool),
-        effective_irradiance (W/cm^2), effective_radiance (W/(cm^2 sr)), snr.
+        (eoir_truth_count / eoir_truth_get): one dict per object or catalogue
+        star in the field with keys kind ("object" or "star"), object (name
+        or catalogue id), pixel_x, pixel_y (sub-pixel, 0 = centre of pixel 0,
+        rows from the top), range_m (0 for stars), point_source (bool),
+        visible (bool), effective_irradiance (W/cm^2), effective_radiance
+        (W/(cm^2 sr)), snr, ra_deg, dec_deg (the apparent direction, J2000
+        axes), v_mag, b_v_mag (stars), start and end (pixel_x, pixel_y) at
+        the start and the end of the integration (a streak).
         Raises NoStateError if no frame was rendered."""
         s = encode(sensor)
         n = c_size_t()
@@ -598,6 +606,13 @@ class Engine:
                 "effective_irradiance": float(t.effective_irradiance),
                 "effective_radiance": float(t.effective_radiance),
                 "snr": float(t.snr),
+                "kind": "star" if t.kind == _lib.EOIR_TRUTH_STAR else "object",
+                "ra_deg": float(t.right_ascension_deg),
+                "dec_deg": float(t.declination_deg),
+                "v_mag": float(t.v_mag),
+                "b_v_mag": float(t.b_v_mag),
+                "start": (float(t.start_pixel_x), float(t.start_pixel_y)),
+                "end": (float(t.end_pixel_x), float(t.end_pixel_y)),
             })
         return out
 

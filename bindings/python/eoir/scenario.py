@@ -136,6 +136,8 @@ class Scenario:
         for key, value, comment in cards:
             if key in ("COMMENT", "HISTORY"):
                 header.add_comment(value) if key == "COMMENT" else header.add_history(value)
+            elif len(key) > 8 or " " in key:  # e.g. the fidelity knobs, HIERARCH FID <NAME>
+                header.append(fits.Card("HIERARCH " + key, value, comment))
             else:
                 header.append(fits.Card(key, value, comment))
         return header

@@ -176,13 +176,17 @@ typedef struct eoir_state {
   double position[3];   /* metres (or lat, lon, height for GEODETIC) */
   double velocity[3];   /* m/s */
   double attitude[4];   /* unit quaternion {w, x, y, z}: body to frame */
+  /* appended in 1.3; read and written only when struct_size covers it */
+  double angular_velocity[3]; /* rad/s about the frame's axes (at most 1000) */
 } eoir_state;
 
 /* State of an object at a time (NULL time = the engine time). Between pushes
  * the engine moves the object along its velocity (constant-velocity
- * extrapolation). Central bodies move on their own (ERFA ephemerides) and
- * refuse states. Sensors take their parent's position; a sensor's attitude
- * set here overrides the parent's. */
+ * extrapolation) and turns its attitude at the angular velocity (point
+ * sources streak across the focal plane during the integration time as both
+ * move). Central bodies move on their own (ERFA ephemerides) and refuse
+ * states. Sensors take their parent's position; a sensor's attitude set here
+ * overrides the parent's. */
 EOIR_API eoir_status eoir_object_set_state(eoir_engine engine, const char* name,
                                            const eoir_time* time, const eoir_state* state);
 /* State at the engine time in the requested frame (struct_size and frame set
@@ -395,18 +399,31 @@ EOIR_API eoir_status eoir_target_spectrum_get(eoir_engine engine, const char* se
                                               double* wavelengths_um, double* irradiance_W_cm2_um, size_t capacity,
                                               size_t* count_out);
 
-/* Per-frame truth: each object in the field of the last frame of `sensor`. */
+/* Per-frame truth: each object in the field of the last frame of `sensor`
+ * (central bodies only where imaged as point sources) and, with a star
+ * field, each catalogue star imaged (1.3). */
+#define EOIR_TRUTH_OBJECT 0
+#define EOIR_TRUTH_STAR 1
+
 typedef struct eoir_truth {
   uint32_t struct_size;
-  char object[64];
+  char object[64];           /* object name, or the star's catalogue id */
   double pixel_x;            /* sub-pixel position, 0 = centre of pixel 0 (columns as images) */
   double pixel_y;            /* 0 = centre of the top row */
-  double range_m;
+  double range_m;            /* 0 for stars */
   int32_t point_source;      /* 1: Omega_T < Omega_EIFOV (spec 5.13.1) */
   int32_t visible;           /* not hidden behind another object */
   double effective_irradiance;  /* W/cm^2, point sources (eq. 61) */
   double effective_radiance;    /* W/(cm^2 sr), extended targets (eq. 74) */
   double snr;                   /* eq. 65 or 76 */
+  /* appended in 1.3; written only when struct_size covers them */
+  int32_t kind;                 /* EOIR_TRUTH_OBJECT or EOIR_TRUTH_STAR */
+  int32_t reserved;
+  double right_ascension_deg;   /* direction from the sensor (the apparent place), J2000 axes */
+  double declination_deg;
+  double v_mag, b_v_mag;        /* stars: Johnson V and B-V; 0 for objects */
+  double start_pixel_x, start_pixel_y;  /* position at the start and the end of the integration */
+  double end_pixel_x, end_pixel_y;      /* (a point source's streak; the frame-time position otherwise) */
 } eoir_truth;
 
 EOIR_API eoir_status eoir_truth_count(eoir_engine engine, const char* sensor, size_t* count_out);

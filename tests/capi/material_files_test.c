@@ -1,0 +1,187 @@
+/* Bad material files through the C ABI (issue 8; spec 4.1.4.1, DESIGN 5
+ * "bad input gets a status code and a message naming the field"), C99:
+ * eoir_material_load refuses non-monotonic wavelengths, reflectance outside
+ * [0, 1], NaN (the bare token Python's json.dump writes, a string, or a
+ * number beyond a double), missing or unknown fields and BRDF parameters of
+ * eq. 1 out of range with EOIR_ERR_CORRUPT_FILE and a message naming the
+ * field and the file; a missing file is EOIR_ERR_IO naming the path; an
+ * unknown material name on an object is EOIR_ERR_UNKNOWN_NAME naming the
+ * field and the name. A refused file adds nothing; a good one is used by
+ * the render. */
+#define _XOPEN_SOURCE 700
+#include <stdlib.h>
+#include <unistd.h>
+
+#include "check.h"
+
+static char dir[4096];
+
+static const char* at(const char* name) {
+  static char buf[8][4200];
+  static int k = 0;
+  k = (k + 1) % 8;
+  snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
+  return buf[k];
+}
+
+/* A material file whose brdf object, wavelength and reflectance arrays are
+ * given as JSON text. */
+static const char* material(const char* file, const char* name, const char* brdf, const char* wavelengths,
+                            const char* reflectance, const char* extra) {
+  const char* path = at(file);
+  FILE* f = fopen(path, "wb");
+  if (f == NULL) {
+    perror(path);
+    exit(2);
+  }
+  fprintf(f,
+          "{\"format\": \"eoir-material\", \"version\": 1, \"name\": \"%s\",\n"
+          " \"description\": \"test material\", \"sources\": [\"material_files_test.c\"],\n"
+          " \"brdf\": %s,\n \"wavelength_um\": %s,\n \"reflectance\": %s%s}\n",
+          name, brdf, wavelengths, reflectance, extra);
+  fclose(f);
+  return path;
+}
+
+static const char* lambert = "{\"k0\": 1.0, \"k1\": 0.0, \"alpha\": 1.0, \"beta\": 1.0}";
+static const char* wl4 = "[0.28, 1.0, 10.0, 28.0]";
+static const char* r4 = "[0.5, 0.5, 0.5, 0.5]";
+
+static void set_state(eoir_engine e, const char* name, double x, double y, double z, const double q[4]) {
+  eoir_state s;
+  memset(&s, 0, sizeof s);
+  s.struct_size = sizeof s;
+  s.frame = EOIR_FRAME_J2000;
+  s.position[0] = x;
+  s.position[1] = y;
+  s.position[2] = z;
+  memcpy(s.attitude, q, sizeof s.attitude);
+  OK(eoir_object_set_state(e, name, NULL, &s));
+}
+
+int main(void) {
+  eoir_engine e = NULL;
+  eoir_time t;
+  const double identity[4] = {1, 0, 0, 0};
+  double radiance_good = 0;
+  size_t count = 0;
+
+  snprintf(dir, sizeof dir, "%s/eoir_material_files_XXXXXX", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp");
+  if (mkdtemp(dir) == NULL) return perror("mkdtemp"), 2;
+
+  OK(eoir_engine_create(NULL, &e));
+  OK(eoir_time_from_iso("2010-03-20T12:00:00Z", &t));
+  OK(eoir_engine_set_time(e, &t));
+  /* A host satellite looking along +z at a sphere 10 km away. */
+  OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Host"));
+  OK(eoir_set_string(e, "Host", "shape", "none"));
+  OK(eoir_sensor_add(e, "Cam", "Host"));
+  OK(eoir_set_integer(e, "Cam", "horizontal_pixels", 8));
+  OK(eoir_set_integer(e, "Cam", "vertical_pixels", 8));
+  OK(eoir_set_number(e, "Cam", "band_low_um", 8.0));
+  OK(eoir_set_number(e, "Cam", "band_high_um", 12.0));
+  OK(eoir_set_bool(e, "Cam", "noise_enabled", 0));
+  OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Sat"));
+  OK(eoir_set_array(e, "Sat", "dimensions_m", (const double[]){100.0}, 1));
+  set_state(e, "Host", 5.0e7, 0, 0, identity);
+  set_state(e, "Sat", 5.0e7, 0, 1.0e4, identity);
+
+  /* A good file loads and the render uses it: emissivity 1 - 0.5. */
+  OK(eoir_material_load(e, material("good.json", "test_gray_half", lambert, wl4, r4, "")));
+  OK(eoir_set_string(e, "Sat", "material", "test_gray_half"));
+  OK(eoir_render(e, "Cam"));
+  {
+    eoir_pick p;
+    memset(&p, 0, sizeof p);
+    p.struct_size = sizeof p;
+    OK(eoir_pick_get(e, "Cam", 1, 4, 4, &p, NULL, NULL, 0, &count));
+    CHECK(p.hit && strcmp(p.object, "Sat") == 0);
+    radiance_good = p.effective_radiance;
+    CHECK(radiance_good > 0);
+  }
+
+  /* Non-monotonic and non-positive wavelengths. */
+  FAILS(eoir_material_load(e, material("nonmono.json", "bad1", lambert, "[0.28, 1.0, 0.9, 28.0]", r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "wavelength_um[2]");
+  FAILS(eoir_material_load(e, at("nonmono.json")), EOIR_ERR_CORRUPT_FILE, "nonmono.json");
+  FAILS(eoir_material_load(e, material("repeat.json", "bad1", lambert, "[0.28, 1.0, 1.0, 28.0]", r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "wavelength_um[2]");
+  FAILS(eoir_material_load(e, material("negwl.json", "bad1", lambert, "[-0.28, 1.0, 10.0, 28.0]", r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "wavelength_um[0]");
+  FAILS(eoir_material_load(e, material("count.json", "bad1", lambert, wl4, "[0.5, 0.5, 0.5]", "")),
+        EOIR_ERR_CORRUPT_FILE, "reflectance");
+
+  /* Reflectance outside [0, 1]. */
+  FAILS(eoir_material_load(e, material("above.json", "bad2", lambert, wl4, "[0.5, 1.2, 0.5, 0.5]", "")),
+        EOIR_ERR_CORRUPT_FILE, "reflectance[1]");
+  FAILS(eoir_material_load(e, at("above.json")), EOIR_ERR_CORRUPT_FILE, "above.json");
+  FAILS(eoir_material_load(e, material("below.json", "bad2", lambert, wl4, "[-0.01, 0.5, 0.5, 0.5]", "")),
+        EOIR_ERR_CORRUPT_FILE, "reflectance[0]");
+
+  /* NaN: the bare token (not JSON, but what Python's json.dump writes), a
+   * string, Infinity, and a number beyond a double. */
+  FAILS(eoir_material_load(e, material("nan.json", "bad3", lambert, wl4, "[0.5, NaN, 0.5, 0.5]", "")),
+        EOIR_ERR_CORRUPT_FILE, "reflectance[1]");
+  FAILS(eoir_material_load(e, at("nan.json")), EOIR_ERR_CORRUPT_FILE, "nan.json");
+  FAILS(eoir_material_load(e, material("nanwl.json", "bad3", lambert, "[0.28, 1.0, NaN, 28.0]", r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "wavelength_um[2]");
+  FAILS(eoir_material_load(e, material("nanstr.json", "bad3", lambert, wl4, "[0.5, \"NaN\", 0.5, 0.5]", "")),
+        EOIR_ERR_CORRUPT_FILE, "reflectance[1]");
+  FAILS(eoir_material_load(e, material("inf.json", "bad3", lambert, wl4, "[0.5, 0.5, Infinity, 0.5]", "")),
+        EOIR_ERR_CORRUPT_FILE, "reflectance[2]");
+  FAILS(eoir_material_load(e, material("huge.json", "bad3", lambert, wl4, "[0.5, 0.5, 0.5, 1e999]", "")),
+        EOIR_ERR_CORRUPT_FILE, "reflectance[3]");
+  FAILS(eoir_material_load(e, material("nank0.json", "bad3", "{\"k0\": NaN, \"k1\": 0.0, \"alpha\": 1.0, \"beta\": 1.0}",
+                                       wl4, r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "brdf.k0");
+
+  /* BRDF parameters of eq. 1 out of range, or missing. */
+  FAILS(eoir_material_load(e, material("k0.json", "bad4", "{\"k0\": 1.5, \"k1\": 0.0, \"alpha\": 1.0, \"beta\": 1.0}",
+                                       wl4, r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "brdf.k0");
+  FAILS(eoir_material_load(e, at("k0.json")), EOIR_ERR_CORRUPT_FILE, "k0.json");
+  FAILS(eoir_material_load(e, material("k1.json", "bad4", "{\"k0\": 0.5, \"k1\": -0.5, \"alpha\": 1.0, \"beta\": 1.0}",
+                                       wl4, r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "brdf.k1");
+  FAILS(eoir_material_load(e, material("alpha.json", "bad4",
+                                       "{\"k0\": 0.5, \"k1\": 0.5, \"alpha\": -1.0, \"beta\": 1.0}", wl4, r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "brdf.alpha");
+  FAILS(eoir_material_load(e, material("beta.json", "bad4",
+                                       "{\"k0\": 0.5, \"k1\": 0.5, \"alpha\": 1.0, \"beta\": 1e6}", wl4, r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "brdf.beta");
+  FAILS(eoir_material_load(e, material("nok1.json", "bad4", "{\"k0\": 0.5, \"alpha\": 1.0, \"beta\": 1.0}", wl4, r4,
+                                       "")),
+        EOIR_ERR_CORRUPT_FILE, "brdf.k1");
+
+  /* Unknown field, wrong format, missing file. */
+  FAILS(eoir_material_load(e, material("unknown.json", "bad5", lambert, wl4, r4, ", \"reflectence\": [1]")),
+        EOIR_ERR_CORRUPT_FILE, "reflectence");
+  FAILS(eoir_material_load(e, at("no_such_file.json")), EOIR_ERR_IO, "no_such_file.json");
+
+  /* None of the refused files added a material: naming one is an unknown
+   * name, refused when set (the message names the field and the name, and
+   * lists the known materials); so is a name that was never loaded, and the
+   * empty name. The object keeps its material. */
+  FAILS(eoir_set_string(e, "Sat", "material", "bad2"), EOIR_ERR_UNKNOWN_NAME, "material: unknown material 'bad2'");
+  FAILS(eoir_set_string(e, "Sat", "material", "bad3"), EOIR_ERR_UNKNOWN_NAME, "test_gray_half");
+  FAILS(eoir_set_string(e, "Sat", "material", "no_such_material"), EOIR_ERR_UNKNOWN_NAME, "'no_such_material'");
+  FAILS(eoir_set_string(e, "Sat", "material", ""), EOIR_ERR_UNKNOWN_NAME, "material");
+  {
+    char name[64];
+    OK(eoir_get_string(e, "Sat", "material", name, sizeof name));
+    CHECK(strcmp(name, "test_gray_half") == 0);
+  }
+
+  /* The engine is unchanged by the refusals: the good material renders the same. */
+  OK(eoir_render(e, "Cam"));
+  {
+    eoir_pick p;
+    memset(&p, 0, sizeof p);
+    p.struct_size = sizeof p;
+    OK(eoir_pick_get(e, "Cam", 1, 4, 4, &p, NULL, NULL, 0, &count));
+    CHECK(p.effective_radiance == radiance_good);
+  }
+
+  eoir_engine_destroy(e);
+  return CHECK_SUMMARY();
+}

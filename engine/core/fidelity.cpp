@@ -124,7 +124,8 @@ const std::vector<Spec>& fidelity_properties() {
     t.push_back(enum_property<F, PointTail>(
         "point_tail",
         "Point sources beyond the core box: direct (pixel by pixel from a table, cost ~ window^2 per source), "
-        "multilevel (grids shared by all sources, cost ~ pixels per frame) or auto (the cheaper for the frame)",
+        "multilevel (grids shared by all sources, cost ~ pixels per frame) or auto (direct unless costly and "
+        "multilevel over 4 times cheaper for the frame)",
         [](F& f) -> auto& { return f.point_tail; }, point_tail_names(), true));
     t.push_back(number_property<F>("point_table_max_mib", "MiB",
                                    "Point sources: bound on the memory of the model's tables (offsets are "

@@ -27,7 +27,8 @@ enum class SpectralQuadrature : int { interval_midpoint = 0, interval_left_edge 
 // (sensor/point_source_model.hpp): pixel by pixel from a table (direct, cost
 // ~ window^2 per source), through grids of spacing a, 2a, 4a ... pixels
 // shared by all sources (multilevel, cost ~ pixels per frame), or for each
-// frame direct unless multilevel costs over 4 times less (automatic).
+// frame direct unless it is costly and multilevel costs over 4 times less
+// (automatic). Both keep each source's energy, centroid and second moments.
 enum class PointTail : int { automatic = 0, direct = 1, multilevel = 2 };
 
 // How far the PSF reaches in the focal plane: k_d lambda F# of diffraction

@@ -3,42 +3,55 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sensor/catmull_rom.hpp"
+
 namespace eoir::sensor {
 namespace {
 
-double tent(double t) { return std::max(0.0, 1.0 - std::abs(t)); }
+constexpr std::int64_t kPad = 2;  // output nodes beyond the image's on each side (the cubic's reach)
 
-// Output nodes 0..M with M h >= size - 1: every pixel lies between two nodes.
-std::int64_t nodes_covering(std::int64_t size_px, std::int64_t spacing_px) {
-  return (std::max<std::int64_t>(size_px, 1) - 1 + spacing_px - 1) / spacing_px + 1;
+// Index of the last node at spacing h with last * h >= size - 1: nodes
+// 0..last span the image.
+std::int64_t last_node(std::int64_t size_px, std::int64_t spacing_px) {
+  return (std::max<std::int64_t>(size_px, 1) - 1 + spacing_px - 1) / spacing_px;
 }
 
-// Linear interpolation along one axis from nodes at multiples of `ratio`
-// (in units of the destination's nodes) to every destination node:
-// dst[i * dst_stride] += src at i / ratio, for i < dst_count.
-void interpolate_line(const double* src, std::int64_t src_stride, double* dst, std::int64_t dst_stride,
-                      std::int64_t dst_count, std::int64_t ratio) {
+// dst[i dst_stride] += the Catmull-Rom interpolation at node coordinate
+// (dst_first + i) / ratio of src (node src_first + k at src[k src_stride],
+// k < src_count), for i < dst_count. Taps beyond src are left out (they
+// fall where the weight is zero or beyond the image).
+void interpolate_line(const double* src, std::int64_t src_stride, std::int64_t src_first, std::int64_t src_count,
+                      double* dst, std::int64_t dst_stride, std::int64_t dst_first, std::int64_t dst_count,
+                      std::int64_t ratio) {
   for (std::int64_t i = 0; i < dst_count; ++i) {
-    const std::int64_t n = i / ratio, r = i - n * ratio;
-    double v = src[n * src_stride];
-    if (r != 0) {
-      const double f = static_cast<double>(r) / static_cast<double>(ratio);
-      v += f * (src[(n + 1) * src_stride] - v);
+    const std::int64_t at = dst_first + i;
+    const std::int64_t n0 = at >= 0 ? at / ratio : -((-at + ratio - 1) / ratio);  // floor(at / ratio)
+    double w[4];
+    catmull_rom_weights(static_cast<double>(at - n0 * ratio) / static_cast<double>(ratio), w);
+    double v = 0;
+    for (int k = 0; k < 4; ++k) {
+      const std::int64_t j = n0 - 1 + k - src_first;
+      if (j >= 0 && j < src_count && w[k] != 0) v += w[k] * src[j * src_stride];
     }
     dst[i * dst_stride] += v;
   }
 }
 
-// Adds the bilinear interpolation of `coarse` (nodes_x x nodes_y, spacing
-// `ratio` destination nodes) to `fine` (fine_x x fine_y).
-void interpolate(const std::vector<double>& coarse, std::int64_t nodes_x, std::int64_t nodes_y, std::int64_t ratio,
-                 double* fine, std::int64_t fine_x, std::int64_t fine_y) {
-  std::vector<double> rows(static_cast<std::size_t>(nodes_y * fine_x), 0.0);  // along x first
-  for (std::int64_t r = 0; r < nodes_y; ++r)
-    interpolate_line(&coarse[static_cast<std::size_t>(r * nodes_x)], 1, &rows[static_cast<std::size_t>(r * fine_x)], 1,
-                     fine_x, ratio);
-  for (std::int64_t c = 0; c < fine_x; ++c)
-    interpolate_line(&rows[static_cast<std::size_t>(c)], fine_x, fine + c, fine_x, fine_y, ratio);
+struct NodeRange {
+  std::int64_t first, count;
+};
+
+// Adds the bicubic interpolation of `coarse` (nodes cx x cy, spacing `ratio`
+// destination nodes) to `fine` (nodes fx x fy).
+void interpolate(const std::vector<double>& coarse, NodeRange cx, NodeRange cy, std::int64_t ratio, double* fine,
+                 NodeRange fx, NodeRange fy) {
+  std::vector<double> rows(static_cast<std::size_t>(cy.count * fx.count), 0.0);  // along x first
+  for (std::int64_t r = 0; r < cy.count; ++r)
+    interpolate_line(&coarse[static_cast<std::size_t>(r * cx.count)], 1, cx.first, cx.count,
+                     &rows[static_cast<std::size_t>(r * fx.count)], 1, fx.first, fx.count, ratio);
+  for (std::int64_t c = 0; c < fx.count; ++c)
+    interpolate_line(&rows[static_cast<std::size_t>(c)], fx.count, cy.first, cy.count, fine + c, fx.count, fy.first,
+                     fy.count, ratio);
 }
 
 }  // namespace
@@ -60,7 +73,7 @@ std::vector<HaloLevel> halo_levels(const FocalPlaneSamples& e0, std::int64_t tap
     const std::int64_t h = a << (l - 1);
     const double hd = static_cast<double>(h);
     const bool last = l == count;
-    const std::int64_t r0 = (std::min(4 * h, half) + h - 1) / h + 1;
+    const std::int64_t r0 = (std::min(4 * h, half) + h - 1) / h + 2;
     const std::int64_t side0 = 2 * r0 + 1;
     std::vector<double> k(static_cast<std::size_t>(side0 * side0), 0.0);
     for (std::int64_t dy = -half; dy <= half; ++dy)
@@ -72,12 +85,13 @@ std::vector<HaloLevel> halo_levels(const FocalPlaneSamples& e0, std::int64_t tap
         if (t == 0) continue;
         const auto jx0 = static_cast<std::int64_t>(std::floor(static_cast<double>(dx) / hd));
         const auto jy0 = static_cast<std::int64_t>(std::floor(static_cast<double>(dy) / hd));
-        for (std::int64_t jy = jy0; jy <= jy0 + 1; ++jy)
-          for (std::int64_t jx = jx0; jx <= jx0 + 1; ++jx) {
-            const double w = tent(static_cast<double>(dx) / hd - static_cast<double>(jx)) *
-                             tent(static_cast<double>(dy) / hd - static_cast<double>(jy));
-            if (w > 0) k[static_cast<std::size_t>((jy + r0) * side0 + jx + r0)] += t * w;
+        for (std::int64_t jy = jy0 - 1; jy <= jy0 + 2; ++jy) {
+          const double wy = catmull_rom(static_cast<double>(dy) / hd - static_cast<double>(jy));
+          for (std::int64_t jx = jx0 - 1; jx <= jx0 + 2; ++jx) {
+            const double w = wy * catmull_rom(static_cast<double>(dx) / hd - static_cast<double>(jx));
+            if (w != 0) k[static_cast<std::size_t>((jy + r0) * side0 + jx + r0)] += t * w;
           }
+        }
       }
     // Trim to the nodes that hold anything.
     std::int64_t reach = 0;
@@ -104,12 +118,14 @@ HaloGrids::HaloGrids(const std::vector<HaloLevel>& levels, std::int64_t width, s
   for (const HaloLevel& level : levels) {
     Grid g;
     g.level = &level;
-    g.nodes_x = nodes_covering(width, level.spacing_px);
-    g.nodes_y = nodes_covering(height, level.spacing_px);
-    g.reach = level.reach_nodes;
-    const std::int64_t rows = g.nodes_y + 2 * g.reach;
-    g.input.assign(static_cast<std::size_t>((g.nodes_x + 2 * g.reach) * rows), 0.0);
-    g.row_used.assign(static_cast<std::size_t>(rows), 0);
+    g.out_first = -kPad;
+    g.out_x = last_node(width, level.spacing_px) + 1 + 2 * kPad;
+    g.out_y = last_node(height, level.spacing_px) + 1 + 2 * kPad;
+    g.in_first = g.out_first - level.reach_nodes;
+    g.in_x = g.out_x + 2 * level.reach_nodes;
+    g.in_y = g.out_y + 2 * level.reach_nodes;
+    g.input.assign(static_cast<std::size_t>(g.in_x * g.in_y), 0.0);
+    g.row_used.assign(static_cast<std::size_t>(g.in_y), 0);
     grids_.push_back(std::move(g));
   }
 }
@@ -119,42 +135,46 @@ void HaloGrids::spread(double x_px, double y_px, double electrons) {
     const double h = static_cast<double>(g.level->spacing_px);
     const double gx = x_px / h, gy = y_px / h;
     const double fx0 = std::floor(gx), fy0 = std::floor(gy);
-    const double fx = gx - fx0, fy = gy - fy0;
-    const auto nx0 = static_cast<std::int64_t>(fx0), ny0 = static_cast<std::int64_t>(fy0);
-    const std::int64_t stride = g.nodes_x + 2 * g.reach;
-    for (std::int64_t b = 0; b <= 1; ++b) {
-      const std::int64_t ny = ny0 + b;
-      if (ny < -g.reach || ny >= g.nodes_y + g.reach) continue;  // too far off to reach the image
-      const double wy = b ? fy : 1.0 - fy;
-      for (std::int64_t a = 0; a <= 1; ++a) {
-        const std::int64_t nx = nx0 + a;
-        if (nx < -g.reach || nx >= g.nodes_x + g.reach) continue;
-        const double wx = a ? fx : 1.0 - fx;
-        g.input[static_cast<std::size_t>((ny + g.reach) * stride + nx + g.reach)] += electrons * wx * wy;
-        g.row_used[static_cast<std::size_t>(ny + g.reach)] = 1;
+    // Nodes n0 - 1..n0 + 2 along each axis, as input array indices.
+    const std::int64_t ix0 = static_cast<std::int64_t>(fx0) - 1 - g.in_first;
+    const std::int64_t iy0 = static_cast<std::int64_t>(fy0) - 1 - g.in_first;
+    if (ix0 + 3 < 0 || iy0 + 3 < 0 || ix0 >= g.in_x || iy0 >= g.in_y) continue;  // too far off to reach the image
+    double wx[4], wy[4];
+    catmull_rom_weights(gx - fx0, wx);
+    catmull_rom_weights(gy - fy0, wy);
+    for (std::int64_t b = 0; b < 4; ++b) {
+      const std::int64_t iy = iy0 + b;
+      if (iy < 0 || iy >= g.in_y || wy[b] == 0) continue;
+      const double ey = electrons * wy[b];
+      double* row = &g.input[static_cast<std::size_t>(iy * g.in_x)];
+      for (std::int64_t a = 0; a < 4; ++a) {
+        const std::int64_t ix = ix0 + a;
+        if (ix >= 0 && ix < g.in_x) row[ix] += ey * wx[a];
       }
+      g.row_used[static_cast<std::size_t>(iy)] = 1;
     }
   }
 }
 
 void HaloGrids::add_to(std::vector<double>& image) {
   if (grids_.empty()) return;
-  // Convolve each level: output(m) = sum_J K(J) input(m - J).
+  // Convolve each level: output(m) = sum_J K(J) input(m - J); output index o
+  // and input index o + R - J hold nodes m and m - J.
   for (Grid& g : grids_) {
-    g.output.assign(static_cast<std::size_t>(g.nodes_x * g.nodes_y), 0.0);
-    const std::int64_t r = g.reach, side = 2 * r + 1, stride = g.nodes_x + 2 * r;
+    g.output.assign(static_cast<std::size_t>(g.out_x * g.out_y), 0.0);
+    const std::int64_t r = g.level->reach_nodes, side = 2 * r + 1;
     const std::vector<double>& k = g.level->kernel;
-    for (std::int64_t iy = 0; iy < g.nodes_y + 2 * r; ++iy) {
+    for (std::int64_t iy = 0; iy < g.in_y; ++iy) {
       if (!g.row_used[static_cast<std::size_t>(iy)]) continue;
       for (std::int64_t jy = -r; jy <= r; ++jy) {
-        const std::int64_t my = iy - r + jy;
-        if (my < 0 || my >= g.nodes_y) continue;
-        double* __restrict out = &g.output[static_cast<std::size_t>(my * g.nodes_x)];
+        const std::int64_t oy = iy - r + jy;
+        if (oy < 0 || oy >= g.out_y) continue;
+        double* __restrict out = &g.output[static_cast<std::size_t>(oy * g.out_x)];
         for (std::int64_t jx = -r; jx <= r; ++jx) {
           const double kv = k[static_cast<std::size_t>((jy + r) * side + jx + r)];
           if (kv == 0) continue;
-          const double* __restrict in = &g.input[static_cast<std::size_t>(iy * stride + r - jx)];
-          for (std::int64_t mx = 0; mx < g.nodes_x; ++mx) out[mx] += kv * in[mx];
+          const double* __restrict in = &g.input[static_cast<std::size_t>(iy * g.in_x + r - jx)];
+          for (std::int64_t ox = 0; ox < g.out_x; ++ox) out[ox] += kv * in[ox];
         }
       }
     }
@@ -163,19 +183,21 @@ void HaloGrids::add_to(std::vector<double>& image) {
   for (std::size_t l = grids_.size() - 1; l > 0; --l) {
     const Grid& coarse = grids_[l];
     Grid& fine = grids_[l - 1];
-    interpolate(coarse.output, coarse.nodes_x, coarse.nodes_y, 2, fine.output.data(), fine.nodes_x, fine.nodes_y);
+    interpolate(coarse.output, {coarse.out_first, coarse.out_x}, {coarse.out_first, coarse.out_y}, 2,
+                fine.output.data(), {fine.out_first, fine.out_x}, {fine.out_first, fine.out_y});
   }
   const Grid& first = grids_.front();
-  interpolate(first.output, first.nodes_x, first.nodes_y, first.level->spacing_px, image.data(), width_, height_);
+  interpolate(first.output, {first.out_first, first.out_x}, {first.out_first, first.out_y},
+              first.level->spacing_px, image.data(), {0, width_}, {0, height_});
 }
 
 double HaloGrids::cost(const std::vector<HaloLevel>& levels, std::int64_t width, std::int64_t height) {
-  double total = 4.0 * static_cast<double>(width) * static_cast<double>(height);
+  double total = 8.0 * static_cast<double>(width) * static_cast<double>(height);
   for (const HaloLevel& level : levels) {
     const double side = static_cast<double>(2 * level.reach_nodes + 1);
-    const auto nx = static_cast<double>(nodes_covering(width, level.spacing_px));
-    const auto ny = static_cast<double>(nodes_covering(height, level.spacing_px));
-    total += (nx + side) * (ny + side) * side * side;
+    const auto nx = static_cast<double>(last_node(width, level.spacing_px) + 1 + 2 * kPad);
+    const auto ny = static_cast<double>(last_node(height, level.spacing_px) + 1 + 2 * kPad);
+    total += nx * (ny + side) * side * side;
   }
   return total;
 }

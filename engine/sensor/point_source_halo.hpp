@@ -7,18 +7,22 @@
 // at pixel multiples of h_l, every node of level l + 1 a node of level l):
 //   T_l(d) = E0(d) [w_(l+1)(d) - w_l(d)],  w_l(d) = taper(|d_x|, h_l) taper(|d_y|, h_l),
 // w_(L+1) = 1 on the window, E0 the energy on detector at zero offset. Each
-// source is spread onto the two nearest nodes along each axis of every level
-// (bilinear weights), each level's node values are convolved with its kernel
-// K_l(J) = (1 / h^2) sum_d T_l(d) tent(d_x / h - J_x) tent(d_y / h - J_y)
-// (T_l averaged with tent weights about node offset J: the rings of an
-// oversampled Airy tail are averaged, not point-sampled), and the levels are
-// interpolated back to pixels, coarsest first. Tents sum to one over the
-// nodes and to h over the pixels, so each level adds exactly
-// h^2 sum_J K_l(J) = sum_d T_l(d) of energy (less what falls off the array).
-// T_l vanishes beyond 4 h_l: each kernel has a reach of at most 4 nodes.
+// source is spread onto the 4 x 4 nodes about it on every level with
+// Catmull-Rom weights phi (catmull_rom.hpp), each level's node values are
+// convolved with its kernel
+//   K_l(J) = (1 / h^2) sum_d T_l(d) phi(d_x / h - J_x) phi(d_y / h - J_y),
+// and the levels are interpolated back to pixels with phi, coarsest first.
+// phi reproduces quadratics, so spreading and interpolation add no variance
+// and K_l has the moments of T_l up to order 2: each level adds exactly the
+// energy, centroid offset and second moments of T_l (less what falls off
+// the array) wherever the source sits between nodes. (A streak's length,
+// or a centroid, measured on the image is then that of the direct path,
+// the Airy tail's heavy second moment included.) T_l vanishes beyond 4 h_l:
+// each kernel has a reach of at most 6 nodes.
 //
-// Cost per frame: about 81 multiply-adds per node of each level (level 1 has
-// (pixels / a)^2 nodes) plus 4 per pixel, and 4 per source and level.
+// Cost per frame: about (2R + 1)^2 multiply-adds per node of each level with
+// a source nearby (level 1 has (pixels / a)^2 nodes) plus 8 per pixel, and 16
+// per source and level.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -56,13 +60,16 @@ class HaloGrids {
   static double cost(const std::vector<HaloLevel>& levels, std::int64_t width, std::int64_t height);
 
  private:
+  // Node n of a level sits at pixel n h. Output nodes -pad..last + pad hold
+  // what the cubic interpolation to the image (and to the next finer
+  // level) reads; input nodes reach R further, the kernel's reach.
   struct Grid {
     const HaloLevel* level;
-    std::int64_t nodes_x, nodes_y;  // output nodes 0..nodes - 1 cover the image
-    std::int64_t reach;             // input nodes run from -reach to nodes - 1 + reach
-    std::vector<double> input;      // (nodes_x + 2 reach) x (nodes_y + 2 reach)
-    std::vector<double> output;     // nodes_x x nodes_y
-    std::vector<char> row_used;     // input rows holding any source
+    std::int64_t out_first, out_x, out_y;  // first output node index, counts along x and y
+    std::int64_t in_first, in_x, in_y;     // the same for the input nodes
+    std::vector<double> input;             // in_x x in_y
+    std::vector<double> output;            // out_x x out_y
+    std::vector<char> row_used;            // input rows holding any source
   };
   std::vector<Grid> grids_;
   std::int64_t width_, height_;

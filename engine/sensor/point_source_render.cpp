@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sensor/catmull_rom.hpp"
+
 namespace eoir::sensor {
 namespace {
 
@@ -21,11 +23,7 @@ Anchor anchor(double position_px) {
 void cubic_weights(double phi, std::int64_t steps, std::int64_t& first, double w[4]) {
   const double t = (phi + 0.5) * static_cast<double>(steps);
   first = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor(t)), 0, steps - 1);
-  const double f = t - static_cast<double>(first), g = 1.0 - f;
-  w[0] = -0.5 * f * g * g;
-  w[1] = 0.5 * (3.0 * f * f * f - 5.0 * f * f + 2.0);
-  w[2] = 0.5 * (-3.0 * f * f * f + 4.0 * f * f + f);
-  w[3] = -0.5 * f * f * g;
+  catmull_rom_weights(t - static_cast<double>(first), w);
 }
 
 // Linear weights on a table whose entry k holds phi = -1/2 + k / steps:
@@ -94,47 +92,80 @@ void add_core(const PointSourceModel& m, double x, double y, double electrons, b
   }
 }
 
-// The direct tail: the window beyond the core box, linear in the offset
-// between half-pixel offsets.
-void add_tail(const PointSourceModel& m, double x, double y, double electrons, const Image& im) {
+// The direct tail of one source about one anchor pixel: the weights of the
+// table's 3 x 3 half-pixel offsets (bilinear in phi), summed over the
+// sub-steps of a streak that share the anchor (the same sum as adding each
+// sub-step's window, for one pass over the window per four offsets).
+struct TailAnchor {
+  std::int64_t x = 0, y = 0;
+  double w[3][3] = {};
+};
+
+// Adds a sub-step at (x, y) of `electrons` to the anchors of its source.
+void add_to_anchors(std::vector<TailAnchor>& anchors, double x, double y, double electrons) {
   const Anchor ax = anchor(x), ay = anchor(y);
-  const std::int64_t h = m.window_half, c = m.core_half, window = 2 * h + 1;
-  if (ax.pixel + h < 0 || ay.pixel + h < 0 || ax.pixel - h >= im.width || ay.pixel - h >= im.height) return;
-  const std::int64_t s = PointSourceModel::tail_steps, offsets = s + 1;
+  TailAnchor* t = nullptr;
+  for (auto it = anchors.rbegin(); it != anchors.rend() && !t; ++it)
+    if (it->x == ax.pixel && it->y == ay.pixel) t = &*it;
+  if (!t) {
+    anchors.emplace_back();
+    t = &anchors.back();
+    t->x = ax.pixel;
+    t->y = ay.pixel;
+  }
   std::int64_t ix = 0, iy = 0;
   double fx = 0, fy = 0;
-  linear_weights(ax.offset, s, ix, fx);
-  linear_weights(ay.offset, s, iy, fy);
+  linear_weights(ax.offset, PointSourceModel::tail_steps, ix, fx);
+  linear_weights(ay.offset, PointSourceModel::tail_steps, iy, fy);
+  t->w[iy][ix] += electrons * (1 - fx) * (1 - fy);
+  t->w[iy][ix + 1] += electrons * fx * (1 - fy);
+  t->w[iy + 1][ix] += electrons * (1 - fx) * fy;
+  t->w[iy + 1][ix + 1] += electrons * fx * fy;
+}
+
+// The direct tail about one anchor: the window beyond the core box.
+void add_tail(const PointSourceModel& m, const TailAnchor& t, const Image& im) {
+  const std::int64_t h = m.window_half, c = m.core_half, window = 2 * h + 1;
+  if (t.x + h < 0 || t.y + h < 0 || t.x - h >= im.width || t.y - h >= im.height) return;
+  constexpr std::int64_t offsets = PointSourceModel::tail_steps + 1;
   const std::size_t area = static_cast<std::size_t>(window * window);
-  const float* t00 = &m.tail[static_cast<std::size_t>(iy * offsets + ix) * area];
-  const float* t01 = t00 + area;
-  const float* t10 = t00 + static_cast<std::size_t>(offsets) * area;
-  const float* t11 = t10 + area;
-  const double w00 = electrons * (1 - fx) * (1 - fy), w01 = electrons * fx * (1 - fy);
-  const double w10 = electrons * (1 - fx) * fy, w11 = electrons * fx * fy;
-  const std::int64_t x_lo = std::max(-h, -ax.pixel), x_hi = std::min(h, im.width - 1 - ax.pixel);
-  const std::int64_t y_lo = std::max(-h, -ay.pixel), y_hi = std::min(h, im.height - 1 - ay.pixel);
-  auto span = [&](std::int64_t dy, std::int64_t from, std::int64_t to) {
-    const std::size_t o = static_cast<std::size_t>((dy + h) * window + h);
-    double* row = im.values + (ay.pixel + dy) * im.width + ax.pixel;
-    for (std::int64_t dx = from; dx <= to; ++dx) {
-      const std::size_t k = o + static_cast<std::size_t>(dx);
-      row[dx] += w00 * static_cast<double>(t00[k]) + w01 * static_cast<double>(t01[k]) +
-                 w10 * static_cast<double>(t10[k]) + w11 * static_cast<double>(t11[k]);
-    }
-  };
-  for (std::int64_t dy = y_lo; dy <= y_hi; ++dy) {
-    if (std::abs(dy) > c) {
-      span(dy, x_lo, x_hi);
-    } else {  // the core box is the core's
-      span(dy, x_lo, std::min(x_hi, -c - 1));
-      span(dy, std::max(x_lo, c + 1), x_hi);
+  // The offsets in use, four per pass (a source at rest needs one pass).
+  std::vector<std::pair<double, const float*>> used;
+  for (std::int64_t iy = 0; iy < offsets; ++iy)
+    for (std::int64_t ix = 0; ix < offsets; ++ix)
+      if (t.w[iy][ix] != 0) used.emplace_back(t.w[iy][ix], &m.tail[static_cast<std::size_t>(iy * offsets + ix) * area]);
+  if (used.empty()) return;
+  while (used.size() % 4) used.emplace_back(0.0, used.front().second);
+  const std::int64_t x_lo = std::max(-h, -t.x), x_hi = std::min(h, im.width - 1 - t.x);
+  const std::int64_t y_lo = std::max(-h, -t.y), y_hi = std::min(h, im.height - 1 - t.y);
+  for (std::size_t p = 0; p < used.size(); p += 4) {
+    const double w0 = used[p].first, w1 = used[p + 1].first, w2 = used[p + 2].first, w3 = used[p + 3].first;
+    const float *t0 = used[p].second, *t1 = used[p + 1].second, *t2 = used[p + 2].second, *t3 = used[p + 3].second;
+    auto span = [&](std::int64_t dy, std::int64_t from, std::int64_t to) {
+      const std::size_t o = static_cast<std::size_t>((dy + h) * window + h);
+      double* row = im.values + (t.y + dy) * im.width + t.x;
+      for (std::int64_t dx = from; dx <= to; ++dx) {
+        const std::size_t k = o + static_cast<std::size_t>(dx);
+        row[dx] += w0 * static_cast<double>(t0[k]) + w1 * static_cast<double>(t1[k]) +
+                   w2 * static_cast<double>(t2[k]) + w3 * static_cast<double>(t3[k]);
+      }
+    };
+    for (std::int64_t dy = y_lo; dy <= y_hi; ++dy) {
+      if (std::abs(dy) > c) {
+        span(dy, x_lo, x_hi);
+      } else {  // the core box is the core's
+        span(dy, x_lo, std::min(x_hi, -c - 1));
+        span(dy, std::max(x_lo, c + 1), x_hi);
+      }
     }
   }
 }
 
 const std::vector<HaloLevel> no_levels;
-constexpr double kMultilevelSaving = 4.0;  // automatic tail: multilevel only when this many times cheaper
+// Automatic tail: direct while it costs at most this many multiply-adds per
+// frame (tens of ms) or no more than kMultilevelSaving times the multilevel one.
+constexpr double kDirectBudget = 33554432.0;
+constexpr double kMultilevelSaving = 4.0;
 
 }  // namespace
 
@@ -146,28 +177,33 @@ std::int64_t streak_steps(const PointSourceModel& m, const PointSourceSignal& s)
 
 PointTail render_point_sources(const PointSourceModel& m, const std::vector<PointSourceSignal>& sources,
                                std::int64_t width, std::int64_t height, std::vector<double>& image) {
-  double sub_sources = 0;
-  for (const PointSourceSignal& s : sources) sub_sources += static_cast<double>(streak_steps(m, s));
   PointTail mode = m.tail_mode;
   if (!m.has_tail()) {
     mode = PointTail::direct;  // the core covers the window
   } else {
     if (mode == PointTail::automatic) {
       // The direct tail is the more faithful (each source's own window, no
-      // grid): kept unless the multilevel one saves more than
-      // kMultilevelSaving times its multiply-adds.
+      // grid): kept unless it is costly and the multilevel one saves more
+      // than kMultilevelSaving times its multiply-adds. A source passes over
+      // about 1 + |streak_x| + |streak_y| anchor pixels, 4 offsets each.
       const double box = static_cast<double>(2 * m.core_half + 1), window = static_cast<double>(2 * m.window_half + 1);
-      const double direct_cost = 4.0 * sub_sources * (window * window - box * box);
-      mode = m.has_direct_tail() && direct_cost <= kMultilevelSaving * HaloGrids::cost(m.halo, width, height)
+      double anchors = 0;
+      for (const PointSourceSignal& s : sources)
+        anchors += 1.0 + std::ceil(std::abs(s.streak_x_px)) + std::ceil(std::abs(s.streak_y_px));
+      const double direct_cost = 4.0 * anchors * (window * window - box * box);
+      mode = m.has_direct_tail() &&
+                     (direct_cost <= kDirectBudget ||
+                      direct_cost <= kMultilevelSaving * HaloGrids::cost(m.halo, width, height))
                  ? PointTail::direct
                  : PointTail::multilevel;
     }
     if (mode == PointTail::direct && !m.has_direct_tail()) mode = PointTail::multilevel;
   }
-  const bool multilevel = mode == PointTail::multilevel;
+  const bool multilevel = mode == PointTail::multilevel, direct_tail = !multilevel && m.has_tail();
   HaloGrids halo(multilevel ? m.halo : no_levels, width, height);
   const Image im{image.data(), width, height};
   Scratch scratch;
+  std::vector<TailAnchor> anchors;
   for (const PointSourceSignal& s : sources) {
     const std::int64_t n = streak_steps(m, s);
     const double e = s.electrons / static_cast<double>(n);
@@ -177,9 +213,11 @@ PointTail render_point_sources(const PointSourceModel& m, const std::vector<Poin
       add_core(m, x, y, e, multilevel, im, scratch);
       if (multilevel)
         halo.spread(x, y, e);
-      else if (m.has_tail())
-        add_tail(m, x, y, e, im);
+      else if (direct_tail)
+        add_to_anchors(anchors, x, y, e);
     }
+    for (const TailAnchor& t : anchors) add_tail(m, t, im);
+    anchors.clear();
   }
   if (multilevel) halo.add_to(image);
   return mode;

@@ -22,8 +22,8 @@ struct PointSourceSignal {
 
 // Adds sum over sources of electrons * EOD(pixel) to `image` (width x height,
 // row-major). Returns the tail method used: the model's, automatic resolved
-// for this frame (direct unless the multilevel tail costs over 4 times
-// fewer multiply-adds), direct when the model has no tail.
+// for this frame (direct unless it costs over 2^25 multiply-adds and the
+// multilevel tail over 4 times fewer), direct when the model has no tail.
 PointTail render_point_sources(const PointSourceModel& model, const std::vector<PointSourceSignal>& sources,
                                std::int64_t width, std::int64_t height, std::vector<double>& image);
 

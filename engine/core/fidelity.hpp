@@ -74,7 +74,7 @@ struct Fidelity {
   // Streaks (a source moving during the integration): sub-steps along the
   // segment, at least this many per pixel and per lambda F#.
   double streak_steps_per_pixel = 8.0;
-  double streak_steps_per_lambda_f = 2.0;
+  double streak_steps_per_lambda_f = 1.0;
   double fft_padding = 1.0;  // FFT padding beyond the guard band, in guard bands
   // Reports (spec 5.12-5.13).
   std::int64_t otf_curve_points = 101;            // samples of the OTF/MTF report curves

@@ -16,42 +16,62 @@ std::int64_t last_node(std::int64_t size_px, std::int64_t spacing_px) {
   return (std::max<std::int64_t>(size_px, 1) - 1 + spacing_px - 1) / spacing_px;
 }
 
-// dst[i dst_stride] += the Catmull-Rom interpolation at node coordinate
-// (dst_first + i) / ratio of src (node src_first + k at src[k src_stride],
-// k < src_count), for i < dst_count. Taps beyond src are left out (they
-// fall where the weight is zero or beyond the image).
-void interpolate_line(const double* src, std::int64_t src_stride, std::int64_t src_first, std::int64_t src_count,
-                      double* dst, std::int64_t dst_stride, std::int64_t dst_first, std::int64_t dst_count,
-                      std::int64_t ratio) {
-  for (std::int64_t i = 0; i < dst_count; ++i) {
-    const std::int64_t at = dst_first + i;
-    const std::int64_t n0 = at >= 0 ? at / ratio : -((-at + ratio - 1) / ratio);  // floor(at / ratio)
-    double w[4];
-    catmull_rom_weights(static_cast<double>(at - n0 * ratio) / static_cast<double>(ratio), w);
-    double v = 0;
-    for (int k = 0; k < 4; ++k) {
-      const std::int64_t j = n0 - 1 + k - src_first;
-      if (j >= 0 && j < src_count && w[k] != 0) v += w[k] * src[j * src_stride];
-    }
-    dst[i * dst_stride] += v;
-  }
-}
-
 struct NodeRange {
-  std::int64_t first, count;
+  std::int64_t first, count;  // node index of element 0, element count
 };
 
+// The Catmull-Rom taps that interpolate nodes `src` at node coordinate
+// (dst_first + i) / ratio, for each element i of `dst`: element indices of
+// src and weights. A tap beyond src gets weight 0 (it falls where the weight
+// is zero, or serves no pixel of the image).
+struct Taps {
+  std::int64_t index[4];
+  double weight[4];
+};
+std::vector<Taps> taps_of(NodeRange src, NodeRange dst, std::int64_t ratio) {
+  std::vector<Taps> out(static_cast<std::size_t>(dst.count));
+  for (std::int64_t i = 0; i < dst.count; ++i) {
+    const std::int64_t at = dst.first + i;
+    const std::int64_t n0 = at >= 0 ? at / ratio : -((-at + ratio - 1) / ratio);  // floor(at / ratio)
+    Taps& t = out[static_cast<std::size_t>(i)];
+    catmull_rom_weights(static_cast<double>(at - n0 * ratio) / static_cast<double>(ratio), t.weight);
+    for (int k = 0; k < 4; ++k) {
+      t.index[k] = n0 - 1 + k - src.first;
+      if (t.index[k] < 0 || t.index[k] >= src.count) {
+        t.index[k] = 0;
+        t.weight[k] = 0;
+      }
+    }
+  }
+  return out;
+}
+
 // Adds the bicubic interpolation of `coarse` (nodes cx x cy, spacing `ratio`
-// destination nodes) to `fine` (nodes fx x fy).
+// destination nodes) to `fine` (nodes fx x fy, row-major): along x row by
+// row, then along y as weighted sums of whole rows.
 void interpolate(const std::vector<double>& coarse, NodeRange cx, NodeRange cy, std::int64_t ratio, double* fine,
                  NodeRange fx, NodeRange fy) {
-  std::vector<double> rows(static_cast<std::size_t>(cy.count * fx.count), 0.0);  // along x first
-  for (std::int64_t r = 0; r < cy.count; ++r)
-    interpolate_line(&coarse[static_cast<std::size_t>(r * cx.count)], 1, cx.first, cx.count,
-                     &rows[static_cast<std::size_t>(r * fx.count)], 1, fx.first, fx.count, ratio);
-  for (std::int64_t c = 0; c < fx.count; ++c)
-    interpolate_line(&rows[static_cast<std::size_t>(c)], fx.count, cy.first, cy.count, fine + c, fx.count, fy.first,
-                     fy.count, ratio);
+  const std::vector<Taps> tx = taps_of(cx, fx, ratio), ty = taps_of(cy, fy, ratio);
+  std::vector<double> rows(static_cast<std::size_t>(cy.count * fx.count));
+  for (std::int64_t r = 0; r < cy.count; ++r) {
+    const double* src = &coarse[static_cast<std::size_t>(r * cx.count)];
+    double* dst = &rows[static_cast<std::size_t>(r * fx.count)];
+    for (std::int64_t i = 0; i < fx.count; ++i) {
+      const Taps& t = tx[static_cast<std::size_t>(i)];
+      dst[i] = t.weight[0] * src[t.index[0]] + t.weight[1] * src[t.index[1]] + t.weight[2] * src[t.index[2]] +
+               t.weight[3] * src[t.index[3]];
+    }
+  }
+  for (std::int64_t j = 0; j < fy.count; ++j) {
+    const Taps& t = ty[static_cast<std::size_t>(j)];
+    double* __restrict dst = fine + j * fx.count;
+    for (int k = 0; k < 4; ++k) {
+      if (t.weight[k] == 0) continue;
+      const double w = t.weight[k];
+      const double* __restrict src = &rows[static_cast<std::size_t>(t.index[k] * fx.count)];
+      for (std::int64_t i = 0; i < fx.count; ++i) dst[i] += w * src[i];
+    }
+  }
 }
 
 }  // namespace

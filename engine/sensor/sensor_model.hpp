@@ -31,9 +31,10 @@ struct SensorModel {
   geometry::SampleGrid grid;
   const Fidelity& fidelity() const { return parameters.fidelity; }
   // Tables of the energy on detector of point sources (point_source_model.hpp),
-  // built by the first call (thread-safe; tens of ms), then shared. Copies of
-  // a SensorModel share them: they depend only on optics, grid and fidelity,
-  // which resolve_sensor sets once.
+  // built by the first call (thread-safe; a few tenths of a second), then
+  // shared. Copies of a SensorModel share them: they depend only on optics,
+  // grid and fidelity, which resolve_sensor sets once (a change of the
+  // sensor's properties resolves a new model, Engine::sensor_model).
   const PointSourceModel& point_sources() const;
   std::shared_ptr<PointSourceModelCache> point_source_cache = std::make_shared<PointSourceModelCache>();
 };

@@ -15,8 +15,14 @@
 //  - BM_PointSourceFrameTail/N/tail: the same with the tail forced direct (1)
 //    or multilevel (2) rather than chosen by cost (0).
 //  - BM_PointSourceStreaks/N: N stars streaking 5 pixels each.
+//  - BM_PointSourceDeposit/N/streak: render_point_sources alone (the
+//    deposit: core tables, tail, streak sub-steps) for N stars streaking 0 or
+//    5 pixels onto a reused image; us_per_source.
 //  - BM_PointSourceModelBuild/sensor: the one-off build of the model's tables
 //    (0: this GEO sensor, 1: spec 7.6 Table 3, 2: a Nyquist-sampled 256^2).
+//  - BM_PerOffsetFft: what each star cost before the model: one exact
+//    energy_on_detector (an FFT of the folded OTF, system_psf.hpp) over the
+//    95 x 95 window at the star's own sub-pixel offset.
 //
 // Target (not asserted): at most 1 us per star at 10,000 stars.
 #include <benchmark/benchmark.h>
@@ -25,7 +31,10 @@
 #include <cmath>
 #include <random>
 
+#include "../sensor/point_source_sensors.hpp"
 #include "sensor/image_chain.hpp"
+#include "sensor/point_source_render.hpp"
+#include "sensor/system_psf.hpp"
 
 namespace {
 
@@ -43,14 +52,6 @@ SensorParameters geo_staring(eoir::PointTail tail = eoir::PointTail::automatic) 
   p.horizontal_fov_deg = p.vertical_fov_deg = 2.0 * std::atan(0.5 * 512 * pitch_cm / p.focal_length_cm) * 180.0 / M_PI;
   p.noise_enabled = false;
   p.fidelity.point_tail = tail;
-  return p;
-}
-
-SensorParameters nyquist_256() {
-  SensorParameters p;
-  p.horizontal_pixels = p.vertical_pixels = 256;
-  const double pitch_cm = 0.5 * p.diffraction_wavelength_um * 1e-4 * p.f_number;
-  p.horizontal_fov_deg = p.vertical_fov_deg = 2.0 * std::atan(0.5 * 256 * pitch_cm / p.focal_length_cm) * 180.0 / M_PI;
   return p;
 }
 
@@ -110,7 +111,10 @@ void time_frames(benchmark::State& state, const SensorParameters& p, double stre
   }
   state.counters["point_sources_ms"] = 1e3 * stage_s / frames;
   state.counters["empty_frame_ms"] = empty_ms;
-  if (count > 0) state.counters["us_per_source"] = (1e3 * frame_s / frames - empty_ms) * 1e3 / static_cast<double>(count);
+  if (count > 0) {
+    state.counters["us_per_source"] = (1e3 * frame_s / frames - empty_ms) * 1e3 / static_cast<double>(count);
+    state.counters["stage_us_per_source"] = 1e6 * stage_s / frames / static_cast<double>(count);
+  }
 }
 
 void BM_PointSourceFrame(benchmark::State& state) { time_frames(state, geo_staring(), 0.0); }
@@ -122,7 +126,7 @@ void BM_PointSourceFrameTail(benchmark::State& state) {
 void BM_PointSourceStreaks(benchmark::State& state) { time_frames(state, geo_staring(), 5.0); }
 
 void BM_PointSourceModelBuild(benchmark::State& state) {
-  const SensorParameters p = state.range(0) == 0 ? geo_staring() : state.range(0) == 1 ? SensorParameters{} : nyquist_256();
+  const SensorParameters p = state.range(0) == 0 ? geo_staring() : state.range(0) == 1 ? SensorParameters{} : eoir::sensor::testing::nyquist();
   const auto model = eoir::sensor::resolve_sensor(p);
   std::int64_t bytes = 0;
   for (auto _ : state) {
@@ -131,6 +135,62 @@ void BM_PointSourceModelBuild(benchmark::State& state) {
     benchmark::DoNotOptimize(m.core.data());
   }
   state.counters["table_bytes"] = static_cast<double>(bytes);
+}
+
+// Mean wall time of one call of `body` over the benchmark's iterations (s).
+template <class Body>
+double wall_seconds(benchmark::State& state, Body&& body) {
+  double total = 0;
+  std::int64_t n = 0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    body();
+    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ++n;
+  }
+  return n ? total / static_cast<double>(n) : 0.0;
+}
+
+// The deposit alone: render_point_sources onto a reused 512^2 image (the
+// frame's allocations and page faults left out).
+void BM_PointSourceDeposit(benchmark::State& state) {
+  const auto model = eoir::sensor::resolve_sensor(geo_staring());
+  const eoir::sensor::PointSourceModel& m = model->point_sources();
+  const auto scene = star_field(*model, state.range(0), static_cast<double>(state.range(1)));
+  const eoir::geometry::SampleGrid& g = model->grid;
+  std::vector<eoir::sensor::PointSourceSignal> signals;
+  for (const eoir::radiometry::PointSource& ps : scene.point_sources) {
+    eoir::sensor::PointSourceSignal s;
+    s.x_px = g.pixel_x_of(ps.column);
+    s.y_px = g.pixel_y_of(ps.row);
+    s.streak_x_px = ps.streak_columns / static_cast<double>(g.per_pixel);
+    s.streak_y_px = ps.streak_rows / static_cast<double>(g.per_pixel);
+    s.electrons = 1.0;
+    signals.push_back(s);
+  }
+  std::vector<double> image(static_cast<std::size_t>(g.pixels_x * g.pixels_y), 0.0);
+  const double s = wall_seconds(state, [&] {
+    eoir::sensor::render_point_sources(m, signals, g.pixels_x, g.pixels_y, image);
+    benchmark::DoNotOptimize(image.data());
+  });
+  state.counters["us_per_source"] = 1e6 * s / static_cast<double>(state.range(0));
+}
+
+void BM_PerOffsetFft(benchmark::State& state) {
+  const SensorParameters p = geo_staring();
+  const auto model = eoir::sensor::resolve_sensor(p);
+  const std::int64_t window = 2 * eoir::sensor::point_window_half(model->optics, model->grid, p.fidelity) + 1;
+  const eoir::sensor::PsfNumerics numerics(p.fidelity);
+  const double px = model->grid.pitch_x_cm, py = model->grid.pitch_y_cm;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> offset(-0.5, 0.5);
+  const double s = wall_seconds(state, [&] {
+    const eoir::sensor::FocalPlaneSamples eod =
+        eoir::sensor::energy_on_detector(model->optics, px, py, window, offset(rng) * px, offset(rng) * py, numerics);
+    benchmark::DoNotOptimize(eod.values.data());
+  });
+  state.counters["us_per_source"] = 1e6 * s;
+  state.counters["window"] = static_cast<double>(window);
 }
 
 }  // namespace
@@ -142,6 +202,13 @@ BENCHMARK(BM_PointSourceFrameTail)
     ->Args({10000, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+BENCHMARK(BM_PointSourceDeposit)
+    ->Args({1000, 0})
+    ->Args({10000, 0})
+    ->Args({10000, 5})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_PointSourceStreaks)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PointSourceModelBuild)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PerOffsetFft)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_MAIN();

@@ -16,47 +16,15 @@
 #include <random>
 #include <thread>
 
+#include "point_source_sensors.hpp"
 #include "sensor/point_source_render.hpp"
 #include "sensor/sensor_model.hpp"
 #include "sensor/system_psf.hpp"
 
 using namespace eoir::sensor;
+using namespace eoir::sensor::testing;
 
 namespace {
-
-SensorParameters table3() { return SensorParameters{}; }  // spec 7.6 Table 3 (the defaults)
-
-// Diffraction limited, pixel = lambda F# / 2 (Nyquist sampling), 256 x 256
-// pixels so that the window reaches the 255-pixel cap of psf_grid_size 512.
-SensorParameters nyquist() {
-  SensorParameters p;
-  p.horizontal_pixels = p.vertical_pixels = 256;
-  const double pitch_cm = 0.5 * p.diffraction_wavelength_um * 1e-4 * p.f_number;
-  p.horizontal_fov_deg = p.vertical_fov_deg =
-      2.0 * std::atan(0.5 * 256 * pitch_cm / p.focal_length_cm) * 180.0 / M_PI;
-  return p;
-}
-
-// Diffraction limited, pixel = lambda F# / 4 (over-sampled), 128 x 128 pixels:
-// the window is the array's size, 128 pixels each side.
-SensorParameters oversampled() {
-  SensorParameters p;
-  p.horizontal_pixels = p.vertical_pixels = 128;
-  const double pitch_cm = 0.25 * p.diffraction_wavelength_um * 1e-4 * p.f_number;
-  p.horizontal_fov_deg = p.vertical_fov_deg =
-      2.0 * std::atan(0.5 * 128 * pitch_cm / p.focal_length_cm) * 180.0 / M_PI;
-  return p;
-}
-
-// Table 3 with line-of-sight jitter (sigma f = 0.15 pixel) and 0.6 mm of
-// defocus: 2.4 waves peak to peak, past the 2.2-wave switch, so eq. 37's
-// sharp-edged blur disk (0.17 mm = 1.7 pixels across).
-SensorParameters jitter_defocus() {
-  SensorParameters p;
-  p.jitter_mrad = 0.01;
-  p.defocus_mm = 0.6;
-  return p;
-}
 
 struct Comparison {
   double worst_pixel = 0;   // max |model - exact| over pixels and offsets, fraction of the source's energy
@@ -86,9 +54,7 @@ std::vector<Comparison> compare(const SensorParameters& p, const std::vector<eoi
   const auto sensor = resolve_sensor(p);
   std::vector<PointSourceModel> models;
   for (eoir::PointTail mode : modes) {
-    eoir::Fidelity f = p.fidelity;
-    f.point_tail = mode;
-    models.push_back(build_point_source_model(sensor->optics, sensor->grid, f));
+    models.push_back(model_with(p, mode));
     std::cout << "  model: H " << models.back().window_half << " a " << models.back().taper_start << " c "
               << models.back().core_half << " S " << models.back().core_steps << " bytes " << models.back().bytes()
               << " build " << models.back().build_s * 1e3 << " ms\n";

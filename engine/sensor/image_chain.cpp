@@ -7,7 +7,6 @@
 #include "core/constants.hpp"
 #include "core/fftw_plans.hpp"
 #include "sensor/otf.hpp"
-#include "sensor/point_source_render.hpp"
 
 namespace eoir::sensor {
 namespace {
@@ -92,6 +91,23 @@ std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::R
   return out;
 }
 
+std::vector<PointSourceSignal> point_source_signals(const SensorModel& model, const radiometry::RadianceImage& scene) {
+  const geometry::SampleGrid& g = scene.grid;
+  const StaticMetrics& m = model.metrics;
+  std::vector<PointSourceSignal> signals;
+  signals.reserve(scene.point_sources.size());
+  for (const radiometry::PointSource& ps : scene.point_sources) {
+    PointSourceSignal s;
+    s.x_px = g.pixel_x_of(ps.column);
+    s.y_px = g.pixel_y_of(ps.row);
+    s.streak_x_px = ps.streak_columns / static_cast<double>(g.per_pixel);
+    s.streak_y_px = ps.streak_rows / static_cast<double>(g.per_pixel);
+    s.electrons = m.peak_irradiance_responsivity * ps.irradiance_W_cm2 / m.ensquared_energy;
+    signals.push_back(s);
+  }
+  return signals;
+}
+
 SensorImage render_sensor_image(const SensorModel& model, const radiometry::RadianceImage& scene,
                                 std::mt19937_64& rng) {
   using clock = std::chrono::steady_clock;
@@ -109,20 +125,8 @@ SensorImage render_sensor_image(const SensorModel& model, const radiometry::Radi
   // Point sources: r_E = R_peak,E E^ps EOD / ENSQ (eqs. 50-51), EOD from the
   // sensor's point-source model (tables built once: no FFT here), streaks
   // spread along their segment.
-  if (!scene.point_sources.empty()) {
-    std::vector<PointSourceSignal> signals;
-    signals.reserve(scene.point_sources.size());
-    for (const radiometry::PointSource& ps : scene.point_sources) {
-      PointSourceSignal s;
-      s.x_px = g.pixel_x_of(ps.column);
-      s.y_px = g.pixel_y_of(ps.row);
-      s.streak_x_px = ps.streak_columns / static_cast<double>(g.per_pixel);
-      s.streak_y_px = ps.streak_rows / static_cast<double>(g.per_pixel);
-      s.electrons = m.peak_irradiance_responsivity * ps.irradiance_W_cm2 / m.ensquared_energy;
-      signals.push_back(s);
-    }
-    render_point_sources(model.point_sources(), signals, nx, ny, mean);
-  }
+  if (!scene.point_sources.empty())
+    render_point_sources(model.point_sources(), point_source_signals(model, scene), nx, ny, mean);
   const auto t2 = clock::now();
   // Noise (eqs. 53-54) and saturation (eq. 55); zero dark offset (5.11.3).
   out.electrons.resize(mean.size());

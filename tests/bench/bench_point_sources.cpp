@@ -33,7 +33,6 @@
 
 #include "../sensor/point_source_sensors.hpp"
 #include "sensor/image_chain.hpp"
-#include "sensor/point_source_render.hpp"
 #include "sensor/system_psf.hpp"
 
 namespace {
@@ -158,16 +157,7 @@ void BM_PointSourceDeposit(benchmark::State& state) {
   const eoir::sensor::PointSourceModel& m = model->point_sources();
   const auto scene = star_field(*model, state.range(0), static_cast<double>(state.range(1)));
   const eoir::geometry::SampleGrid& g = model->grid;
-  std::vector<eoir::sensor::PointSourceSignal> signals;
-  for (const eoir::radiometry::PointSource& ps : scene.point_sources) {
-    eoir::sensor::PointSourceSignal s;
-    s.x_px = g.pixel_x_of(ps.column);
-    s.y_px = g.pixel_y_of(ps.row);
-    s.streak_x_px = ps.streak_columns / static_cast<double>(g.per_pixel);
-    s.streak_y_px = ps.streak_rows / static_cast<double>(g.per_pixel);
-    s.electrons = 1.0;
-    signals.push_back(s);
-  }
+  const std::vector<eoir::sensor::PointSourceSignal> signals = eoir::sensor::point_source_signals(*model, scene);
   std::vector<double> image(static_cast<std::size_t>(g.pixels_x * g.pixels_y), 0.0);
   const double s = wall_seconds(state, [&] {
     eoir::sensor::render_point_sources(m, signals, g.pixels_x, g.pixels_y, image);

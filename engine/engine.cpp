@@ -91,11 +91,22 @@ void Engine::set_property(const std::string& object, const std::string& property
     if (!name.empty() && !library().spectra.find(name))
       throw Error(Status::unknown_name, "spectrum: no spectrum named '" + name + "' in the spectrum table");
   }
+  if (property == "catalog_file" && std::holds_alternative<std::string>(value) &&
+      !std::get<std::string>(value).empty())
+    library().star_catalog(std::get<std::string>(value), o.stars.catalog_epoch_year);  // read and checked now
   if (property == "composite" && std::holds_alternative<std::string>(value)) {
-    const auto parts = universe::parse_composite(std::get<std::string>(value), "composite");
+    // A predefined satellite's name (spec 4.3.3) stands for its parts.
+    const std::string& given = std::get<std::string>(value);
+    const std::string text = universe::PredefinedComposites::is_name(given)
+                                 ? library().satellites.parts(given, "composite")
+                                 : given;
+    const auto parts = universe::parse_composite(text, "composite");
     for (std::size_t i = 0; i < parts.size(); ++i)
       if (parts[i].material)
         library().materials.get(*parts[i].material, "composite[" + std::to_string(i) + "].material");
+    universe::set_property(o, property, Value(text));
+    changed();
+    return;
   }
   universe::set_property(o, property, value);
   changed();
@@ -258,7 +269,9 @@ const Frame& Engine::render(const std::string& name) {
     e.b_v_mag = s.b_v_mag;
     add_truth(std::move(e), s.direction_j2000, s.streak_columns, s.streak_rows);
   }
-  if (!w.sky.warning.empty() && options_.log) options_.log(2, w.sky.star_field + ": " + w.sky.warning);
+  if (!w.sky.warning.empty() && w.sky.warning != last_sky_warning_ && options_.log)
+    options_.log(2, w.sky.star_field + ": " + w.sky.warning);
+  last_sky_warning_ = w.sky.warning;
   const auto t4 = clock_type::now();
   FrameTimings& tm = frame->timings;
   tm.setup_s = seconds_between(t0, t1);

@@ -126,6 +126,7 @@ class Engine {
   std::shared_ptr<universe::Library> library_;  // loaded on first use
   std::vector<universe::Material> user_materials_;
   std::vector<universe::NamedSpectrum> user_spectra_;
+  std::string last_sky_warning_;  // logged once, not every frame
 };
 
 }  // namespace eoir

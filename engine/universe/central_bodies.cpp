@@ -22,6 +22,35 @@ const std::vector<CentralBodyInfo>& central_bodies() {
   return table;
 }
 
+// Defaults of the surfaces, so that each body is seen about as bright as it
+// is. Gray bodies: SRF = 1.5 p, p the geometric albedo (a Lambertian sphere's
+// p is 2/3 of its reflectance, eq. 7), capped at 1 (Venus); temperatures:
+// effective (thermal-emission) temperatures. NASA NSSDC planetary fact
+// sheets (geometric albedo: Mercury 0.142, Venus 0.689, Mars 0.170,
+// Jupiter 0.538, Saturn 0.499, Uranus 0.488, Neptune 0.442; Mercury's surface 100-700 K,
+// Venus' cloud tops ~230 K, Mars 210 K mean, Jupiter 124.4 K, Saturn 95 K,
+// Uranus 59.1 K, Neptune 59.3 K). Mars is gray too: the laboratory analogue
+// of its dust (material mars_surface, JSC Mars-1) reflects 0.10 in V, and
+// the disc would be 0.8 mag fainter than Mars is. The Earth: its Bond albedo
+// 0.306 as a gray SRF of 0.3 and the climatology thermal model (spec
+// 4.3.1.3); the Moon its data-folder material (Apollo 62231 regolith) with
+// the subsolar model (390 K, 95 K at night: spec 4.3.1.3).
+const CentralBodySurface& central_body_surface(CentralBody id) {
+  static const CentralBodySurface table[] = {
+      {"gray_body", 0.0, 5772.0, 0.0, false},        // Sun (its E-490 spectrum replaces eps B(T))
+      {"gray_body", 0.213, 700.0, 100.0, false},     // Mercury: subsolar
+      {"gray_body", 1.0, 230.0, 0.0, false},         // Venus
+      {"gray_body", 0.3, 288.0, 0.0, true},          // Earth: climatology
+      {"gray_body", 0.255, 210.0, 0.0, false},       // Mars
+      {"gray_body", 0.807, 124.4, 0.0, false},       // Jupiter
+      {"gray_body", 0.749, 95.0, 0.0, false},        // Saturn
+      {"gray_body", 0.732, 59.1, 0.0, false},        // Uranus
+      {"gray_body", 0.663, 59.3, 0.0, false},        // Neptune
+      {"lunar_regolith", 0.0, 390.0, 95.0, false},   // Moon: subsolar
+  };
+  return table[static_cast<std::size_t>(id)];
+}
+
 const CentralBodyInfo& central_body_info(CentralBody id) { return central_bodies()[static_cast<std::size_t>(id)]; }
 
 const CentralBodyInfo* find_central_body(const std::string& name) {

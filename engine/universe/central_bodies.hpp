@@ -25,6 +25,17 @@ struct CentralBodyInfo {
   double solar_day_s;  // mean solar day (NASA NSSDC planetary fact sheets; the Moon's synodic month)
 };
 
+// What a central body is made of and how hot it is until the user says
+// otherwise (its properties' defaults).
+struct CentralBodySurface {
+  const char* material;        // "gray_body" or a data-folder material
+  double reflectance;          // gray-body SRF
+  double temperature_K;        // uniform thermal model; the subsolar model's T_ss
+  double night_temperature_K;  // subsolar model only (0: uniform)
+  bool climatology;            // the Earth's land/water thermal model
+};
+const CentralBodySurface& central_body_surface(CentralBody id);
+
 // Sun, Mercury..Neptune, Moon, in CentralBody order. Radii: IAU WG on
 // cartographic coordinates (2015) mean values; Earth is WGS84.
 const std::vector<CentralBodyInfo>& central_bodies();

@@ -15,6 +15,7 @@ Library Library::load(const std::string& data_dir) {
   if (!std::filesystem::is_directory(materials, ec))
     throw Error(Status::io, "data: no materials folder '" + materials + "' (build the data folder: .ci/setup)");
   lib.materials.load_directory(materials);
+  lib.satellites.load_directory(data_dir + "/satellites");
   const std::string earth = data_dir + "/earth/", moon = data_dir + "/moon/";
   BodyMaps& e = lib.maps[CentralBody::earth];
   e.land_mask = SurfaceMap::load({earth + "landmask_L0.json", earth + "landmask_L1.json", earth + "landmask_L2.json"});

@@ -1,7 +1,8 @@
 // What an engine reads from its data folder (data/README.md) and what the
 // user adds to it: materials (spec 4.1.4.1, Appendix A), the table of
 // tabulated spectral radiances (4.1.4, the Sun first), the central bodies'
-// surface maps (4.2.3) and the Earth's surface climatology (4.3.1.3). Loaded once, when a
+// surface maps (4.2.3), the Earth's surface climatology (4.3.1.3) and the
+// predefined composite satellites (4.3.3). Loaded once, when a
 // world first needs it; shared read-only by every world built from it.
 #pragma once
 #include <map>
@@ -11,6 +12,7 @@
 
 #include "universe/central_bodies.hpp"
 #include "universe/material.hpp"
+#include "universe/predefined_composites.hpp"
 #include "universe/spectrum_table.hpp"
 #include "universe/star_catalog.hpp"
 #include "universe/surface_climatology.hpp"
@@ -21,10 +23,11 @@ namespace eoir::universe {
 struct Library {
   std::string data_dir;
   MaterialLibrary materials;
+  PredefinedComposites satellites;  // spec 4.3.3, satellites/*.json
   SpectrumTable spectra;
   std::map<CentralBody, BodyMaps> maps;
   std::shared_ptr<const SurfaceClimatology> climatology;
-  // Reads data_dir/materials/*.json, solar/e490.txt, the map pyramids of
+  // Reads data_dir/materials/*.json, satellites/*.json, solar/e490.txt, the map pyramids of
   // earth/ and moon/ (their sidecars and row tables; rows on first use) and
   // the climatology tables (throws io or corrupt_file naming the file).
   static Library load(const std::string& data_dir);

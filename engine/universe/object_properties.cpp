@@ -74,7 +74,9 @@ std::vector<Spec> body_properties(bool missile) {
                                       [](Object& o) -> auto& { return o.body.reflectance; }, Range{0, 1}));
   t.push_back(Spec{"composite", ValueType::string, "",
                    "Parts of shape composite as a JSON array: {shape, dimensions_m, offset_m, orientation_wxyz, "
-                   "temperature_K, reflectance} or nested {parts, offset_m, orientation_wxyz} (spec 4.1.5.1)",
+                   "temperature_K, reflectance, material} or nested {parts, offset_m, orientation_wxyz} (spec 4.1.5.1), or the "
+                   "name of a predefined satellite (spec 4.3.3: leo_earth_observing, leo_communications, "
+                   "geo_communications), which stands for its parts",
                    [](const Object& o) { return Value(o.body.composite); },
                    [](Object& o, const Value& v) {
                      refuse_central_body(o, "composite");

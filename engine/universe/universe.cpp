@@ -66,6 +66,16 @@ Object& Universe::add(ObjectKind kind, const std::string& name, const std::strin
                                               "Saturn, Uranus, Neptune, Moon)");
       o.central_body = body->id;
       if (body->id == CentralBody::sun) o.body.spectrum = sun_spectrum;  // its measured radiance (spec 4.1.4)
+      const CentralBodySurface& surface = central_body_surface(body->id);
+      o.body.material = surface.material;
+      o.body.reflectance = surface.reflectance;
+      o.body.temperature_K = surface.temperature_K;
+      if (surface.night_temperature_K > 0) {
+        o.body.thermal_model = ThermalModel::subsolar;
+        o.body.subsolar_temperature_K = surface.temperature_K;
+        o.body.night_temperature_K = surface.night_temperature_K;
+      }
+      if (surface.climatology) o.body.thermal_model = ThermalModel::climatology;
       o.body.shape = ShapeKind::oblate;
       o.body.dimensions_m = {body->equatorial_radius_m, body->polar_radius_m};
       break;

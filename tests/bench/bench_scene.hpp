@@ -44,6 +44,9 @@ struct SensorSetup {
   std::int64_t intervals = 10;
   std::string band_integration = "grid";
   bool noise = true;
+  double band_low_um = 8.0, band_high_um = 12.0;
+  std::string scene_mode = "coarse";
+  bool day_side = true;  // false: the host and the LEO satellites on the night side (no sunlight on the scene)
 };
 
 // A sensor named `name` on `parent`, looking along `look` (J2000 unit vector;
@@ -55,8 +58,9 @@ inline void add_sensor(Engine& e, const std::string& name, const std::string& pa
   e.set_property(name, "vertical_pixels", Value(s.pixels));
   e.set_property(name, "horizontal_fov_deg", Value(s.fov_deg));
   e.set_property(name, "vertical_fov_deg", Value(s.fov_deg));
-  e.set_property(name, "band_low_um", Value(8.0));
-  e.set_property(name, "band_high_um", Value(12.0));
+  e.set_property(name, "band_low_um", Value(s.band_low_um));
+  e.set_property(name, "band_high_um", Value(s.band_high_um));
+  e.set_property(name, "scene_mode", Value(s.scene_mode));
   e.set_property(name, "spectral_intervals", Value(s.intervals));
   e.set_property(name, "focal_length_cm", Value(10.0));
   e.set_property(name, "f_number", Value(2.0));
@@ -69,9 +73,10 @@ inline void add_sensor(Engine& e, const std::string& name, const std::string& pa
   e.push_state(name, e.time(), 0, zero, zero, qa);
 }
 
-// The frame scene: Earth, Moon, a GEO-radius host on +x J2000 carrying
-// "Sensor" (looking at the Earth's centre), and three LEO satellites (two
-// 2 m spheres and a 2 x 1 x 1 m box) between it and the Earth, inside the field.
+// The frame scene: Earth, Moon, a GEO-radius host on +x J2000 (the day side;
+// -x with day_side false) carrying "Sensor" (looking at the Earth's centre),
+// and three LEO satellites (two 2 m spheres and a 2 x 1 x 1 m box) between it
+// and the Earth, inside the field (sunlit by day, in the Earth's shadow by night).
 inline std::unique_ptr<Engine> make_geo_scene(const SensorSetup& s, std::uint64_t seed = 1) {
   EngineOptions opt;
   opt.seed = seed;
@@ -79,14 +84,16 @@ inline std::unique_ptr<Engine> make_geo_scene(const SensorSetup& s, std::uint64_
   e->set_time(bench_epoch());
   e->add_object(universe::ObjectKind::central_body, "Earth");
   e->add_object(universe::ObjectKind::central_body, "Moon");
-  const double host[3] = {42164.2e3, 0, 0}, host_v[3] = {0, 3074.7, 0};
+  const double x = s.day_side ? 1.0 : -1.0;  // the Sun is near +x
+  const double host[3] = {x * 42164.2e3, 0, 0}, host_v[3] = {0, 3074.7, 0};
   add_satellite(*e, "Host", "none", {}, 0, host, host_v);
-  const double p1[3] = {6978e3, 1200e3, 400e3}, p2[3] = {7000e3, -900e3, -1500e3}, p3[3] = {6900e3, 300e3, -2000e3};
+  const double p1[3] = {x * 6978e3, 1200e3, 400e3}, p2[3] = {x * 7000e3, -900e3, -1500e3},
+               p3[3] = {x * 6900e3, 300e3, -2000e3};
   const double v1[3] = {0, 0, 7500}, v2[3] = {0, 7500, 0}, v3[3] = {0, 5300, 5300};
   add_satellite(*e, "Leo1", "sphere", {1.0}, 300.0, p1, v1);
   add_satellite(*e, "Leo2", "sphere", {1.0}, 280.0, p2, v2);
   add_satellite(*e, "Leo3", "box", {2.0, 1.0, 1.0}, 320.0, p3, v3);
-  add_sensor(*e, "Sensor", "Host", s, -Eigen::Vector3d::UnitX());
+  add_sensor(*e, "Sensor", "Host", s, -x * Eigen::Vector3d::UnitX());
   return e;
 }
 

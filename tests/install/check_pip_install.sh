@@ -34,7 +34,7 @@ with eoir.Scenario.load(os.path.join(src, "scenarios/demo/default.json")) as sc:
     sc.set_time(times[-1])
     sc.engine.render("Sensor1")
     image = sc.engine.image("Sensor1", "sensor_mean")
-    assert image.shape == (128, 128) and times[-1] == "2010-08-25T18:05:00Z", (image.shape, times)
+    assert image.shape == (256, 256) and times[-1] == "2010-08-25T18:05:00Z", (image.shape, times)
 print(f"check_pip_install: eoir {eoir.__version__} from {site}: {len(times)} times, frame {image.shape}")
 PY
   ) || fail "the package installed in $site"

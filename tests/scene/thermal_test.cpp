@@ -21,6 +21,7 @@ std::unique_ptr<ScenarioHost> moon_view(const char* mode, const char* band_integ
     p["scene_mode"] = mode;
     doc["sensors"][0]["pointing"] = {{"type", "target"}, {"target", "Moon"}};
   });
+  host->set_string("Moon", "material", "gray_body");      // a black body: radiance = B(T)
   host->set_string("Moon", "thermal_model", "subsolar");  // T_ss 390 K, night 95 K by default
   host->render();
   return host;

@@ -69,7 +69,7 @@ def test_times_and_description():
         assert sc.times() == [f"2010-08-25T18:0{m}:00Z" for m in range(6)]
         assert sc.times(stop="2010-08-25T18:02:30Z", step_s=120) == [
             "2010-08-25T18:00:00Z", "2010-08-25T18:02:00Z", "2010-08-25T18:02:30Z"]
-        assert [s["name"] for s in sc.sensors] == ["Sensor1", "WideLWIR"]
+        assert [s["name"] for s in sc.sensors] == ["Sensor1", "WideLWIR", "Inspector"]
         assert sc.engine.time_iso().startswith("2010-08-25T18:00:00")
 
 

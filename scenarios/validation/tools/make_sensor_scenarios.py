@@ -11,6 +11,12 @@ import json
 import math
 import pathlib
 
+# The Earth of the sensor experiments: a uniform black body (300 K unless a
+# scenario says otherwise), neither reflecting sunlight nor following the
+# climatology: the spec 7 experiments test the sensor model against a
+# background of known radiance.
+EARTH_300K = {"name": "Earth", "properties": {"temperature_K": 300.0, "reflectance": 0.0, "thermal_model": "uniform"}}
+
 HERE = pathlib.Path(__file__).resolve().parent.parent
 EPOCH = "2010-08-25T18:00:00Z"
 STOP = "2010-08-25T18:05:00Z"
@@ -64,7 +70,7 @@ write("valid_sens_fov_extent.json", {
     "description": "Spec 7.1: a nadir-pointing sensor on a geostationary satellite, 0.4-0.7 um; horizontal FOV "
                    "17.401 deg = 2 asin(6378.1/42164.2), vertical 17.342 deg = 2 asin(6356.8/42164.2): the Earth "
                    "fills the field exactly.",
-    "start": EPOCH, "stop": EPOCH, "step_s": 60, "central_bodies": ["Earth"],
+    "start": EPOCH, "stop": EPOCH, "step_s": 60, "central_bodies": [EARTH_300K],
     "objects": [{"name": "Satellite1", "kind": "satellite",
                  "motion": {"type": "kepler", "central_body": "Earth", "semi_major_axis_km": 42164.2,
                             "eccentricity": 0.0, "inclination_deg": 0.0, "raan_deg": 0.0,
@@ -131,7 +137,7 @@ write("valid_sens_point_src_target.json", {
     "description": "Spec 7.5.5 and 7.7.2: a sensor on Satellite1 (a = 7300 km) points at Satellite2 (a = 7310 km, "
                    "same plane and phase: 10 km above it at the start), a 1 cm gray-body sphere at 250 K against "
                    "space; 8-12 um, 127 x 127 pixels whose pitch equals the Airy diameter (97.6 um at 10 um, F/4).",
-    "start": "2010-08-03T16:00:00Z", "stop": "2010-08-03T16:20:00Z", "step_s": 60, "central_bodies": ["Earth"],
+    "start": "2010-08-03T16:00:00Z", "stop": "2010-08-03T16:20:00Z", "step_s": 60, "central_bodies": [EARTH_300K],
     "objects": [
         {"name": "Satellite1", "kind": "satellite", "motion": dict(orbit, semi_major_axis_km=7300.0),
          "attitude": {"type": "nadir"}, "properties": {"shape": "none"}},
@@ -188,7 +194,7 @@ write("valid_sens_snr_access.json", {
                    "24 x 24 deg sensor, 8-12 um, on a geostationary satellite; the target is a LEO satellite at "
                    "300 K seen against the 288 K Earth (SNR ~0) or space (SNR ~5.3-7).",
     "start": "2010-12-08T22:00:00Z", "stop": "2010-12-09T22:00:00Z", "step_s": 60,
-    "central_bodies": [{"name": "Earth", "properties": {"temperature_K": 288.0}}],
+    "central_bodies": [{"name": "Earth", "properties": dict(EARTH_300K["properties"], temperature_K=288.0)}],
     "objects": [
         {"name": "Satellite1", "kind": "satellite",
          "motion": {"type": "kepler", "central_body": "Earth", "semi_major_axis_km": 42164.17, "eccentricity": 0.0,

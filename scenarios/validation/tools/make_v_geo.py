@@ -107,6 +107,9 @@ doc["objects"] = [
     {"name": "Satellite2", "kind": "satellite", "motion": fixed(sat2),
      "properties": {"shape": "sphere", "dimensions_m": [10.0], "reflectance": 1.0, "temperature_K": 300.0}},
 ]
+# The Earth black and cold: sunlight alone (no earthshine, no Earth infrared).
+doc["central_bodies"] = [{"name": "Earth", "properties": {"temperature_K": 0.0, "reflectance": 0.0,
+                                                          "thermal_model": "uniform"}}]
 common = {"band_low_um": 0.4, "band_high_um": 0.7, "spectral_intervals": 30, "focal_length_cm": 100.0,
           "f_number": 4.0, "diffraction_wavelength_um": 0.55, "noise_enabled": False}
 doc["sensors"] = [

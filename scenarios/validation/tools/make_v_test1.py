@@ -72,7 +72,11 @@ scenario = {
     "start": EPOCH,
     "stop": EPOCH,
     "step_s": 60,
-    "central_bodies": ["Earth", "Moon"],
+    # Uniform 300 K black bodies: the geometry of 6.1.1 against plain backgrounds.
+    "central_bodies": [{"name": "Earth", "properties": {"temperature_K": 300.0, "reflectance": 0.0,
+                                                        "thermal_model": "uniform"}},
+                       {"name": "Moon", "properties": {"material": "gray_body", "reflectance": 0.0,
+                                                       "temperature_K": 300.0, "thermal_model": "uniform"}}],
     "objects": [{
         "name": "Satellite1", "kind": "satellite",
         # i = 90 deg, RAAN = RA, argument of latitude = Dec puts a circular

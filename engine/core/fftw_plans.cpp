@@ -1,6 +1,7 @@
 #include "core/fftw_plans.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <map>
 #include <mutex>
 #include <thread>
@@ -11,6 +12,8 @@
 namespace eoir::fftw {
 namespace {
 
+std::atomic<std::uint64_t> requests{0};
+
 class Cache {
  public:
   static Cache& instance() {
@@ -18,6 +21,7 @@ class Cache {
     return cache;
   }
   fftw_plan get(bool forward, int rows, int cols) {
+    requests.fetch_add(1, std::memory_order_relaxed);
     std::lock_guard<std::mutex> lock(mutex_);
     const auto key = std::make_tuple(forward, rows, cols);
     auto it = plans_.find(key);
@@ -51,6 +55,7 @@ class Cache {
 
 fftw_plan r2c_2d(int rows, int cols) { return Cache::instance().get(true, rows, cols); }
 fftw_plan c2r_2d(int rows, int cols) { return Cache::instance().get(false, rows, cols); }
+std::uint64_t plan_requests() { return requests.load(std::memory_order_relaxed); }
 
 int good_size(int n) {
   for (int m = std::max(n, 1);; ++m) {

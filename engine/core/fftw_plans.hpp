@@ -7,6 +7,7 @@
 #include <fftw3.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 
 namespace eoir::fftw {
@@ -15,6 +16,10 @@ namespace eoir::fftw {
 // (row-major, the complex side rows x (cols/2 + 1)).
 fftw_plan r2c_2d(int rows, int cols);
 fftw_plan c2r_2d(int rows, int cols);
+// How many plans r2c_2d and c2r_2d have handed out in this process: the engine
+// asks for a plan right before each transform it executes, so this counts
+// transforms (tests check that a frame does none it need not).
+std::uint64_t plan_requests();
 
 struct Free {
   void operator()(void* p) const { fftw_free(p); }

@@ -24,6 +24,11 @@ const std::vector<std::string>& spectral_quadrature_names() {
   return names;
 }
 
+const std::vector<std::string>& point_tail_names() {
+  static const std::vector<std::string> names{"auto", "direct", "multilevel"};
+  return names;
+}
+
 const std::vector<Spec>& fidelity_properties() {
   static const std::vector<Spec> table = [] {
     std::vector<Spec> t;
@@ -92,7 +97,9 @@ const std::vector<Spec>& fidelity_properties() {
     } reaches[] = {{"scene_psf_reach_lambda_f", "scene_psf_reach_jitter_sigmas", "scene_psf_reach_defocus_blurs",
                     &F::scene_psf_reach, "guard band of scene samples beyond the field"},
                    {"point_psf_reach_lambda_f", "point_psf_reach_jitter_sigmas", "point_psf_reach_defocus_blurs",
-                    &F::point_psf_reach, "window of a point source's energy on detector"}};
+                    &F::point_psf_reach, "window of a point source's energy on detector"},
+                   {"point_core_reach_lambda_f", "point_core_reach_jitter_sigmas", "point_core_reach_defocus_blurs",
+                    &F::point_core_reach, "core of a point source, from its own tables (the tail beyond)"}};
     for (const auto& r : reaches) {
       PsfReach F::*reach = r.reach;
       t.push_back(number_property<F>(r.lambda_f, "lambda F#",
@@ -108,6 +115,31 @@ const std::vector<Spec>& fidelity_properties() {
                                      [reach](F& f) -> double& { return (f.*reach).defocus_blur_diameters; },
                                      Range{0, 100}, true));
     }
+    t.push_back(number_property<F>("point_offset_steps_per_lambda_f", "per lambda F#",
+                                   "Point sources: sub-pixel offsets per lambda F# (at least 2 per pixel) at which "
+                                   "the energy on detector of the core box about a source is tabulated; cubic in the "
+                                   "offset between them",
+                                   [](F& f) -> auto& { return f.point_offset_steps_per_lambda_f; }, Range{0.5, 64},
+                                   true));
+    t.push_back(enum_property<F, PointTail>(
+        "point_tail",
+        "Point sources beyond the core box: direct (pixel by pixel from a table, cost ~ window^2 per source), "
+        "multilevel (grids shared by all sources, cost ~ pixels per frame) or auto (direct unless costly and "
+        "multilevel over 4 times cheaper for the frame)",
+        [](F& f) -> auto& { return f.point_tail; }, point_tail_names(), true));
+    t.push_back(number_property<F>("point_table_max_mib", "MiB",
+                                   "Point sources: bound on the memory of the model's tables (offsets are "
+                                   "coarsened, or the direct tail dropped, to stay within it)",
+                                   [](F& f) -> auto& { return f.point_table_max_mib; }, Range{0.25, 65536}, true));
+    t.push_back(number_property<F>("streak_steps_per_pixel", "per pixel",
+                                   "Streaks: sub-steps along the segment a point source covers during the "
+                                   "integration, at least this many per pixel",
+                                   [](F& f) -> auto& { return f.streak_steps_per_pixel; }, Range{1, 1024}, true));
+    t.push_back(number_property<F>("streak_steps_per_lambda_f", "per lambda F#",
+                                   "Streaks: sub-steps along the segment, at least this many per lambda F# (the "
+                                   "sum over sub-steps of the pixel-integrated PSF, band-limited at 1 / lambda F#, "
+                                   "is then its integral)",
+                                   [](F& f) -> auto& { return f.streak_steps_per_lambda_f; }, Range{0.1, 64}, true));
     t.push_back(number_property<F>("fft_padding", "guard bands",
                                    "Padding of the scene FFT beyond the guard band, in guard bands (the border "
                                    "samples repeated)",

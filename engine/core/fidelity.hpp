@@ -23,6 +23,13 @@ enum class BandIntegration : int { grid = 0, exact = 1 };
 // Where the grid samples each of its N intervals (radiometry/band_integral.hpp):
 // the midpoint (second order) or the left edge lambda_i of spec 5.3 (first order).
 enum class SpectralQuadrature : int { interval_midpoint = 0, interval_left_edge = 1 };
+// How a point source's energy beyond its core box reaches the pixels
+// (sensor/point_source_model.hpp): pixel by pixel from a table (direct, cost
+// ~ window^2 per source), through grids of spacing a, 2a, 4a ... pixels
+// shared by all sources (multilevel, cost ~ pixels per frame), or for each
+// frame direct unless it is costly and multilevel costs over 4 times less
+// (automatic). Both keep each source's energy, centroid and second moments.
+enum class PointTail : int { automatic = 0, direct = 1, multilevel = 2 };
 
 // How far the PSF reaches in the focal plane: k_d lambda F# of diffraction
 // tail, k_j sigma of jitter (times the focal length) and k_f defocus blur
@@ -58,6 +65,16 @@ struct Fidelity {
   double psf_fold_budget = 4194304.0;          // OTF evaluations allowed when the spectrum is folded
   PsfReach scene_psf_reach{20.0, 4.0, 1.0};    // guard band of scene samples beyond the field (~1 % tail)
   PsfReach point_psf_reach{500.0, 6.0, 1.0};   // window of a point source's energy on detector (~4e-4 tail)
+  // Point-source model (sensor/point_source_model.hpp): tables of the energy
+  // on detector against the sub-pixel offset, built once per sensor.
+  PsfReach point_core_reach{8.0, 4.0, 1.0};     // a: each source's own table out to a..2a pixels, the tail beyond
+  double point_offset_steps_per_lambda_f = 4.0;  // sub-pixel offsets per lambda F# of that table (cubic in the offset)
+  PointTail point_tail = PointTail::automatic;   // how the energy beyond the core box is added
+  double point_table_max_mib = 64.0;             // bound on the model's tables (MiB)
+  // Streaks (a source moving during the integration): sub-steps along the
+  // segment, at least this many per pixel and per lambda F#.
+  double streak_steps_per_pixel = 8.0;
+  double streak_steps_per_lambda_f = 1.0;
   double fft_padding = 1.0;  // FFT padding beyond the guard band, in guard bands
   // Reports (spec 5.12-5.13).
   std::int64_t otf_curve_points = 101;            // samples of the OTF/MTF report curves
@@ -70,6 +87,7 @@ const std::vector<PropertySpec<Fidelity>>& fidelity_properties();
 const std::vector<std::string>& scene_mode_names();
 const std::vector<std::string>& band_integration_names();
 const std::vector<std::string>& spectral_quadrature_names();
+const std::vector<std::string>& point_tail_names();
 
 // Throws out_of_range naming the field unless every knob is in its range
 // (and psf_grid_size a power of two).

@@ -3,17 +3,47 @@
 #include <GeographicLib/Geocentric.hpp>
 #include <erfa.h>
 
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
 namespace eoir::frames {
 
-Mat3 j2000_to_earth_fixed(const EngineTime& t) {
-  const JulianDate tt = t.to(TimeScale::tt);
-  const JulianDate utc = t.to(TimeScale::utc);  // UT1 ~ UTC (see header)
+namespace {
+
+constexpr double kPoleNodesPerDay = 86400.0 / kCelestialPoleGridStep_s;
+
+// ERFA's celestial-to-intermediate matrix at grid node k_in_day of TT day
+// `day`, computed once per thread and kept (a bounded table).
+const Mat3& c2i_node(double day, std::int64_t k_in_day) {
+  thread_local std::unordered_map<std::int64_t, Mat3> nodes;
+  const std::int64_t key = static_cast<std::int64_t>(day) * static_cast<std::int64_t>(kPoleNodesPerDay) + k_in_day;
+  auto it = nodes.find(key);
+  if (it != nodes.end()) return it->second;
+  if (nodes.size() > 4096) nodes.clear();
+  const JulianDate tt =
+      EngineTime::from_tt_days(day, static_cast<double>(k_in_day) / kPoleNodesPerDay).to(TimeScale::tt);
   double r[3][3];
-  eraC2t06a(tt.jd1, tt.jd2, utc.jd1, utc.jd2, 0.0, 0.0, r);
+  eraC2i06a(tt.jd1, tt.jd2, r);
   Mat3 m;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) m(i, j) = r[i][j];
-  return m;
+  return nodes.emplace(key, m).first->second;
+}
+
+}  // namespace
+
+Mat3 j2000_to_earth_fixed(const EngineTime& t) {
+  const double x = t.fraction() * kPoleNodesPerDay;
+  const double k = std::floor(x), u = x - k;
+  const Mat3 c2i = (1.0 - u) * c2i_node(t.days(), static_cast<std::int64_t>(k)) +
+                   u * c2i_node(t.days(), static_cast<std::int64_t>(k) + 1);
+  const JulianDate utc = t.to(TimeScale::utc);  // UT1 ~ UTC (see header)
+  const double era = eraEra00(utc.jd1, utc.jd2);
+  const double c = std::cos(era), s = std::sin(era);
+  Mat3 r3;  // R3(ERA): the intermediate frame to Earth-fixed (no polar motion)
+  r3 << c, s, 0, -s, c, 0, 0, 0, 1;
+  return r3 * c2i;
 }
 
 void earth_fixed_to_j2000(const EngineTime& t, const Vec3& r_ef, const Vec3& v_ef, Vec3& r_j2000, Vec3& v_j2000) {

@@ -13,7 +13,14 @@ namespace eoir::frames {
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
-// Rotation taking J2000 (GCRS) vectors to Earth-fixed (ITRS) at time t.
+// Rotation taking J2000 (GCRS) vectors to Earth-fixed (ITRS) at time t: the
+// IAU 2006/2000A CIO-based chain (eraC2t06a without polar motion, UT1 = UTC).
+// The celestial-to-intermediate matrix (precession-nutation, eraC2i06a) is
+// ERFA's at nodes kCelestialPoleGridStep_s apart (TT) and linear between
+// them: its fastest term (0.6" at 13.66 d) bends by at most 3e-11 rad over a
+// step; the Earth rotation angle is exact at t. The grid is fixed in TT, so
+// results do not depend on what was asked before.
+constexpr double kCelestialPoleGridStep_s = 1800.0;
 Mat3 j2000_to_earth_fixed(const EngineTime& t);
 // Earth's rotation rate (rad/s) about ITRS z.
 constexpr double earth_rotation_rad_per_s = 7.292115146706979e-5;

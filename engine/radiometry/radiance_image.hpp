@@ -11,7 +11,9 @@
 namespace eoir::radiometry {
 
 // An object smaller than a scene sample (spec 4.1.6.1), kept apart from the
-// sample grid at its exact focal-plane position.
+// sample grid at its exact focal-plane position. A source moving during the
+// integration time draws a streak: its energy spread uniformly along the
+// segment from (column, row) - streak / 2 to (column, row) + streak / 2.
 struct PointSource {
   std::int32_t object_id = -1;  // the world's object, or -1 for a star
   std::int32_t star = -1;       // index of a star in the world's sky, or -1

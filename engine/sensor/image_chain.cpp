@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <map>
 
 #include "core/constants.hpp"
 #include "core/fftw_plans.hpp"
 #include "sensor/otf.hpp"
-#include "sensor/system_psf.hpp"
 
 namespace eoir::sensor {
 namespace {
@@ -93,6 +91,23 @@ std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::R
   return out;
 }
 
+std::vector<PointSourceSignal> point_source_signals(const SensorModel& model, const radiometry::RadianceImage& scene) {
+  const geometry::SampleGrid& g = scene.grid;
+  const StaticMetrics& m = model.metrics;
+  std::vector<PointSourceSignal> signals;
+  signals.reserve(scene.point_sources.size());
+  for (const radiometry::PointSource& ps : scene.point_sources) {
+    PointSourceSignal s;
+    s.x_px = g.pixel_x_of(ps.column);
+    s.y_px = g.pixel_y_of(ps.row);
+    s.streak_x_px = ps.streak_columns / static_cast<double>(g.per_pixel);
+    s.streak_y_px = ps.streak_rows / static_cast<double>(g.per_pixel);
+    s.electrons = m.peak_irradiance_responsivity * ps.irradiance_W_cm2 / m.ensquared_energy;
+    signals.push_back(s);
+  }
+  return signals;
+}
+
 SensorImage render_sensor_image(const SensorModel& model, const radiometry::RadianceImage& scene,
                                 std::mt19937_64& rng) {
   using clock = std::chrono::steady_clock;
@@ -107,49 +122,11 @@ SensorImage render_sensor_image(const SensorModel& model, const radiometry::Radi
   std::vector<double> mean = pixel_radiance(model, scene);
   const auto t1 = clock::now();
   for (double& v : mean) v *= m.peak_radiance_responsivity;
-  // Point sources: r_E = R_peak,E E^ps EOD / ENSQ (eqs. 50-51).
-  if (!scene.point_sources.empty()) {
-    const OpticsModel& optics = model.optics;
-    const Fidelity& f = model.fidelity();
-    // Window: the PSF's reach (fidelity point_psf_reach: 500 lambda F#, whose
-    // diffraction tail beyond holds less than 2 / (pi^2 500) = 4e-4 of the
-    // energy, plus the jitter and defocus blur) about the source, and no more
-    // than the array, as far as the PSF grid allows (energy_on_detector needs
-    // window < psf_grid_size). The cost of a window grows with its area.
-    const auto reach = static_cast<std::int64_t>(
-        std::ceil(psf_reach_cm(optics, f.point_psf_reach) / std::min(g.pitch_x_cm, g.pitch_y_cm)));
-    const std::int64_t half = std::clamp<std::int64_t>(
-        reach, 2, std::max<std::int64_t>(2, std::min(std::max(nx, ny), (f.psf_grid_size - 2) / 2)));
-    const std::int64_t window = 2 * half + 1;
-    const PsfNumerics numerics(f);
-    // Sources at the same sub-pixel offset share one energy-on-detector
-    // window (the costly part: an FFT of the folded OTF).
-    std::map<std::pair<long long, long long>, FocalPlaneSamples> eod_by_offset;
-    for (const radiometry::PointSource& ps : scene.point_sources) {
-      // Position in pixels (0 = centre of pixel 0) from the sample coordinates.
-      const double px = g.pixel_x_of(ps.column), py = g.pixel_y_of(ps.row);
-      const std::int64_t cx = static_cast<std::int64_t>(std::lround(px));
-      const std::int64_t cy = static_cast<std::int64_t>(std::lround(py));
-      // Energy on detector about pixel (cx, cy). Image columns grow toward
-      // -x and rows toward -y (geometry/sample_grid.hpp): a source right of
-      // or below the pixel centre sits at -x' or -y'.
-      const auto key = std::make_pair(std::llround((px - cx) * 1e9), std::llround((py - cy) * 1e9));
-      auto it = eod_by_offset.find(key);
-      if (it == eod_by_offset.end())
-        it = eod_by_offset
-                 .emplace(key, energy_on_detector(optics, g.pitch_x_cm, g.pitch_y_cm, window,
-                                                  -(px - cx) * g.pitch_x_cm, -(py - cy) * g.pitch_y_cm, numerics))
-                 .first;
-      const FocalPlaneSamples& eod = it->second;
-      const double signal = m.peak_irradiance_responsivity * ps.irradiance_W_cm2 / m.ensquared_energy;
-      for (std::int64_t dy = -half; dy <= half; ++dy)
-        for (std::int64_t dx = -half; dx <= half; ++dx) {
-          const std::int64_t x = cx + dx, y = cy + dy;
-          if (x < 0 || y < 0 || x >= nx || y >= ny) continue;
-          mean[static_cast<std::size_t>(y * nx + x)] += signal * eod.at(-dx, -dy);
-        }
-    }
-  }
+  // Point sources: r_E = R_peak,E E^ps EOD / ENSQ (eqs. 50-51), EOD from the
+  // sensor's point-source model (tables built once: no FFT here), streaks
+  // spread along their segment.
+  if (!scene.point_sources.empty())
+    render_point_sources(model.point_sources(), point_source_signals(model, scene), nx, ny, mean);
   const auto t2 = clock::now();
   // Noise (eqs. 53-54) and saturation (eq. 55); zero dark offset (5.11.3).
   out.electrons.resize(mean.size());

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "radiometry/radiance_image.hpp"
+#include "sensor/point_source_render.hpp"
 #include "sensor/sensor_model.hpp"
 
 namespace eoir::sensor {
@@ -28,5 +29,9 @@ SensorImage render_sensor_image(const SensorModel& model, const radiometry::Radi
 // Eq. 49 without the responsivity: the scene convolved with the system PSF
 // and averaged over each pixel's samples (W cm^-2 sr^-1 per pixel).
 std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene);
+
+// The scene's point sources in pixel coordinates, streaks in pixels, with
+// R_peak,E E^ps / ENSQ electrons each (eq. 50).
+std::vector<PointSourceSignal> point_source_signals(const SensorModel& model, const radiometry::RadianceImage& scene);
 
 }  // namespace eoir::sensor

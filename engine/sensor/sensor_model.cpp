@@ -11,6 +11,12 @@ double psf_reach_cm(const OpticsModel& optics, const PsfReach& reach) {
          reach.defocus_blur_diameters * optics.defocus_cm / optics.f_number;
 }
 
+const PointSourceModel& SensorModel::point_sources() const {
+  PointSourceModelCache& cache = *point_source_cache;
+  std::call_once(cache.built, [&] { cache.model = build_point_source_model(optics, grid, fidelity()); });
+  return cache.model;
+}
+
 std::shared_ptr<const SensorModel> resolve_sensor(const universe::SensorParameters& p) {
   auto model = std::make_shared<SensorModel>();
   model->parameters = p;

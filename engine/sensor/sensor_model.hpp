@@ -5,15 +5,23 @@
 // PSF reaches.
 #pragma once
 #include <memory>
+#include <mutex>
 
 #include "core/fidelity.hpp"
 #include "geometry/sample_grid.hpp"
 #include "radiometry/spectral_view.hpp"
 #include "sensor/otf.hpp"
+#include "sensor/point_source_model.hpp"
 #include "sensor/static_metrics.hpp"
 #include "universe/sensor_parameters.hpp"
 
 namespace eoir::sensor {
+
+// The point-source model of a sensor, built on first use, once.
+struct PointSourceModelCache {
+  std::once_flag built;
+  PointSourceModel model;
+};
 
 struct SensorModel {
   universe::SensorParameters parameters;
@@ -22,6 +30,13 @@ struct SensorModel {
   radiometry::SpectralView spectral;
   geometry::SampleGrid grid;
   const Fidelity& fidelity() const { return parameters.fidelity; }
+  // Tables of the energy on detector of point sources (point_source_model.hpp),
+  // built by the first call (thread-safe; a few tenths of a second), then
+  // shared. Copies of a SensorModel share them: they depend only on optics,
+  // grid and fidelity, which resolve_sensor sets once (a change of the
+  // sensor's properties resolves a new model, Engine::sensor_model).
+  const PointSourceModel& point_sources() const;
+  std::shared_ptr<PointSourceModelCache> point_source_cache = std::make_shared<PointSourceModelCache>();
 };
 
 // Throws eoir::Error naming the field of an invalid parameter.

@@ -204,6 +204,14 @@ FocalPlaneSamples energy_on_detector(const OpticsModel& optics, double pitch_x_c
                         4, numerics);
 }
 
+FocalPlaneSamples pixel_integrated_psf(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm,
+                                       double step_x_cm, double step_y_cm, std::int64_t size, double centre_x_cm,
+                                       double centre_y_cm, const PsfNumerics& numerics) {
+  // Sample ix of integrated_psf is (PSF conv box)(ix step - offset): offset = -centre.
+  return integrated_psf(optics, pitch_x_cm, pitch_y_cm, step_x_cm, step_y_cm, size, -centre_x_cm, -centre_y_cm, 1,
+                        numerics);
+}
+
 double ensquared_energy(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm,
                         const PsfNumerics& numerics) {
   return energy_on_detector(optics, pitch_x_cm, pitch_y_cm, 1, 0.0, 0.0, numerics).values[0];

@@ -74,6 +74,16 @@ FocalPlaneSamples energy_on_detector(const OpticsModel& optics, double pitch_x_c
                                      std::int64_t window, double offset_x_cm, double offset_y_cm,
                                      const PsfNumerics& numerics);
 
+// (b') The same quantity as a function of the source's position, on a finer
+// grid: element (ix, iy) is the fraction of a source's energy falling on a
+// pixel whose centre lies at (centre_x + ix step_x, centre_y + iy step_y)
+// from the source (the PSF integrated over a p_x x p_y cell there). With
+// step = pitch and centre 0 this is energy_on_detector at offset 0; finer
+// steps tabulate eq. 51 against sub-pixel offsets with one FFT.
+FocalPlaneSamples pixel_integrated_psf(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm,
+                                       double step_x_cm, double step_y_cm, std::int64_t size, double centre_x_cm,
+                                       double centre_y_cm, const PsfNumerics& numerics);
+
 // (c) Ensquared energy, eq. 42: EOD of the centre pixel for a point source at
 // its centre.
 double ensquared_energy(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm, const PsfNumerics& numerics);

@@ -2,6 +2,10 @@
 
 #include <erfa.h>
 
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
 #include "core/constants.hpp"
 
 namespace eoir::universe {
@@ -59,14 +63,13 @@ const CentralBodyInfo* find_central_body(const std::string& name) {
   return nullptr;
 }
 
-void central_body_state_j2000(const CentralBodyInfo& body, const EngineTime& t, frames::Vec3& r_m,
-                              frames::Vec3& v_m_s) {
+namespace {
+
+// ERFA's ephemeris at one instant (geocentric J2000, m and m/s).
+void erfa_state_j2000(const CentralBodyInfo& body, const EngineTime& t, frames::Vec3& r_m, frames::Vec3& v_m_s) {
   const JulianDate tdb = t.to(TimeScale::tdb);
   constexpr double au = constants::au_m;
   constexpr double au_per_day = constants::au_m / constants::seconds_per_day;
-  r_m.setZero();
-  v_m_s.setZero();
-  if (body.id == CentralBody::earth) return;
   double pv[2][3];
   if (body.id == CentralBody::moon) {
     eraMoon98(tdb.jd1, tdb.jd2, pv);
@@ -84,5 +87,51 @@ void central_body_state_j2000(const CentralBodyInfo& body, const EngineTime& t, 
   }
   r_m = (rh - frames::Vec3(earth_h[0][0], earth_h[0][1], earth_h[0][2])) * au;
   v_m_s = (vh - frames::Vec3(earth_h[1][0], earth_h[1][1], earth_h[1][2])) * au_per_day;
+}
+
+struct NodeState {
+  frames::Vec3 r, v;
+};
+
+constexpr double kNodesPerDay = constants::seconds_per_day / kEphemerisGridStep_s;
+
+// ERFA's state at grid node k_in_day of TT day `day` (whole days since
+// J2000), computed once per thread and kept (a bounded table).
+const NodeState& node_state(const CentralBodyInfo& body, double day, std::int64_t k_in_day) {
+  thread_local std::unordered_map<std::uint64_t, NodeState> nodes;
+  const auto per_day = static_cast<std::int64_t>(kNodesPerDay);
+  const std::int64_t k = static_cast<std::int64_t>(day) * per_day + k_in_day;
+  const std::uint64_t key = (static_cast<std::uint64_t>(k) << 4) | static_cast<std::uint64_t>(body.id);
+  auto it = nodes.find(key);
+  if (it != nodes.end()) return it->second;
+  if (nodes.size() > 4096) nodes.clear();
+  NodeState n;
+  erfa_state_j2000(body, EngineTime::from_tt_days(day, static_cast<double>(k_in_day) / kNodesPerDay), n.r, n.v);
+  return nodes.emplace(key, n).first->second;
+}
+
+}  // namespace
+
+void central_body_state_j2000(const CentralBodyInfo& body, const EngineTime& t, frames::Vec3& r_m,
+                              frames::Vec3& v_m_s) {
+  r_m.setZero();
+  v_m_s.setZero();
+  if (body.id == CentralBody::earth) return;
+  // Cubic Lagrange through the four grid nodes around t (ERFA's positions
+  // and, separately, its velocities there: Plan94's velocity is not the
+  // derivative of its position to better than ~1 m/s, so a Hermite blend of
+  // the two would move positions by ~100 m). ERFA's series run once per node
+  // instead of at every time a frame asks for (light-time iterations,
+  // integration start and end).
+  const double x = t.fraction() * kNodesPerDay;
+  const double k = std::floor(x), u = x - k;
+  const auto k0 = static_cast<std::int64_t>(k);
+  const double w[4] = {-u * (u - 1) * (u - 2) / 6, (u + 1) * (u - 1) * (u - 2) / 2, -(u + 1) * u * (u - 2) / 2,
+                       (u + 1) * u * (u - 1) / 6};
+  for (int i = 0; i < 4; ++i) {
+    const NodeState& n = node_state(body, t.days(), k0 - 1 + i);
+    r_m += w[i] * n.r;
+    v_m_s += w[i] * n.v;
+  }
 }
 }  // namespace eoir::universe

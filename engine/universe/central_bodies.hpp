@@ -45,7 +45,12 @@ const CentralBodyInfo* find_central_body(const std::string& name);
 
 // Geocentric J2000 position (m) and velocity (m/s) of a central body: Sun and
 // planets from eraEpv00/eraPlan94 (geometric, no light time), Moon from
-// eraMoon98, Earth at the origin.
+// eraMoon98, Earth at the origin; ERFA at nodes kEphemerisGridStep_s apart
+// (TT), cubic Lagrange interpolation through the four nodes around t:
+// positions within 5 mm of ERFA's (the Moon; the Earth 1 mm, Mars 2 mm),
+// against ERFA's own accuracy of km (Moon98 ~10 km, Epv00 ~1 km). The grid
+// is fixed in TT, so results do not depend on what was asked before.
+constexpr double kEphemerisGridStep_s = 1800.0;
 void central_body_state_j2000(const CentralBodyInfo& body, const EngineTime& t, frames::Vec3& r_m,
                               frames::Vec3& v_m_s);
 

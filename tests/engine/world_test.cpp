@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "engine.hpp"
+#include "sensor/sensor_model.hpp"
 
 namespace {
 using eoir::Engine;
@@ -179,4 +180,21 @@ TEST(World, ProgressReportsAndCancels) {
     EXPECT_EQ(err.status(), eoir::Status::cancelled);
   }
   EXPECT_EQ(&e.frame("Sensor"), first);
+}
+
+// The sensor model, with its point-source tables (sensor/point_source_model.hpp),
+// is resolved once per sensor revision: kept while nothing changes, built
+// anew after a sensor or fidelity property changes.
+TEST(World, PointSourceTablesFollowTheSensorParameters) {
+  auto e = geo_engine();
+  const auto first = e->sensor_model("Sensor");
+  const eoir::sensor::PointSourceModel& tables = first->point_sources();
+  EXPECT_EQ(e->sensor_model("Sensor"), first);
+  EXPECT_EQ(&e->sensor_model("Sensor")->point_sources(), &tables);
+  e->set_property("Sensor", "point_offset_steps_per_lambda_f", Value(8.0));  // twice the default
+  const auto second = e->sensor_model("Sensor");
+  EXPECT_NE(second, first);
+  EXPECT_GT(second->point_sources().core_steps, tables.core_steps);
+  e->set_property("Sensor", "f_number", Value(8.0));
+  EXPECT_LT(e->sensor_model("Sensor")->point_sources().core_steps, second->point_sources().core_steps);
 }

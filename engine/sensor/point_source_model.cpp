@@ -1,0 +1,180 @@
+#include "sensor/point_source_model.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "sensor/sensor_model.hpp"
+#include "sensor/system_psf.hpp"
+
+namespace eoir::sensor {
+namespace {
+
+constexpr std::int64_t kMaxTableFft = 2048;  // FFT size cap of the table builds (64 MB of transient buffers)
+// FFT period of a table: at least twice its extent, and far enough that the
+// PSF's copies alias below 1e-6 of the energy into any pixel: eight copies
+// of E(r) ~ (lambda F# / p) / (pi^3 r^3) per pixel at r = P pixels (the
+// Airy tail) give P = (8e6 / pi^3)^(1/3) (lambda F# / p)^(1/3) = 64 (lambda F# / p)^(1/3).
+constexpr double kTablePeriodPerExtent = 2.0;
+constexpr double kAliasPeriodPixels = 64.0;
+
+// Calls store(jx, jy, E(u)) for u = (j + delta) / steps pixels along each
+// axis, j in [-half, half], delta = 1/2 for odd `steps` (so that the table
+// offsets -1/2 + i / steps fall on samples). One FFT of at most kMaxTableFft
+// points when its period at this step is long enough; otherwise m x m FFTs
+// at m steps, interleaved (j = m i + r, r in [0, m)).
+template <class Store>
+void sample_pixel_energy(const OpticsModel& optics, const geometry::SampleGrid& g, std::int64_t steps,
+                         std::int64_t half, const Fidelity& f, Store&& store) {
+  const double delta = steps % 2 ? 0.5 : 0.0;
+  const double lambda_f_cm = optics.diffraction_wavelength_cm * optics.f_number;
+  const double pixel_in_lambda_f = std::max(g.pitch_x_cm, g.pitch_y_cm) / lambda_f_cm;
+  const double extent_px = 2.0 * static_cast<double>(half) / static_cast<double>(steps);
+  const double period_px =
+      std::max(kTablePeriodPerExtent * extent_px, kAliasPeriodPixels / std::cbrt(pixel_in_lambda_f));
+  const auto period_fine = static_cast<std::int64_t>(std::ceil(period_px * static_cast<double>(steps)));
+  const std::int64_t m = (period_fine + kMaxTableFft - 1) / kMaxTableFft;
+  const std::int64_t coarse_half = half / m + 1, size = 2 * coarse_half + 1;
+  const double fine_x = g.pitch_x_cm / static_cast<double>(steps), fine_y = g.pitch_y_cm / static_cast<double>(steps);
+  const double step_x = fine_x * static_cast<double>(m), step_y = fine_y * static_cast<double>(m);
+  // The FFT period, in steps, is the window plus the alias margin
+  // (system_psf.cpp): the margin sets it; the FFT is as large as a
+  // Nyquist-fine spacing needs at that period, up to the cap (beyond it the
+  // spectrum is folded: exact sampling, more OTF evaluations).
+  const std::int64_t period_steps =
+      std::min(kMaxTableFft, std::max((period_fine + m - 1) / m, size + f.psf_alias_margin_steps));
+  PsfNumerics numerics(f);
+  numerics.alias_margin_steps = std::max<std::int64_t>(1, period_steps - size);
+  const std::int64_t nyquist = std::max(fft_subdivisions(optics, step_x, 1), fft_subdivisions(optics, step_y, 1));
+  numerics.fft_size = 128;
+  while (numerics.fft_size < kMaxTableFft && numerics.fft_size < period_steps * nyquist) numerics.fft_size *= 2;
+  for (std::int64_t ry = 0; ry < m; ++ry)
+    for (std::int64_t rx = 0; rx < m; ++rx) {
+      const FocalPlaneSamples t =
+          pixel_integrated_psf(optics, g.pitch_x_cm, g.pitch_y_cm, step_x, step_y, size,
+                               (static_cast<double>(rx) + delta) * fine_x, (static_cast<double>(ry) + delta) * fine_y,
+                               numerics);
+      for (std::int64_t iy = -coarse_half; iy <= coarse_half; ++iy) {
+        const std::int64_t jy = m * iy + ry;
+        if (jy < -half || jy > half) continue;
+        for (std::int64_t ix = -coarse_half; ix <= coarse_half; ++ix) {
+          const std::int64_t jx = m * ix + rx;
+          if (jx >= -half && jx <= half) store(jx, jy, t.at(ix, iy));
+        }
+      }
+    }
+}
+
+// The table entries that hold sample j along one axis: offset index i and
+// pixel d with j = d S + floor(S / 2) - (i - shift), i in [0, offsets), |d| <= reach.
+std::vector<std::vector<std::pair<std::int64_t, std::int64_t>>> entries_of_samples(std::int64_t half, std::int64_t s,
+                                                                                    std::int64_t offsets,
+                                                                                    std::int64_t shift,
+                                                                                    std::int64_t reach) {
+  std::vector<std::vector<std::pair<std::int64_t, std::int64_t>>> out(static_cast<std::size_t>(2 * half + 1));
+  for (std::int64_t d = -reach; d <= reach; ++d)
+    for (std::int64_t i = 0; i < offsets; ++i) {
+      const std::int64_t j = d * s + s / 2 - (i - shift);
+      out[static_cast<std::size_t>(j + half)].emplace_back(i, d);
+    }
+  return out;
+}
+
+std::int64_t core_bytes(std::int64_t c, std::int64_t s) { return (2 * c + 1) * (2 * c + 1) * (s + 3) * (s + 3) * 4; }
+std::int64_t tail_bytes(std::int64_t h) {
+  const std::int64_t s = PointSourceModel::tail_steps + 1;
+  return (2 * h + 1) * (2 * h + 1) * s * s * 4;
+}
+
+}  // namespace
+
+std::int64_t PointSourceModel::bytes() const {
+  std::int64_t total = static_cast<std::int64_t>((core.size() + tail.size()) * sizeof(float));
+  for (const HaloLevel& l : halo) total += static_cast<std::int64_t>(l.kernel.size() * sizeof(double));
+  return total;
+}
+
+std::int64_t point_window_half(const OpticsModel& optics, const geometry::SampleGrid& g, const Fidelity& f) {
+  const auto reach = static_cast<std::int64_t>(
+      std::ceil(psf_reach_cm(optics, f.point_psf_reach) / std::min(g.pitch_x_cm, g.pitch_y_cm)));
+  return std::clamp<std::int64_t>(
+      reach, 2, std::max<std::int64_t>(2, std::min(std::max(g.pixels_x, g.pixels_y), (f.psf_grid_size - 2) / 2)));
+}
+
+PointSourceModel build_point_source_model(const OpticsModel& optics, const geometry::SampleGrid& g,
+                                          const Fidelity& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  PointSourceModel m;
+  m.tail_mode = f.point_tail;
+  m.window_half = point_window_half(optics, g, f);
+  const double min_pitch = std::min(g.pitch_x_cm, g.pitch_y_cm), max_pitch = std::max(g.pitch_x_cm, g.pitch_y_cm);
+  const double lambda_f_cm = optics.diffraction_wavelength_cm * optics.f_number;
+  const double pixel_in_lambda_f = max_pitch / lambda_f_cm;
+  m.taper_start = std::max<std::int64_t>(
+      2, static_cast<std::int64_t>(std::ceil(psf_reach_cm(optics, f.point_core_reach) / min_pitch - 1e-9)));
+  m.core_steps = std::max<std::int64_t>(
+      2, static_cast<std::int64_t>(std::ceil(f.point_offset_steps_per_lambda_f * pixel_in_lambda_f - 1e-9)));
+  // Within the memory bound: three quarters of it for the core table, a
+  // quarter for the direct tail.
+  const double budget = f.point_table_max_mib * 1024.0 * 1024.0;
+  auto core_half = [&] {
+    return m.window_half <= m.taper_start ? m.window_half : std::min(2 * m.taper_start, m.window_half);
+  };
+  while (static_cast<double>(core_bytes(core_half(), m.core_steps)) > 0.75 * budget) {
+    if (m.core_steps > 1)
+      m.core_steps = std::max<std::int64_t>(1, m.core_steps * 9 / 10);
+    else if (m.taper_start > 2)
+      m.taper_start = std::max<std::int64_t>(2, m.taper_start / 2);
+    else
+      break;
+  }
+  m.core_half = core_half();
+  const std::int64_t c = m.core_half, H = m.window_half;
+
+  // Core: offsets i = 0..S + 2 <-> phi = -1/2 + (i - 1) / S; the sample of
+  // E(d - phi) is j = d S + floor(S / 2) - (i - 1).
+  {
+    const std::int64_t s = m.core_steps, offsets = s + 3, half = c * s + s + 1, box = 2 * c + 1;
+    const auto entries = entries_of_samples(half, s, offsets, 1, c);
+    m.core.assign(static_cast<std::size_t>(offsets * offsets * box * box), 0.0f);
+    sample_pixel_energy(optics, g, s, half, f, [&](std::int64_t jx, std::int64_t jy, double v) {
+      for (const auto& [iy, dy] : entries[static_cast<std::size_t>(jy + half)])
+        for (const auto& [ix, dx] : entries[static_cast<std::size_t>(jx + half)])
+          m.core[static_cast<std::size_t>((iy * offsets + ix) * box * box + (dy + c) * box + dx + c)] =
+              static_cast<float>(v);
+    });
+  }
+  if (m.has_tail()) {
+    // E at half-pixel offsets over the window: the direct tail (if it fits
+    // the bound; zero on the core box) and, at whole pixels, E0 for the
+    // multilevel tail. Offsets i = 0..2 <-> phi = -1/2 + i / 2: j = 2 d + 1 - i.
+    const std::int64_t s = PointSourceModel::tail_steps, offsets = s + 1, half = H * s + s, window = 2 * H + 1;
+    const bool direct = static_cast<double>(tail_bytes(H)) <= budget / 4;
+    if (direct) m.tail.assign(static_cast<std::size_t>(offsets * offsets * window * window), 0.0f);
+    const auto entries = entries_of_samples(half, s, offsets, 0, H);
+    FocalPlaneSamples e0;
+    e0.size = window;
+    e0.step_x_cm = g.pitch_x_cm;
+    e0.step_y_cm = g.pitch_y_cm;
+    e0.values.assign(static_cast<std::size_t>(window * window), 0.0);
+    sample_pixel_energy(optics, g, s, half, f, [&](std::int64_t jx, std::int64_t jy, double v) {
+      if (jx % s == 0 && jy % s == 0 && std::abs(jx) <= s * H && std::abs(jy) <= s * H)
+        e0.values[static_cast<std::size_t>((jy / s + H) * window + jx / s + H)] = v;
+      if (!direct) return;
+      for (const auto& [iy, dy] : entries[static_cast<std::size_t>(jy + half)])
+        for (const auto& [ix, dx] : entries[static_cast<std::size_t>(jx + half)])
+          if (std::abs(dx) > c || std::abs(dy) > c)  // the core box is the core's
+            m.tail[static_cast<std::size_t>((iy * offsets + ix) * window * window + (dy + H) * window + dx + H)] =
+                static_cast<float>(v);
+    });
+    m.halo = halo_levels(e0, m.taper_start);
+  }
+  m.streak_steps_per_pixel_x =
+      std::max(f.streak_steps_per_pixel, f.streak_steps_per_lambda_f * g.pitch_x_cm / lambda_f_cm);
+  m.streak_steps_per_pixel_y =
+      std::max(f.streak_steps_per_pixel, f.streak_steps_per_lambda_f * g.pitch_y_cm / lambda_f_cm);
+  m.build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return m;
+}
+
+}  // namespace eoir::sensor

@@ -77,9 +77,10 @@ inline void add_sensor(Engine& e, const std::string& name, const std::string& pa
 // -x with day_side false) carrying "Sensor" (looking at the Earth's centre),
 // and three LEO satellites (two 2 m spheres and a 2 x 1 x 1 m box) between it
 // and the Earth, inside the field (sunlit by day, in the Earth's shadow by night).
-inline std::unique_ptr<Engine> make_geo_scene(const SensorSetup& s, std::uint64_t seed = 1) {
+inline std::unique_ptr<Engine> make_geo_scene(const SensorSetup& s, std::uint64_t seed = 1, std::uint32_t threads = 0) {
   EngineOptions opt;
   opt.seed = seed;
+  opt.threads = threads;
   auto e = std::make_unique<Engine>(opt);
   e->set_time(bench_epoch());
   e->add_object(universe::ObjectKind::central_body, "Earth");

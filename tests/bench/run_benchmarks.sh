@@ -19,7 +19,7 @@ python="${PYTHON:-/usr/bin/python3}"
 
 for exe in tests/bench/bench_static_metrics tests/bench/bench_frame tests/bench/bench_state \
            tests/bench/bench_band tests/bench/bench_targets tests/bench/bench_point_sources \
-           tests/geometry/bench_ray_caster; do
+           tests/geometry/bench_ray_caster tests/bench/bench_eclipse tests/bench/bench_brdf; do
   [ -x "$build/$exe" ] || { echo "missing $build/$exe: build first" >&2; exit 1; }
 done
 mkdir -p "$results"
@@ -58,6 +58,10 @@ for px in 128 256 512 1024; do
 done
 run bench_frame_fidelity tests/bench/bench_frame --benchmark_filter='^BM_Frame(Spectral|PatchSize)/' \
   --benchmark_min_time=0.3
+run bench_frame_threads tests/bench/bench_frame --benchmark_filter='^BM_FrameThreads/' --benchmark_min_time=0.5
+run bench_frame_sunlight tests/bench/bench_frame --benchmark_filter='^BM_FrameSunlight/' --benchmark_min_time=0.3
+run bench_eclipse tests/bench/bench_eclipse --benchmark_min_time=0.1
+run bench_brdf tests/bench/bench_brdf --benchmark_min_time=0.1
 
 echo "uptime_after=$(uptime)" >> "$results/machine.txt"
 "$python" "$here/summarise.py" "$results"

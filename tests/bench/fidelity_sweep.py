@@ -1,0 +1,179 @@
+#!/usr/bin/env python3
+"""Speed against accuracy: sweeps each fidelity knob on reference scenes (issue 10).
+
+  EOIR_LIBRARY=build/lib/libeoir.so PYTHONPATH=bindings/python \\
+      /usr/bin/python3 tests/bench/fidelity_sweep.py [--repeat 3] [--out tests/bench/results]
+
+Scenes (scenario files, driven through eoir.Scenario, the CLI's own scenario code):
+  limb       tests/bench/scenes/leo_limb.json: the Earth's sunlit limb from LEO, 0.45-0.75 um
+  star_field scenarios/demo/star_field.json: a GEO stare at a GEO satellite among ~30 stars
+  spec_7_7_1 scenarios/validation/valid_sens_pt_src_tgt_uniform_bkg.json: the spec 7.7.1 point target
+
+For each scene, every knob of KNOBS is set to each of its values with every other
+property at its default; a frame is rendered once to warm up (tables, FFT plans),
+then `repeat` times, and the median wall time is kept. The error is the relative
+RMS difference of the noise-free pixel means (sensor_mean) against the scene's
+reference frame, rendered with every knob at its high-fidelity value (REFERENCE).
+Writes fidelity_sweep.csv (scene, knob, value, median ms, error, default?),
+fidelity_sweep.png (time against error per scene, Pareto front) and
+fidelity_sweep.md (a table per scene).
+"""
+import argparse
+import csv
+import os
+import statistics
+import sys
+import time
+
+import numpy as np
+
+import eoir
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+SCENES = {
+    "limb": ("tests/bench/scenes/leo_limb.json", "Limb"),
+    "star_field": ("scenarios/demo/star_field.json", "SkyCam"),
+    "spec_7_7_1": ("scenarios/validation/valid_sens_pt_src_tgt_uniform_bkg.json", "Sensor1"),
+}
+
+# knob -> values swept (the default is marked in the output).
+KNOBS = {
+    "spectral_intervals": [1, 3, 10, 30, 100],
+    "band_integration": ["grid", "exact"],
+    "scene_mode": ["coarse", "smooth"],
+    "samples_per_pixel": [2, 4, 8],
+    "central_body_patch_size_m": [1.6e6, 785e3, 200e3, 50e3],
+    "object_patch_divisions": [2.0, 8.0, 32.0],
+    "scene_psf_reach_lambda_f": [5.0, 20.0, 80.0],
+    "point_tail": ["auto", "direct", "multilevel"],
+    "point_offset_steps_per_lambda_f": [1.0, 4.0, 16.0],
+    "fft_padding": [0.0, 1.0, 2.0],
+}
+
+# High-fidelity settings of the reference frame.
+REFERENCE = {
+    "spectral_intervals": 100,
+    "band_integration": "exact",
+    "scene_mode": "smooth",
+    "samples_per_pixel": 8,
+    "central_body_patch_size_m": 50e3,
+    "object_patch_divisions": 32.0,
+    "scene_psf_reach_lambda_f": 80.0,
+    "point_tail": "direct",
+    "point_offset_steps_per_lambda_f": 16.0,
+    "fft_padding": 2.0,
+}
+
+
+def frame(sc, sensor, settings, repeat):
+    """Median wall time (ms) of `repeat` renders and the noise-free pixel means."""
+    engine = sc.engine
+    for k, v in settings.items():
+        engine.set(sensor, k, v)
+    engine.render(sensor)  # warm-up: tables, plans
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        engine.render(sensor)
+        times.append((time.perf_counter() - t0) * 1e3)
+    return statistics.median(times), np.array(engine.image(sensor, "sensor_mean"), dtype=float)
+
+
+def relative_rms(a, ref):
+    return float(np.sqrt(np.mean((a - ref) ** 2)) / np.sqrt(np.mean(ref ** 2)))
+
+
+def pareto(points):
+    """Indices of the points no other point beats in both time and error."""
+    front, best = [], float("inf")
+    for i in sorted(range(len(points)), key=lambda i: (points[i][0], points[i][1])):
+        if points[i][1] < best:
+            front.append(i)
+            best = points[i][1]
+    return front
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--out", default=os.path.join(ROOT, "tests", "bench", "results"))
+    ap.add_argument("--scenes", default=",".join(SCENES))
+    args = ap.parse_args()
+    rows = []
+    for name in args.scenes.split(","):
+        path, sensor = SCENES[name]
+        with eoir.Scenario.load(os.path.join(ROOT, path)) as sc:
+            sc.set_time(sc.times()[0])
+            defaults = {k: sc.engine.get(sensor, k) for k in KNOBS}
+            _, ref = frame(sc, sensor, REFERENCE, 1)
+            for k, v in defaults.items():  # back to the defaults
+                sc.engine.set(sensor, k, v)
+            base_ms, base = frame(sc, sensor, {}, args.repeat)
+            rows.append([name, "(all defaults)", "", base_ms, relative_rms(base, ref), True])
+            print(f"{name}: defaults {base_ms:.1f} ms, error {rows[-1][4]:.2e}", file=sys.stderr)
+            for knob, values in KNOBS.items():
+                for value in values:
+                    ms, img = frame(sc, sensor, {knob: value}, args.repeat)
+                    err = relative_rms(img, ref)
+                    rows.append([name, knob, value, ms, err, value == defaults[knob]])
+                    print(f"  {knob} = {value}: {ms:.1f} ms, error {err:.2e}", file=sys.stderr)
+                sc.engine.set(sensor, knob, defaults[knob])
+    os.makedirs(args.out, exist_ok=True)
+    with open(os.path.join(args.out, "fidelity_sweep.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["scene", "knob", "value", "median_ms", "relative_rms_error", "default"])
+        w.writerows(rows)
+    write_chart(rows, args.out)
+    write_table(rows, args.out, args.repeat)
+
+
+def write_chart(rows, out):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    scenes = list(dict.fromkeys(r[0] for r in rows))
+    fig, axes = plt.subplots(1, len(scenes), figsize=(6 * len(scenes), 5))
+    axes = np.atleast_1d(axes)
+    for ax, scene in zip(axes, scenes):
+        pts = [(r[3], max(r[4], 1e-12), r) for r in rows if r[0] == scene]
+        knobs = list(dict.fromkeys(r[1] for _, _, r in pts))
+        cmap = plt.get_cmap("tab10")
+        for i, knob in enumerate(knobs):
+            p = [(t, e) for t, e, r in pts if r[1] == knob]
+            ax.scatter(*zip(*p), s=22, color=cmap(i % 10), label=knob)
+        front = pareto([(t, e) for t, e, _ in pts])
+        fp = sorted((pts[i][0], pts[i][1]) for i in front)
+        ax.plot(*zip(*fp), "k--", lw=1, label="Pareto front")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("median frame time, ms")
+        ax.set_ylabel("relative RMS error vs the high-fidelity frame")
+        ax.set_title(scene)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "fidelity_sweep.png"), dpi=80)
+    plt.close(fig)
+
+
+def write_table(rows, out, repeat):
+    lines = ["# Speed against accuracy: one knob at a time", "",
+             f"Written by `tests/bench/fidelity_sweep.py` (median of {repeat} frames after a warm-up; error = relative "
+             "RMS of the noise-free pixel means against the frame with every knob at its high-fidelity value: "
+             + ", ".join(f"{k} {v}" for k, v in REFERENCE.items()) + "). `*` marks the default; **bold** rows are on "
+             "the scene's Pareto front.", "", "![speed against accuracy](fidelity_sweep.png)", ""]
+    for scene in dict.fromkeys(r[0] for r in rows):
+        srows = [r for r in rows if r[0] == scene]
+        front = set(pareto([(r[3], r[4]) for r in srows]))
+        lines += [f"## {scene}", "", "| knob | value | ms | error |", "|:--|--:|--:|--:|"]
+        for i, r in enumerate(srows):
+            b = "**" if i in front else ""
+            lines.append(f"| {b}{r[1]}{b} | {r[2]}{'*' if r[5] and r[2] != '' else ''} | {r[3]:.1f} | {r[4]:.2e} |")
+        lines.append("")
+    with open(os.path.join(out, "fidelity_sweep.md"), "w") as f:
+        f.write("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()

@@ -74,7 +74,7 @@ double SurfaceModel::temperature_K(const SurfaceSite& site) const {
     double lat = 0, lon = 0;
     g.latitude_longitude_deg(site.point_body_m, lat, lon);
     const auto kind = g.land_mask->at(lat, lon) ? universe::SurfaceKind::land : universe::SurfaceKind::water;
-    return surface_temperature_K(*g.climatology, kind, lat, lon, g.time);
+    return surface_temperature_K(*g.climatology, kind, lat, lon, g.calendar);
   }
   return thermal_.at(site.normal_body, parts_[index(site.part)].temperature_K);
 }

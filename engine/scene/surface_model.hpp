@@ -14,6 +14,7 @@
 #include "radiometry/spectral_view.hpp"
 #include "scene/surface_spectrum.hpp"
 #include "scene/thermal_field.hpp"
+#include "scene/thermal_models.hpp"
 #include "universe/surface_climatology.hpp"
 #include "universe/surface_map.hpp"
 
@@ -46,7 +47,7 @@ struct Geography {
   // Thermal model climatology: land or water from the mask, then the tables.
   const universe::RasterLevel* land_mask = nullptr;
   const universe::SurfaceClimatology* climatology = nullptr;
-  EngineTime time;
+  CalendarInstant calendar;  // of the frame's time (day of year, UTC hours)
   void latitude_longitude_deg(const Vec3& point_body_m, double& latitude_deg, double& longitude_deg) const;
   bool bitmap() const { return land_cover || albedo; }
 };

@@ -157,16 +157,23 @@ DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, 
     decay_h_ = std::numeric_limits<double>::infinity();
     return;
   }
+  // Newton on g(k) = k (1 - exp(-n/k)), g'(k) = 1 - (1 + n/k) exp(-n/k) > 0,
+  // kept inside the bracket (bisection where a step leaves it): ~5 steps to
+  // 1e-13 where bisection takes ~45.
   double lo = q_h, hi = night_h * night_h / (night_h - q_h);  // g(lo) <= q < g(hi)
-  for (int i = 0; i < 200 && hi - lo > 1e-13 * hi; ++i) {
-    const double k = 0.5 * (lo + hi);
-    if (k * -std::expm1(-night_h / k) < q_h) {
-      lo = k;
-    } else {
-      hi = k;
-    }
+  double k = 0.5 * (lo + hi);
+  for (int i = 0; i < 200; ++i) {
+    const double e = std::exp(-night_h / k);
+    const double g = k * -std::expm1(-night_h / k) - q_h;
+    if (g < 0) lo = k; else hi = k;
+    const double slope = 1.0 - (1.0 + night_h / k) * e;
+    double next = slope > 0 ? k - g / slope : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const bool done = std::fabs(next - k) <= 1e-13 * k || hi - lo <= 1e-13 * hi;
+    k = next;
+    if (done) break;
   }
-  decay_h_ = 0.5 * (lo + hi);
+  decay_h_ = k;
   asymptote_K_ = sunset_K_ - decay_h_ * slope_K_h;
 }
 
@@ -196,7 +203,12 @@ double surface_temperature_K(const universe::SurfaceClimatology& climatology, un
 double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
                              double latitude_deg, double longitude_deg, const EngineTime& time,
                              const DiurnalShape& shape) {
-  const CalendarInstant c = calendar_instant(time);
+  return surface_temperature_K(climatology, kind, latitude_deg, longitude_deg, calendar_instant(time), shape);
+}
+
+double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
+                             double latitude_deg, double longitude_deg, const CalendarInstant& c,
+                             const DiurnalShape& shape) {
   return surface_temperature_K(climatology, kind, latitude_deg, c.day_of_year,
                                local_solar_time_h(c.utc_hours, longitude_deg, c.day_of_year), shape);
 }

@@ -157,6 +157,10 @@ double surface_temperature_K(const universe::SurfaceClimatology& climatology, un
 double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
                              double latitude_deg, double longitude_deg, const EngineTime& time,
                              const DiurnalShape& shape = {});
+// The same with the instant's calendar computed once (per frame).
+double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
+                             double latitude_deg, double longitude_deg, const CalendarInstant& calendar,
+                             const DiurnalShape& shape = {});
 
 // ---- 2. Airless central bodies ----------------------------------------------
 

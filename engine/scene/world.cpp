@@ -529,7 +529,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       geography.equatorial_radius_m = w.equatorial_radius_m;
       geography.polar_radius_m = w.polar_radius_m;
       geography.geodetic = o.central_body == universe::CentralBody::earth;
-      geography.time = t;
+      geography.calendar = calendar_instant(t);
       // Maps at the level the ground sample distance asks for (spec 4.2.3).
       const double gsd_m = std::max(w.range_m - w.equatorial_radius_m, 1.0) * sample_angle_rad;
       if (const universe::BodyMaps* maps = library.maps_of(o.central_body)) {

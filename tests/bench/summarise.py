@@ -386,7 +386,7 @@ def simple_section(data, stem, title, lines, counters):
               "|:--|---:|" + "---:|" * len(counters)]
     for b in runs:
         t = b["ms"]
-        ts = f"{t * 1e3:.0f} µs" if t < 1 else f"{t:.1f} ms"
+        ts = f"{t * 1e6:.0f} ns" if t < 1e-3 else f"{t * 1e3:.0f} µs" if t < 1 else f"{t:.1f} ms"
         lines.append(f"| {b['base']} | {ts} | " + " | ".join(fmt(b.get(c)) for c in counters) + " |")
     lines.append("")
 

@@ -37,6 +37,14 @@ SCENES = {
     "spec_7_7_1": ("scenarios/validation/valid_sens_pt_src_tgt_uniform_bkg.json", "Sensor1"),
 }
 
+# Where a scene's reference departs from REFERENCE, and why.
+REFERENCE_OVERRIDES = {
+    # The satellite (3.1 arcsec) is a point source at 4 x 4 samples per pixel
+    # (5.3 arcsec samples) and an under-sampled extended object of thin parts
+    # at 8 x 8 (2.6 arcsec): the point-source model is the accurate one here.
+    "star_field": {"samples_per_pixel": 4},
+}
+
 # knob -> values swept (the default is marked in the output).
 KNOBS = {
     "spectral_intervals": [1, 3, 10, 30, 100],
@@ -106,7 +114,7 @@ def main():
         with eoir.Scenario.load(os.path.join(ROOT, path)) as sc:
             sc.set_time(sc.times()[0])
             defaults = {k: sc.engine.get(sensor, k) for k in KNOBS}
-            _, ref = frame(sc, sensor, REFERENCE, 1)
+            _, ref = frame(sc, sensor, {**REFERENCE, **REFERENCE_OVERRIDES.get(name, {})}, 1)
             for k, v in defaults.items():  # back to the defaults
                 sc.engine.set(sensor, k, v)
             base_ms, base = frame(sc, sensor, {}, args.repeat)
@@ -161,8 +169,10 @@ def write_table(rows, out, repeat):
     lines = ["# Speed against accuracy: one knob at a time", "",
              f"Written by `tests/bench/fidelity_sweep.py` (median of {repeat} frames after a warm-up; error = relative "
              "RMS of the noise-free pixel means against the frame with every knob at its high-fidelity value: "
-             + ", ".join(f"{k} {v}" for k, v in REFERENCE.items()) + "). `*` marks the default; **bold** rows are on "
-             "the scene's Pareto front.", "", "![speed against accuracy](fidelity_sweep.png)", ""]
+             + ", ".join(f"{k} {v}" for k, v in REFERENCE.items()) + "; star_field with 4 x 4 samples per pixel: "
+             "its satellite is a point source there and an under-sampled extended object at 8 x 8). `*` marks the "
+             "default; **bold** rows are on the scene's Pareto front.", "",
+             "![speed against accuracy](fidelity_sweep.png)", ""]
     for scene in dict.fromkeys(r[0] for r in rows):
         srows = [r for r in rows if r[0] == scene]
         front = set(pareto([(r[3], r[4]) for r in srows]))

@@ -86,6 +86,23 @@ static inline eoir_status put_j2000(eoir_engine e, const char* name, double x, d
   return eoir_object_set_state(e, name, NULL, &s);
 }
 
+/* A satellite "Host" (shape none) carrying the sensor "Cam": pixels x pixels,
+ * band low-high um, noise off; the engine's time set to `iso`. */
+static inline void host_camera(eoir_engine e, const char* iso, int64_t pixels, double band_low_um,
+                               double band_high_um) {
+  eoir_time t;
+  OK(eoir_time_from_iso(iso, &t));
+  OK(eoir_engine_set_time(e, &t));
+  OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Host"));
+  OK(eoir_set_string(e, "Host", "shape", "none"));
+  OK(eoir_sensor_add(e, "Cam", "Host"));
+  OK(eoir_set_integer(e, "Cam", "horizontal_pixels", pixels));
+  OK(eoir_set_integer(e, "Cam", "vertical_pixels", pixels));
+  OK(eoir_set_number(e, "Cam", "band_low_um", band_low_um));
+  OK(eoir_set_number(e, "Cam", "band_high_um", band_high_um));
+  OK(eoir_set_bool(e, "Cam", "noise_enabled", 0));
+}
+
 #define CHECK_SUMMARY()                                                                  \
   (printf("%d checks, %d failed\n", check_count, check_failures), check_failures ? 1 : 0)
 

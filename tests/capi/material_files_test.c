@@ -51,7 +51,6 @@ static const char* r4 = "[0.5, 0.5, 0.5, 0.5]";
 
 int main(void) {
   eoir_engine e = NULL;
-  eoir_time t;
   double radiance_good = 0;
   size_t count = 0;
 
@@ -59,17 +58,8 @@ int main(void) {
   if (mkdtemp(dir) == NULL) return perror("mkdtemp"), 2;
 
   OK(eoir_engine_create(NULL, &e));
-  OK(eoir_time_from_iso("2010-03-20T12:00:00Z", &t));
-  OK(eoir_engine_set_time(e, &t));
   /* A host satellite looking along +z at a sphere 10 km away. */
-  OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Host"));
-  OK(eoir_set_string(e, "Host", "shape", "none"));
-  OK(eoir_sensor_add(e, "Cam", "Host"));
-  OK(eoir_set_integer(e, "Cam", "horizontal_pixels", 8));
-  OK(eoir_set_integer(e, "Cam", "vertical_pixels", 8));
-  OK(eoir_set_number(e, "Cam", "band_low_um", 8.0));
-  OK(eoir_set_number(e, "Cam", "band_high_um", 12.0));
-  OK(eoir_set_bool(e, "Cam", "noise_enabled", 0));
+  host_camera(e, "2010-03-20T12:00:00Z", 8, 8.0, 12.0);
   OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Sat"));
   OK(eoir_set_array(e, "Sat", "dimensions_m", (const double[]){100.0}, 1));
   OK(put_j2000(e, "Host", 5.0e7, 0, 0));

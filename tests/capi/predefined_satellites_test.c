@@ -13,25 +13,15 @@
 int main(void) {
   static char parts[1 << 16];
   eoir_engine e = NULL;
-  eoir_time t;
   size_t count = 0;
   const char* names[3] = {"leo_earth_observing", "leo_communications", "geo_communications"};
   const char* materials[3] = {"solar_panel", "silver_mli", "gold_mli"};
   int i;
 
   OK(eoir_engine_create(NULL, &e));
-  OK(eoir_time_from_iso("2010-03-20T12:00:00Z", &t));
-  OK(eoir_engine_set_time(e, &t));
-  OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Host"));
-  OK(eoir_set_string(e, "Host", "shape", "none"));
-  OK(eoir_sensor_add(e, "Cam", "Host"));
-  OK(eoir_set_integer(e, "Cam", "horizontal_pixels", 16));
-  OK(eoir_set_integer(e, "Cam", "vertical_pixels", 16));
+  host_camera(e, "2010-03-20T12:00:00Z", 16, 0.4, 0.7);
   OK(eoir_set_number(e, "Cam", "horizontal_fov_deg", 0.25));
   OK(eoir_set_number(e, "Cam", "vertical_fov_deg", 0.25));
-  OK(eoir_set_number(e, "Cam", "band_low_um", 0.4));
-  OK(eoir_set_number(e, "Cam", "band_high_um", 0.7));
-  OK(eoir_set_bool(e, "Cam", "noise_enabled", 0));
   OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Sat"));
   OK(eoir_set_string(e, "Sat", "shape", "composite"));
 

@@ -1,10 +1,9 @@
-// What this machine can do for one frame (issue 10: the floor), measured in
-// the benchmark's own process: Embree 3 casting an N^2 sample grid in coherent
+// What this machine can do for one frame (the floor), measured in the
+// benchmark's own process: Embree 3 casting an N^2 sample grid in coherent
 // 4x4 packets (rtcIntersect16) against a ~262k-triangle sphere filling ~40 %
 // of the view, and one FFTW real-to-complex plus complex-to-real transform of
-// M^2 (plan made once with FFTW_MEASURE, not counted). The same two
-// measurements as ../shared/tools/floor_probe.cpp (the project's copy: the
-// benchmark must not depend on that folder); the best of several repetitions.
+// M^2 (plan made once with FFTW_MEASURE, not counted); the best of several
+// repetitions.
 #pragma once
 
 namespace eoir::bench {

@@ -36,8 +36,9 @@ const Mat3& c2i_node(double day, std::int64_t k_in_day) {
 Mat3 j2000_to_earth_fixed(const EngineTime& t) {
   const double x = t.fraction() * kPoleNodesPerDay;
   const double k = std::floor(x), u = x - k;
-  const Mat3 c2i = (1.0 - u) * c2i_node(t.days(), static_cast<std::int64_t>(k)) +
-                   u * c2i_node(t.days(), static_cast<std::int64_t>(k) + 1);
+  const Mat3 a = c2i_node(t.days(), static_cast<std::int64_t>(k));  // copies: a lookup may clear the table
+  const Mat3 b = c2i_node(t.days(), static_cast<std::int64_t>(k) + 1);
+  const Mat3 c2i = (1.0 - u) * a + u * b;
   const JulianDate utc = t.to(TimeScale::utc);  // UT1 ~ UTC (see header)
   const double era = eraEra00(utc.jd1, utc.jd2);
   const double c = std::cos(era), s = std::sin(era);

@@ -129,7 +129,7 @@ void central_body_state_j2000(const CentralBodyInfo& body, const EngineTime& t, 
   const double w[4] = {-u * (u - 1) * (u - 2) / 6, (u + 1) * (u - 1) * (u - 2) / 2, -(u + 1) * u * (u - 2) / 2,
                        (u + 1) * u * (u - 1) / 6};
   for (int i = 0; i < 4; ++i) {
-    const NodeState& n = node_state(body, t.days(), k0 - 1 + i);
+    const NodeState n = node_state(body, t.days(), k0 - 1 + i);  // a copy: a lookup may clear the table
     r_m += w[i] * n.r;
     v_m_s += w[i] * n.v;
   }

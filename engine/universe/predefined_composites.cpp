@@ -2,32 +2,20 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "core/error.hpp"
+#include "core/read_file.hpp"
+#include "universe/json_document.hpp"
 
 namespace eoir::universe {
 
 void PredefinedComposites::load_directory(const std::string& dir) {
-  constexpr std::uintmax_t max_bytes = 16u << 20;
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) return;
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
     if (entry.path().extension() != ".json") continue;
     const std::string path = entry.path().string();
-    if (entry.file_size(ec) > max_bytes) throw Error(Status::corrupt_file, path + ": larger than 16 MiB");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(Status::io, "satellites: cannot read '" + path + "'");
-    std::ostringstream text;
-    text << in.rdbuf();
-    nlohmann::json doc;
-    try {
-      doc = nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::exception& e) {
-      throw Error(Status::corrupt_file, path + ": not valid JSON: " + e.what());
-    }
+    const nlohmann::json doc = parse_json_document(read_file(path, 16u << 20, "a composite file"), path);
     if (!doc.is_object() || doc.value("format", "") != "eoir-composite" || !doc.contains("name") ||
         !doc["name"].is_string() || !doc.contains("parts") || !doc["parts"].is_array())
       throw Error(Status::corrupt_file, path + ": not an eoir-composite file (format, name, parts)");

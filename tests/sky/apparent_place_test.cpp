@@ -6,7 +6,6 @@
 #include <erfa.h>
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -189,6 +188,8 @@ TEST(ApparentPlace, LightDeflectionNearTheSun) {
   EXPECT_LT(d, 0.5);
 }
 
+// Many stars in one call, every direction a unit vector (their speed is the
+// benchmarks' business).
 TEST(ApparentPlace, ThousandsOfStarsPerFrame) {
   u::StarCatalog catalogue = u::StarCatalog::load_csv([] {
     const std::string path = "sky_test_many.csv";
@@ -201,12 +202,7 @@ TEST(ApparentPlace, ThousandsOfStarsPerFrame) {
   const auto selection = catalogue.select_brighter_than(9.0);
   std::vector<Vec3> out;
   const auto context = u::apparent_place_context_geocentric(tdb(2460390.0, 0.0), Vec3(7000e3, 0, 0), Vec3(0, 7500, 0));
-  const auto t0 = std::chrono::steady_clock::now();
   u::apparent_directions(catalogue, selection.indices, context, out);
-  const auto t1 = std::chrono::steady_clock::now();
-  const double ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   ASSERT_EQ(out.size(), 20000u);
   for (const auto& v : out) ASSERT_NEAR(v.norm(), 1.0, 1e-12);
-  std::printf("apparent places: 20000 stars in %.2f ms\n", ms);
-  EXPECT_LT(ms, 50.0);
 }

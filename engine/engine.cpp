@@ -232,10 +232,11 @@ const Frame& Engine::render(const std::string& name) {
   progress(0.9, "render");
   const auto t2 = clock_type::now();
   const universe::SensorParameters& p = model.parameters;
-  frame->scene_display = sensor::scene_display(frame->scene.image, p.display_agc, p.display_gain_step);
+  frame->scene_display =
+      sensor::scene_display(frame->scene.image, p.display_agc, p.display_gain_step, options_.threads);
   const double full_scale = std::isfinite(model.metrics.saturation_electrons) ? model.metrics.saturation_electrons : 1e6;
-  frame->sensor_display =
-      sensor::compress_for_display(frame->sensor.electrons, p.display_agc, p.display_gain_step, full_scale);
+  frame->sensor_display = sensor::compress_for_display(frame->sensor.electrons, p.display_agc, p.display_gain_step,
+                                                       full_scale, options_.threads);
   const auto t3 = clock_type::now();
   // Per-frame truth: the target metrics of every object and star in the
   // field, evaluated on the same world.

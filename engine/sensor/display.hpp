@@ -10,12 +10,14 @@
 
 namespace eoir::sensor {
 
+// threads: 0 = all cores (the result does not depend on it).
 std::vector<std::uint8_t> compress_for_display(const std::vector<double>& values, bool agc, std::int64_t gain_step,
-                                               double full_scale);
+                                               double full_scale, unsigned threads = 0);
 
 // The scene generator's view: the irradiance of each sample of the field of
 // view at the aperture (L dOmega), point sources added to their nearest
 // sample; one byte per sample, full scale 1e-6 W/cm^2.
-std::vector<std::uint8_t> scene_display(const radiometry::RadianceImage& scene, bool agc, std::int64_t gain_step);
+std::vector<std::uint8_t> scene_display(const radiometry::RadianceImage& scene, bool agc, std::int64_t gain_step,
+                                        unsigned threads = 0);
 
 }  // namespace eoir::sensor

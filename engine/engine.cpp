@@ -228,7 +228,7 @@ const Frame& Engine::render(const std::string& name) {
   progress(0.05, "render");
   frame->scene = scene::generate_scene(w, options_.threads);
   progress(0.6, "render");
-  frame->sensor = sensor::render_sensor_image(model, frame->scene.image, noise_rng_);
+  frame->sensor = sensor::render_sensor_image(model, frame->scene.image, noise_rng_, options_.threads);
   progress(0.9, "render");
   const auto t2 = clock_type::now();
   const universe::SensorParameters& p = model.parameters;

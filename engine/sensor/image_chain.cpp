@@ -6,6 +6,7 @@
 
 #include "core/constants.hpp"
 #include "core/fftw_plans.hpp"
+#include "core/parallel_ranges.hpp"
 #include "sensor/otf.hpp"
 
 namespace eoir::sensor {
@@ -31,7 +32,7 @@ struct Blurred {
   }
 };
 
-Blurred convolve_with_otf(const SensorModel& model, const radiometry::RadianceImage& scene) {
+Blurred convolve_with_otf(const SensorModel& model, const radiometry::RadianceImage& scene, unsigned threads) {
   const geometry::SampleGrid& g = scene.grid;
   const int w = static_cast<int>(g.width()), h = static_cast<int>(g.height());
   const int pad = static_cast<int>(std::lround(model.fidelity().fft_padding * static_cast<double>(g.guard_samples())));
@@ -40,33 +41,38 @@ Blurred convolve_with_otf(const SensorModel& model, const radiometry::RadianceIm
   const int cw = fw / 2 + 1;
   auto real = fftw::real_buffer(n_real);
   auto spectrum = fftw::complex_buffer(static_cast<std::size_t>(fh) * static_cast<std::size_t>(cw));
-  for (int r = 0; r < fh; ++r) {
-    const int sr = std::clamp(r - pad, 0, h - 1);
-    for (int c = 0; c < fw; ++c)
-      real[static_cast<std::size_t>(r) * fw + c] =
-          scene.radiance_W_cm2_sr[static_cast<std::size_t>(sr) * w + std::clamp(c - pad, 0, w - 1)];
-  }
+  parallel_ranges(fh, threads, [&](std::int64_t r0, std::int64_t r1) {
+    for (auto r = static_cast<int>(r0); r < r1; ++r) {
+      const int sr = std::clamp(r - pad, 0, h - 1);
+      for (int c = 0; c < fw; ++c)
+        real[static_cast<std::size_t>(r) * fw + c] =
+            scene.radiance_W_cm2_sr[static_cast<std::size_t>(sr) * w + std::clamp(c - pad, 0, w - 1)];
+    }
+  }, 16);
   fftw_execute_dft_r2c(fftw::r2c_2d(fh, fw), real.get(), spectrum.get());
   const OpticsModel& optics = model.optics;
   const double k = static_cast<double>(g.per_pixel);
   const double dx = g.pitch_x_cm / k, dy = g.pitch_y_cm / k;
   const double scale = 1.0 / static_cast<double>(n_real);
-  for (int r = 0; r < fh; ++r) {
-    const double fy = frequency(r, fh, dy);
-    for (int c = 0; c < cw; ++c) {
-      const double fx = static_cast<double>(c) / (fw * dx);
-      const double otf = optics.system(std::sqrt(fx * fx + fy * fy)) * scale;
-      auto& z = spectrum[static_cast<std::size_t>(r) * cw + c];
-      z[0] *= otf;
-      z[1] *= otf;
+  parallel_ranges(fh, threads, [&](std::int64_t r0, std::int64_t r1) {
+    for (auto r = static_cast<int>(r0); r < r1; ++r) {
+      const double fy = frequency(r, fh, dy);
+      for (int c = 0; c < cw; ++c) {
+        const double fx = static_cast<double>(c) / (fw * dx);
+        const double otf = optics.system(std::sqrt(fx * fx + fy * fy)) * scale;
+        auto& z = spectrum[static_cast<std::size_t>(r) * cw + c];
+        z[0] *= otf;
+        z[1] *= otf;
+      }
     }
-  }
+  }, 16);
   fftw_execute_dft_c2r(fftw::c2r_2d(fh, fw), spectrum.get(), real.get());
   return Blurred{std::move(real), fw, pad};  // read in place: no copy of the grid
 }
 }  // namespace
 
-std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene) {
+std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene,
+                                   unsigned threads) {
   const geometry::SampleGrid& g = scene.grid;
   const std::int64_t nx = g.pixels_x, ny = g.pixels_y, guard = g.guard_samples();
   std::vector<double> out(static_cast<std::size_t>(nx * ny), 0.0);
@@ -79,15 +85,17 @@ std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::R
     std::fill(out.begin(), out.end(), first);
     return out;
   }
-  const Blurred blurred = convolve_with_otf(model, scene);
+  const Blurred blurred = convolve_with_otf(model, scene, threads);
   const std::int64_t k = g.per_pixel;
-  for (std::int64_t m = 0; m < ny; ++m)
-    for (std::int64_t n = 0; n < nx; ++n) {
-      double sum = 0;
-      for (std::int64_t r = 0; r < k; ++r)
-        for (std::int64_t c = 0; c < k; ++c) sum += blurred.at(guard + m * k + r, guard + n * k + c);
-      out[static_cast<std::size_t>(m * nx + n)] = sum / static_cast<double>(k * k);  // (1/A_d) integral over the pixel (eq. 49)
-    }
+  parallel_ranges(ny, threads, [&](std::int64_t m0, std::int64_t m1) {
+    for (std::int64_t m = m0; m < m1; ++m)
+      for (std::int64_t n = 0; n < nx; ++n) {
+        double sum = 0;
+        for (std::int64_t r = 0; r < k; ++r)
+          for (std::int64_t c = 0; c < k; ++c) sum += blurred.at(guard + m * k + r, guard + n * k + c);
+        out[static_cast<std::size_t>(m * nx + n)] = sum / static_cast<double>(k * k);  // (1/A_d) integral over the pixel (eq. 49)
+      }
+  }, 16);
   return out;
 }
 
@@ -109,7 +117,7 @@ std::vector<PointSourceSignal> point_source_signals(const SensorModel& model, co
 }
 
 SensorImage render_sensor_image(const SensorModel& model, const radiometry::RadianceImage& scene,
-                                std::mt19937_64& rng) {
+                                std::mt19937_64& rng, unsigned threads) {
   using clock = std::chrono::steady_clock;
   const auto seconds = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
   const auto t0 = clock::now();
@@ -119,7 +127,7 @@ SensorImage render_sensor_image(const SensorModel& model, const radiometry::Radi
   const std::int64_t nx = g.pixels_x, ny = g.pixels_y;
   SensorImage out;
   // Extended sources: r_L = R_peak,L * (L conv PSF) averaged over the pixel (eq. 49).
-  std::vector<double> mean = pixel_radiance(model, scene);
+  std::vector<double> mean = pixel_radiance(model, scene, threads);
   const auto t1 = clock::now();
   for (double& v : mean) v *= m.peak_radiance_responsivity;
   // Point sources: r_E = R_peak,E E^ps EOD / ENSQ (eqs. 50-51), EOD from the

@@ -22,13 +22,15 @@ struct SensorImage {
   double noise_s = 0;                  // noise and saturation (eqs. 53-55)
 };
 
-// Draws noise from `rng` (the engine's seeded generator) when noise is on.
+// Draws noise from `rng` (the engine's seeded generator) when noise is on;
+// threads (0 = all cores) share the convolution, the result does not depend on them.
 SensorImage render_sensor_image(const SensorModel& model, const radiometry::RadianceImage& scene,
-                                std::mt19937_64& rng);
+                                std::mt19937_64& rng, unsigned threads = 0);
 
 // Eq. 49 without the responsivity: the scene convolved with the system PSF
 // and averaged over each pixel's samples (W cm^-2 sr^-1 per pixel).
-std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene);
+std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene,
+                                   unsigned threads = 0);
 
 // The scene's point sources in pixel coordinates, streaks in pixels, with
 // R_peak,E E^ps / ENSQ electrons each (eq. 50).

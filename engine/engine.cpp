@@ -94,21 +94,17 @@ void Engine::set_property(const std::string& object, const std::string& property
   if (property == "catalog_file" && std::holds_alternative<std::string>(value) &&
       !std::get<std::string>(value).empty())
     library().star_catalog(std::get<std::string>(value), o.stars.catalog_epoch_year);  // read and checked now
+  Value stored = value;
   if (property == "composite" && std::holds_alternative<std::string>(value)) {
     // A predefined satellite's name (spec 4.3.3) stands for its parts.
     const std::string& given = std::get<std::string>(value);
-    const std::string text = universe::PredefinedComposites::is_name(given)
-                                 ? library().satellites.parts(given, "composite")
-                                 : given;
-    const auto parts = universe::parse_composite(text, "composite");
+    if (universe::PredefinedComposites::is_name(given)) stored = Value(library().satellites.parts(given, "composite"));
+    const auto parts = universe::parse_composite(std::get<std::string>(stored), "composite");
     for (std::size_t i = 0; i < parts.size(); ++i)
       if (parts[i].material)
         library().materials.get(*parts[i].material, "composite[" + std::to_string(i) + "].material");
-    universe::set_property(o, property, Value(text));
-    changed();
-    return;
   }
-  universe::set_property(o, property, value);
+  universe::set_property(o, property, stored);
   changed();
 }
 

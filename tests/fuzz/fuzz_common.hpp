@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 
 #include "eoir/eoir.h"
@@ -18,6 +19,18 @@ inline const std::string& input_path() {
            std::to_string(static_cast<long>(getpid()));
   }();
   return path;
+}
+
+// A single-threaded engine with a fixed seed, for the whole fuzzing process.
+inline eoir_engine new_engine() {
+  eoir_engine_desc d;
+  std::memset(&d, 0, sizeof d);
+  d.struct_size = sizeof d;
+  d.threads = 1;
+  d.seed = 1;
+  eoir_engine e = nullptr;
+  if (eoir_engine_create(&d, &e) != EOIR_OK) std::abort();
+  return e;
 }
 
 inline const char* write_input(const unsigned char* data, std::size_t size) {

@@ -1,21 +1,11 @@
 // libFuzzer target: eoir_state_load on arbitrary bytes (engine/state/scd.cpp
 // through the C ABI). Loaded states must also save and load again.
 #include <cstdint>
-#include <cstring>
 
 #include "fuzz_common.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static eoir_engine engine = [] {
-    eoir_engine_desc d;
-    std::memset(&d, 0, sizeof d);
-    d.struct_size = sizeof d;
-    d.threads = 1;
-    d.seed = 1;
-    eoir_engine e = nullptr;
-    if (eoir_engine_create(&d, &e) != EOIR_OK) std::abort();
-    return e;
-  }();
+  static eoir_engine engine = eoir_fuzz::new_engine();
   const eoir_status s = eoir_state_load(engine, eoir_fuzz::write_input(data, size));
   eoir_fuzz::check_status(s);
   if (s == EOIR_OK) {

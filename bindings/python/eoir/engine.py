@@ -230,7 +230,24 @@ def _vector(value, n: int, what: str) -> List[float]:
 
 
 # -------------------------------------------------------------------- engine
-class Engine:
+class _Closing:
+    """with-statement and garbage-collection support for a class whose close()
+    releases a C handle and is idempotent."""
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:
+            pass
+
+
+class Engine(_Closing):
     """One EOIR engine (eoir_engine_create .. eoir_engine_destroy).
 
     >>> with Engine(threads=0, seed=1) as engine:
@@ -271,18 +288,6 @@ class Engine:
         handle, self._handle = getattr(self, "_handle", None), None
         if handle is not None:
             self._destroy(handle)
-
-    def __enter__(self) -> "Engine":
-        return self
-
-    def __exit__(self, *exc) -> None:
-        self.close()
-
-    def __del__(self):
-        try:
-            self.close()
-        except Exception:
-            pass
 
     @property
     def closed(self) -> bool:

@@ -26,7 +26,7 @@ import numpy as np
 
 from . import _host, _lib
 from ._lib import encode
-from .engine import IMAGE_KINDS, Engine, _lookup, _to_c_time
+from .engine import IMAGE_KINDS, Engine, _Closing, _lookup, _to_c_time
 
 
 def _iso(time) -> str:
@@ -39,7 +39,7 @@ def _iso(time) -> str:
     return buf.value.decode()
 
 
-class Scenario:
+class Scenario(_Closing):
     """A scenario file loaded into an engine (see the module's docstring)."""
 
     def __init__(self):
@@ -81,18 +81,6 @@ class Scenario:
         if session is not None:
             self.engine.close()
             self._close(session)
-
-    def __enter__(self) -> "Scenario":
-        return self
-
-    def __exit__(self, *exc) -> None:
-        self.close()
-
-    def __del__(self):
-        try:
-            self.close()
-        except Exception:
-            pass
 
     @property
     def session(self):

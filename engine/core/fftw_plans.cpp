@@ -20,18 +20,21 @@ class Cache {
     static Cache cache;
     return cache;
   }
-  fftw_plan get(bool forward, int rows, int cols) {
+  fftw_plan get(bool forward, int rows, int cols, Placement placement, unsigned threads) {
     requests.fetch_add(1, std::memory_order_relaxed);
+    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
     std::lock_guard<std::mutex> lock(mutex_);
-    const auto key = std::make_tuple(forward, rows, cols);
+    const auto key = std::make_tuple(forward, rows, cols, placement, threads);
     auto it = plans_.find(key);
     if (it != plans_.end()) return it->second;
     const std::size_t real_n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
     const std::size_t complex_n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols / 2 + 1);
-    RealBuffer r = real_buffer(real_n);
     ComplexBuffer c = complex_buffer(complex_n);
-    fftw_plan plan = forward ? fftw_plan_dft_r2c_2d(rows, cols, r.get(), c.get(), FFTW_ESTIMATE)
-                             : fftw_plan_dft_c2r_2d(rows, cols, c.get(), r.get(), FFTW_ESTIMATE);
+    RealBuffer r = placement == Placement::in_place ? nullptr : real_buffer(real_n);
+    double* real = placement == Placement::in_place ? reinterpret_cast<double*>(c.get()) : r.get();
+    fftw_plan_with_nthreads(static_cast<int>(threads));
+    fftw_plan plan = forward ? fftw_plan_dft_r2c_2d(rows, cols, real, c.get(), FFTW_ESTIMATE)
+                             : fftw_plan_dft_c2r_2d(rows, cols, c.get(), real, FFTW_ESTIMATE);
     if (!plan)
       throw Error(Status::internal, "fft: FFTW could not plan a " + std::to_string(rows) + "x" +
                                         std::to_string(cols) + " transform");
@@ -40,21 +43,21 @@ class Cache {
   }
 
  private:
-  Cache() {
-    fftw_init_threads();
-    const unsigned threads = std::thread::hardware_concurrency();
-    fftw_plan_with_nthreads(threads > 0 ? static_cast<int>(threads) : 1);
-  }
+  Cache() { fftw_init_threads(); }
   ~Cache() {
     for (auto& entry : plans_) fftw_destroy_plan(entry.second);
   }
   std::mutex mutex_;
-  std::map<std::tuple<bool, int, int>, fftw_plan> plans_;
+  std::map<std::tuple<bool, int, int, Placement, unsigned>, fftw_plan> plans_;
 };
 }  // namespace
 
-fftw_plan r2c_2d(int rows, int cols) { return Cache::instance().get(true, rows, cols); }
-fftw_plan c2r_2d(int rows, int cols) { return Cache::instance().get(false, rows, cols); }
+fftw_plan r2c_2d(int rows, int cols, Placement placement, unsigned threads) {
+  return Cache::instance().get(true, rows, cols, placement, threads);
+}
+fftw_plan c2r_2d(int rows, int cols, Placement placement, unsigned threads) {
+  return Cache::instance().get(false, rows, cols, placement, threads);
+}
 std::uint64_t plan_requests() { return requests.load(std::memory_order_relaxed); }
 
 int good_size(int n) {

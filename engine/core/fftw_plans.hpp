@@ -13,9 +13,12 @@
 namespace eoir::fftw {
 
 // Real-to-complex and complex-to-real 2-D plans of rows x cols real samples
-// (row-major, the complex side rows x (cols/2 + 1)).
-fftw_plan r2c_2d(int rows, int cols);
-fftw_plan c2r_2d(int rows, int cols);
+// (row-major, the complex side rows x (cols/2 + 1)), on `threads` threads (0 =
+// all cores). In place, the real rows are padded to 2 (cols/2 + 1) values and
+// share the complex array (FFTW manual 4.3.4).
+enum class Placement { out_of_place, in_place };
+fftw_plan r2c_2d(int rows, int cols, Placement placement = Placement::out_of_place, unsigned threads = 0);
+fftw_plan c2r_2d(int rows, int cols, Placement placement = Placement::out_of_place, unsigned threads = 0);
 // How many plans r2c_2d and c2r_2d have handed out in this process: the engine
 // asks for a plan right before each transform it executes, so this counts
 // transforms (tests check that a frame does none it need not).

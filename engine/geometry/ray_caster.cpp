@@ -72,6 +72,7 @@ struct ObjectData {
   std::vector<unsigned> prim_part;  // Embree primID -> part index
   int index = 0;
   std::uint32_t mask = ray_mask_all;
+  bool attached = false;  // in the Embree scene (not containing the observer, some part to hit)
 };
 
 // Extended context: Embree passes it to the callback (first member is the
@@ -212,6 +213,7 @@ void RayCaster::build(const std::vector<const PlacedObject*>& objects) {
     data.push_back(std::move(od));
     ObjectData& stored = data.back();
     if (contains_observer || stored.prim_part.empty()) continue;  // invisible to this observer
+    stored.attached = true;
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
     check_device(device, "rtcNewGeometry");
     rtcSetGeometryUserPrimitiveCount(geom, static_cast<unsigned>(stored.prim_part.size()));
@@ -322,20 +324,151 @@ void RayCaster::cast(const std::vector<Vec3>& directions, std::vector<Hit>& hits
   });
 }
 
-void RayCaster::cast_objects(std::size_t count, const std::function<Vec3(std::size_t)>& direction,
-                             const std::function<void(std::size_t, std::int32_t, std::int32_t, double)>& emit,
-                             unsigned threads, const RayQuery& query) const {
+namespace {
+
+// A cone of directions: unit axis and half-angle.
+struct Cone {
+  Vec3 axis;
+  double half_angle_rad;
+};
+
+// The cone of a pinhole tile: its rays lie in the convex cone of its four
+// corner rays, hence in the circular cone about their mean that holds them.
+Cone tile_cone(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const Vec3 axis = (a + b + c + d).normalized();
+  double min_cos = 1.0;
+  for (const Vec3* v : {&a, &b, &c, &d}) min_cos = std::min(min_cos, axis.dot(*v));
+  return Cone{axis, std::acos(std::clamp(min_cos, -1.0, 1.0))};
+}
+
+// A part's bounding sphere as seen from the observer.
+struct PartBound {
+  int object = 0;        // index into Impl::objects
+  unsigned part = 0;     // index into its parts
+  Vec3 direction;        // unit, to the sphere's centre
+  double angular_radius_rad = 0;
+  bool surrounds_observer = false;
+};
+
+// Whether any ray of the cone may meet the sphere (conservative: padded far
+// beyond the rounding of the angles).
+bool cone_meets(const Cone& cone, const PartBound& b) {
+  if (b.surrounds_observer) return true;
+  const double angle = std::acos(std::clamp(cone.axis.dot(b.direction), -1.0, 1.0));
+  return angle <= cone.half_angle_rad + b.angular_radius_rad + 1e-9;
+}
+
+}  // namespace
+
+void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
+                          const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
+                          const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, double)>& emit,
+                          unsigned threads, const RayQuery& query) const {
   if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
+  if (width <= 0 || height <= 0) return;
   const auto& objects = impl_->objects;
   RTCScene scene = impl_->scene;
-  for_each_ray(count, threads, [&](std::size_t i, RayContext& rc, RTCRayHit& rh) {
-    cast_one(scene, rc, rh, direction(i), i, query);
-    if (rc.object < 0) {
-      emit(i, -1, -1, sky_range_m);
-      return;
+  // Bounding spheres of the parts of the objects the query admits and the
+  // caster holds (an object containing the observer is invisible to it), in
+  // the order of the objects and of their parts.
+  std::vector<PartBound> bounds;
+  for (const ObjectData& od : objects) {
+    if (!od.attached || !admits(query, od)) continue;
+    for (unsigned k : od.prim_part) {
+      const PartData& p = od.parts[k];
+      const double radius = p.radius_m * (1.0 + 1e-9), distance = p.centre_frame_m.norm();
+      PartBound b;
+      b.object = od.index;
+      b.part = k;
+      b.surrounds_observer = !(distance > radius);
+      if (!b.surrounds_observer) {
+        b.direction = p.centre_frame_m / distance;
+        b.angular_radius_rad = std::asin(radius / distance);
+      }
+      bounds.push_back(b);
     }
-    emit(i, objects[static_cast<std::size_t>(rc.object)].object->object_id, rc.part, rc.best_t);
-  });
+  }
+  constexpr std::int64_t kTile = 8, kBlock = 8;  // tiles of 8 x 8 samples, blocks of 8 x 8 tiles
+  const std::int64_t tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
+  const std::int64_t blocks_x = (tiles_x + kBlock - 1) / kBlock, blocks_y = (tiles_y + kBlock - 1) / kBlock;
+  const auto cone_of = [&](std::int64_t c0, std::int64_t r0, std::int64_t c1, std::int64_t r1) {
+    return tile_cone(direction(c0, r0), direction(c1 - 1, r0), direction(c0, r1 - 1), direction(c1 - 1, r1 - 1));
+  };
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  std::atomic<std::int64_t> next{0};
+  auto worker = [&] {
+    RayContext rc;
+    RTCRayHit rh;
+    std::vector<const PartBound*> block_bounds, tile_bounds;
+    for (;;) {
+      const std::int64_t block = next.fetch_add(1);
+      if (block >= blocks_x * blocks_y) return;
+      const std::int64_t bx = block % blocks_x, by = block / blocks_x;
+      const std::int64_t bc0 = bx * kBlock * kTile, br0 = by * kBlock * kTile;
+      const std::int64_t bc1 = std::min(width, bc0 + kBlock * kTile), br1 = std::min(height, br0 + kBlock * kTile);
+      const Cone block_cone = cone_of(bc0, br0, bc1, br1);
+      block_bounds.clear();
+      for (const PartBound& b : bounds)
+        if (cone_meets(block_cone, b)) block_bounds.push_back(&b);
+      for (std::int64_t r0 = br0; r0 < br1; r0 += kTile)
+        for (std::int64_t c0 = bc0; c0 < bc1; c0 += kTile) {
+          const std::int64_t c1 = std::min(bc1, c0 + kTile), r1 = std::min(br1, r0 + kTile);
+          tile_bounds.clear();
+          if (!block_bounds.empty()) {
+            const Cone cone = cone_of(c0, r0, c1, r1);
+            for (const PartBound* b : block_bounds)
+              if (cone_meets(cone, *b)) tile_bounds.push_back(b);
+          }
+          const bool one_object = !tile_bounds.empty() &&
+                                  std::all_of(tile_bounds.begin(), tile_bounds.end(), [&](const PartBound* b) {
+                                    return b->object == tile_bounds[0]->object;
+                                  });
+          for (std::int64_t r = r0; r < r1; ++r)
+            for (std::int64_t c = c0; c < c1; ++c) {
+              if (tile_bounds.empty()) {  // no object near: the sky
+                emit(c, r, -1, -1, sky_range_m);
+                continue;
+              }
+              const Vec3 d = direction(c, r);
+              if (one_object) {
+                // One object near: its nearby parts directly, in double, as
+                // the intersect callback would (nearest strictly closer wins).
+                const ObjectData& od = objects[static_cast<std::size_t>(tile_bounds[0]->object)];
+                double best = std::numeric_limits<double>::infinity();
+                int best_part = -1;
+                for (const PartBound* b : tile_bounds) {
+                  const PartData& p = od.parts[b->part];
+                  double t = 0;
+                  Vec3 n;
+                  if (intersect_shape(p.geom, p.origin_part_m, p.part_to_frame.transpose() * d, 0.0, best, t, n)) {
+                    best = t;
+                    best_part = static_cast<int>(b->part);
+                  }
+                }
+                if (best_part < 0)
+                  emit(c, r, -1, -1, sky_range_m);
+                else
+                  emit(c, r, od.object->object_id, best_part, best);
+                continue;
+              }
+              cast_one(scene, rc, rh, d, 0, query);
+              if (rc.object < 0)
+                emit(c, r, -1, -1, sky_range_m);
+              else
+                emit(c, r, objects[static_cast<std::size_t>(rc.object)].object->object_id, rc.part, rc.best_t);
+            }
+        }
+    }
+  };
+  const auto blocks = static_cast<unsigned>(std::min<std::int64_t>(threads, blocks_x * blocks_y));
+  if (blocks <= 1) {
+    worker();
+    return;
+  }
+  std::vector<std::thread> pool;
+  for (unsigned k = 1; k < blocks; ++k) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
 }
 
 bool RayCaster::occluded(const Vec3& d, double range_m, const RayQuery& query) const {

@@ -39,13 +39,11 @@ SceneImage generate_scene(const World& world, unsigned threads) {
   out.hits.assign(count, SampleHit{});
   out.image.radiance_W_cm2_sr.assign(count, 0.0);
   const double sky_radiance = world.sky.background_radiance_W_cm2_sr;
-  const auto direction = [&](std::size_t i) {
-    const auto r = static_cast<std::int64_t>(i) / w, c = static_cast<std::int64_t>(i) % w;
-    return world.sample_direction(c, r);
-  };
-  world.caster.cast_objects(
-      count, direction,
-      [&](std::size_t i, std::int32_t object, std::int32_t part, double range_m) {
+  const auto direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r); };
+  world.caster.cast_grid(
+      w, h, direction,
+      [&](std::int64_t c, std::int64_t r, std::int32_t object, std::int32_t part, double range_m) {
+        const auto i = static_cast<std::size_t>(r * w + c);
         out.hits[i] = SampleHit{object, part};
         if (object < 0) {
           out.image.radiance_W_cm2_sr[i] = sky_radiance;  // the background light (spec 4.1.4), 0 without a sky
@@ -56,7 +54,7 @@ SceneImage generate_scene(const World& world, unsigned threads) {
           out.image.radiance_W_cm2_sr[i] = o.surface->part_radiance(part);
           return;
         }
-        const Vec3 point_body = o.placed.body_to_frame.transpose() * (range_m * direction(i) - o.placed.position_m);
+        const Vec3 point_body = o.placed.body_to_frame.transpose() * (range_m * direction(c, r) - o.placed.position_m);
         out.image.radiance_W_cm2_sr[i] = o.radiance_at(part, point_body);
       },
       threads, geometry::RayQuery{geometry::ray_mask_extended, -1});

@@ -1,7 +1,6 @@
 #include "sensor/display.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <thread>
 #include <utility>
@@ -9,23 +8,35 @@
 #include "core/parallel_ranges.hpp"
 
 namespace eoir::sensor {
+namespace {
 
-std::vector<std::uint8_t> compress_for_display(const std::vector<double>& values, bool agc, std::int64_t gain_step,
-                                               double full_scale, unsigned threads) {
-  std::vector<std::uint8_t> out(values.size(), 0);
-  if (values.empty()) return out;
-  const auto n = static_cast<std::int64_t>(values.size());
+constexpr std::int64_t kChunk = 4096;  // values made at a time, per thread
+
+// Compresses n values to bytes (spec 4.1.2). fill(begin, end, out) writes
+// values [begin, end) to out: they are made twice (for the AGC's least and
+// greatest value, then for the bytes) in chunks, never held whole.
+template <class Fill>
+std::vector<std::uint8_t> compress(std::int64_t n, const Fill& fill, bool agc, std::int64_t gain_step,
+                                   double full_scale, unsigned threads) {
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(n), 0);
+  if (n == 0) return out;
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   double lo = 0, scale = 0;
   if (agc) {
     // Least and greatest value, per range then together.
-    std::vector<std::pair<double, double>> ranges(std::max(1u, threads == 0 ? std::thread::hardware_concurrency() : threads),
-                                                  {values[0], values[0]});
-    std::atomic<std::size_t> next{0};
-    parallel_ranges(n, static_cast<unsigned>(ranges.size()), [&](std::int64_t b, std::int64_t e) {
-      const auto [mn, mx] = std::minmax_element(values.begin() + b, values.begin() + e);
-      ranges[next++] = {*mn, *mx};
+    std::vector<std::pair<double, double>> ranges(threads, {INFINITY, -INFINITY});
+    parallel_ranges(n, threads, [&](std::int64_t b, std::int64_t e) {
+      double values[kChunk], mn = INFINITY, mx = -INFINITY;
+      for (std::int64_t i = b; i < e; i += kChunk) {
+        const std::int64_t m = std::min(kChunk, e - i);
+        fill(i, i + m, values);
+        const auto [lo_it, hi_it] = std::minmax_element(values, values + m);
+        mn = std::min(mn, *lo_it);
+        mx = std::max(mx, *hi_it);
+      }
+      ranges[static_cast<std::size_t>(b * static_cast<std::int64_t>(threads) / n)] = {mn, mx};
     });
-    double mn = values[0], mx = values[0];
+    double mn = INFINITY, mx = -INFINITY;
     for (const auto& r : ranges) {
       mn = std::min(mn, r.first);
       mx = std::max(mx, r.second);
@@ -42,23 +53,32 @@ std::vector<std::uint8_t> compress_for_display(const std::vector<double>& values
     scale = 255.0 * std::pow(30.0, static_cast<double>(gain_step)) / full_scale;
   }
   parallel_ranges(n, threads, [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t i = b; i < e; ++i) {
-      const double v = std::round((values[static_cast<std::size_t>(i)] - lo) * scale);
-      out[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0));
+    double values[kChunk];
+    for (std::int64_t i = b; i < e; i += kChunk) {
+      const std::int64_t m = std::min(kChunk, e - i);
+      fill(i, i + m, values);
+      for (std::int64_t j = 0; j < m; ++j)
+        out[static_cast<std::size_t>(i + j)] =
+            static_cast<std::uint8_t>(std::clamp(std::round((values[j] - lo) * scale), 0.0, 255.0));
     }
   });
   return out;
 }
 
-}  // namespace eoir::sensor
+}  // namespace
 
-namespace eoir::sensor {
+std::vector<std::uint8_t> compress_for_display(const std::vector<double>& values, bool agc, std::int64_t gain_step,
+                                               double full_scale, unsigned threads) {
+  const auto fill = [&values](std::int64_t b, std::int64_t e, double* out) {
+    std::copy(values.begin() + b, values.begin() + e, out);
+  };
+  return compress(static_cast<std::int64_t>(values.size()), fill, agc, gain_step, full_scale, threads);
+}
 
 std::vector<std::uint8_t> scene_display(const radiometry::RadianceImage& scene, bool agc, std::int64_t gain_step,
                                         unsigned threads) {
   const geometry::SampleGrid& g = scene.grid;
   const std::int64_t w = g.width(), fw = g.field_width(), fh = g.field_height(), guard = g.guard_samples();
-  std::vector<double> irradiance(static_cast<std::size_t>(fw * fh));
   // dOmega = dA' cos^3(theta) / f^2 (SampleGrid::sample_solid_angle_sr) with
   // the tangents of each column and row computed once.
   std::vector<double> tx(static_cast<std::size_t>(fw)), ty(static_cast<std::size_t>(fh));
@@ -67,24 +87,33 @@ std::vector<std::uint8_t> scene_display(const radiometry::RadianceImage& scene, 
   const double k = static_cast<double>(g.per_pixel);
   const double d_area = (g.pitch_x_cm / k) * (g.pitch_y_cm / k);
   const double f2 = g.focal_length_cm * g.focal_length_cm;
-  parallel_ranges(fh, threads, [&](std::int64_t r0, std::int64_t r1) {
-    for (std::int64_t r = r0; r < r1; ++r) {
-      const double ty2 = ty[static_cast<std::size_t>(r)] * ty[static_cast<std::size_t>(r)];
-      const double* radiance = scene.radiance_W_cm2_sr.data() + (r + guard) * w + guard;
-      double* out = irradiance.data() + r * fw;
-      for (std::int64_t c = 0; c < fw; ++c) {
-        const double t = tx[static_cast<std::size_t>(c)];
-        const double cos_theta = 1.0 / std::sqrt(1.0 + t * t + ty2);
-        out[c] = radiance[c] * (d_area * cos_theta * cos_theta * cos_theta / f2);
-      }
-    }
-  }, 16);
+  // Point sources go to their nearest sample, in scene order within a sample.
+  std::vector<std::pair<std::int64_t, double>> point_irradiance;
+  point_irradiance.reserve(scene.point_sources.size());
   for (const radiometry::PointSource& ps : scene.point_sources) {
     const std::int64_t c = std::clamp<std::int64_t>(std::lround(ps.column) - guard, 0, fw - 1);
     const std::int64_t r = std::clamp<std::int64_t>(std::lround(ps.row) - guard, 0, fh - 1);
-    irradiance[static_cast<std::size_t>(r * fw + c)] += ps.irradiance_W_cm2;
+    point_irradiance.emplace_back(r * fw + c, ps.irradiance_W_cm2);
   }
-  return compress_for_display(irradiance, agc, gain_step, 1e-6, threads);
+  std::stable_sort(point_irradiance.begin(), point_irradiance.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  const auto fill = [&](std::int64_t b, std::int64_t e, double* out) {
+    std::int64_t r = b / fw, c = b % fw;
+    for (std::int64_t i = b; i < e; ++i) {
+      const double t = tx[static_cast<std::size_t>(c)], u = ty[static_cast<std::size_t>(r)];
+      const double cos_theta = 1.0 / std::sqrt(1.0 + t * t + u * u);
+      out[i - b] = scene.radiance_W_cm2_sr[static_cast<std::size_t>((r + guard) * w + guard + c)] *
+                   (d_area * cos_theta * cos_theta * cos_theta / f2);
+      if (++c == fw) {
+        c = 0;
+        ++r;
+      }
+    }
+    auto it = std::lower_bound(point_irradiance.begin(), point_irradiance.end(), b,
+                               [](const auto& p, std::int64_t i) { return p.first < i; });
+    for (; it != point_irradiance.end() && it->first < e; ++it) out[it->first - b] += it->second;
+  };
+  return compress(fw * fh, fill, agc, gain_step, 1e-6, threads);
 }
 
 }  // namespace eoir::sensor

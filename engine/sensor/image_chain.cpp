@@ -5,71 +5,10 @@
 #include <cmath>
 
 #include "core/constants.hpp"
-#include "core/fftw_plans.hpp"
 #include "core/parallel_ranges.hpp"
-#include "sensor/otf.hpp"
+#include "sensor/scene_convolution.hpp"
 
 namespace eoir::sensor {
-namespace {
-
-// FFT frequency (cycles per unit of the spacing) of index i on n points.
-double frequency(int i, int n, double spacing) {
-  const int k = i <= n / 2 ? i : i - n;
-  return static_cast<double>(k) / (static_cast<double>(n) * spacing);
-}
-
-// Convolves the full sample grid (with its guard band) with the system PSF:
-// multiply its transform by OTF_system (eq. 39) on the image-space frequency
-// grid of the samples. The guard band holds real scene beyond the field
-// edge; around it the FFT buffer is padded by as much again with the border
-// samples repeated, so the circular wrap of the transform only mixes padding
-// that lies two PSF reaches away from the field.
-struct Blurred {
-  fftw::RealBuffer values;  // fw x fh, the sample grid at offset (pad, pad)
-  int fw = 0, pad = 0;
-  double at(std::int64_t row, std::int64_t col) const {
-    return values[static_cast<std::size_t>(row + pad) * static_cast<std::size_t>(fw) + static_cast<std::size_t>(col + pad)];
-  }
-};
-
-Blurred convolve_with_otf(const SensorModel& model, const radiometry::RadianceImage& scene, unsigned threads) {
-  const geometry::SampleGrid& g = scene.grid;
-  const int w = static_cast<int>(g.width()), h = static_cast<int>(g.height());
-  const int pad = static_cast<int>(std::lround(model.fidelity().fft_padding * static_cast<double>(g.guard_samples())));
-  const int fw = fftw::good_size(w + 2 * pad), fh = fftw::good_size(h + 2 * pad);
-  const std::size_t n_real = static_cast<std::size_t>(fw) * static_cast<std::size_t>(fh);
-  const int cw = fw / 2 + 1;
-  auto real = fftw::real_buffer(n_real);
-  auto spectrum = fftw::complex_buffer(static_cast<std::size_t>(fh) * static_cast<std::size_t>(cw));
-  parallel_ranges(fh, threads, [&](std::int64_t r0, std::int64_t r1) {
-    for (auto r = static_cast<int>(r0); r < r1; ++r) {
-      const int sr = std::clamp(r - pad, 0, h - 1);
-      for (int c = 0; c < fw; ++c)
-        real[static_cast<std::size_t>(r) * fw + c] =
-            scene.radiance_W_cm2_sr[static_cast<std::size_t>(sr) * w + std::clamp(c - pad, 0, w - 1)];
-    }
-  }, 16);
-  fftw_execute_dft_r2c(fftw::r2c_2d(fh, fw), real.get(), spectrum.get());
-  const OpticsModel& optics = model.optics;
-  const double k = static_cast<double>(g.per_pixel);
-  const double dx = g.pitch_x_cm / k, dy = g.pitch_y_cm / k;
-  const double scale = 1.0 / static_cast<double>(n_real);
-  parallel_ranges(fh, threads, [&](std::int64_t r0, std::int64_t r1) {
-    for (auto r = static_cast<int>(r0); r < r1; ++r) {
-      const double fy = frequency(r, fh, dy);
-      for (int c = 0; c < cw; ++c) {
-        const double fx = static_cast<double>(c) / (fw * dx);
-        const double otf = optics.system(std::sqrt(fx * fx + fy * fy)) * scale;
-        auto& z = spectrum[static_cast<std::size_t>(r) * cw + c];
-        z[0] *= otf;
-        z[1] *= otf;
-      }
-    }
-  }, 16);
-  fftw_execute_dft_c2r(fftw::c2r_2d(fh, fw), spectrum.get(), real.get());
-  return Blurred{std::move(real), fw, pad};  // read in place: no copy of the grid
-}
-}  // namespace
 
 std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene,
                                    unsigned threads) {
@@ -85,7 +24,7 @@ std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::R
     std::fill(out.begin(), out.end(), first);
     return out;
   }
-  const Blurred blurred = convolve_with_otf(model, scene, threads);
+  const BlurredScene blurred = convolve_scene(model, scene, threads);
   const std::int64_t k = g.per_pixel;
   parallel_ranges(ny, threads, [&](std::int64_t m0, std::int64_t m1) {
     for (std::int64_t m = m0; m < m1; ++m)

@@ -12,6 +12,7 @@
 #include "radiometry/spectral_view.hpp"
 #include "sensor/otf.hpp"
 #include "sensor/point_source_model.hpp"
+#include "sensor/scene_convolution.hpp"
 #include "sensor/static_metrics.hpp"
 #include "universe/sensor_parameters.hpp"
 
@@ -37,6 +38,9 @@ struct SensorModel {
   // sensor's properties resolves a new model, Engine::sensor_model).
   const PointSourceModel& point_sources() const;
   std::shared_ptr<PointSourceModelCache> point_source_cache = std::make_shared<PointSourceModelCache>();
+  // The scene convolution's transform size, OTF grid and buffer
+  // (scene_convolution.hpp), made by the first frame, shared like the above.
+  std::shared_ptr<SceneConvolutionCache> scene_convolution = std::make_shared<SceneConvolutionCache>();
 };
 
 // Throws eoir::Error naming the field of an invalid parameter.

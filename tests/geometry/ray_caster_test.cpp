@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "core/error.hpp"
@@ -284,6 +285,78 @@ TEST(RayCaster, MasksSkipAndOcclusion) {
   EXPECT_FALSE(caster.occluded(x, 50.0, g::RayQuery{g::ray_mask_all, 1}));  // skipped; the big one starts at 95 m
   EXPECT_TRUE(caster.occluded(x, 95.001, g::RayQuery{g::ray_mask_all, 1}));
   EXPECT_FALSE(caster.occluded(Vec3(0, 1, 0), 1e9));
+}
+
+// cast_grid (tiles: sky, one object cast directly, several through Embree)
+// gives every sample the hit cast() gives its ray, to the last bit: the Earth
+// behind a composite satellite and a small sphere, the Moon, an object the
+// query masks out, one containing the observer and a composite whose
+// bounding sphere surrounds the observer without containing it.
+TEST(RayCaster, GridCastMatchesRayByRay) {
+  TestObject sat = object(7, "box", {1, 1, 2}, Vec3(300, -50, -30));  // off the Earth: cast directly
+  g::ShapePart wing = part("plate", {3, 1});
+  wing.offset_m = Vec3(0, 2.2, 0);
+  wing.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.5 * kPi, Vec3::UnitX()));
+  sat.parts.push_back(wing);
+  sat.body_to_frame = Eigen::AngleAxisd(0.8, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  TestObject around = object(9, "box", {0.2, 0.2, 0.2}, Vec3(5, 0, 0));  // parts at x = +5 and -5 m
+  g::ShapePart other = around.parts[0];
+  other.offset_m = Vec3(-10, 0, 0);
+  around.parts.push_back(other);
+  TestObject masked = object(11, "sphere", {5}, Vec3(300, -30, 0));
+  masked.ray_mask = g::ray_mask_other;
+  std::vector<TestObject> objs = {object(3, "oblate", {kEarthA, kEarthC}, Vec3(kGeo, 3e6, 0)),
+                                  object(10, "sphere", {kMoonR}, Vec3(3.8e8, 4.5e7, 0)),
+                                  object(12, "sphere", {2}, Vec3(250, 25, -8)),
+                                  object(13, "sphere", {100}, Vec3(10, 0, 0)),  // contains the observer
+                                  sat, around, masked};
+  g::RayCaster caster;
+  caster.build(pointers(objs));
+  // A pinhole grid of 203 x 157 samples about +x (tangents up to 0.2).
+  const std::int64_t width = 203, height = 157;
+  const Eigen::Matrix3d to_frame = Eigen::AngleAxisd(0.02, Vec3::UnitZ()).toRotationMatrix();
+  const auto direction = [&](std::int64_t c, std::int64_t r) {
+    return Vec3(to_frame * Vec3(1.0, 0.2 * (2.0 * (c + 0.5) / width - 1.0), 0.13 * (2.0 * (r + 0.5) / height - 1.0)).normalized());
+  };
+  for (const g::RayQuery query : {g::RayQuery{}, g::RayQuery{g::ray_mask_extended, 7}}) {
+    for (unsigned threads : {1u, 2u}) {
+      std::vector<int> seen(width * height, 0);
+      std::vector<std::int32_t> object(width * height), part(width * height);
+      std::vector<double> range(width * height);
+      caster.cast_grid(width, height, direction,
+                       [&](std::int64_t c, std::int64_t r, std::int32_t o, std::int32_t p, double t) {
+                         const std::size_t i = static_cast<std::size_t>(r * width + c);
+                         ++seen[i];
+                         object[i] = o;
+                         part[i] = p;
+                         range[i] = t;
+                       },
+                       threads, query);
+      std::map<int, int> per_object, sat_parts;
+      for (std::int64_t r = 0; r < height; ++r)
+        for (std::int64_t c = 0; c < width; ++c) {
+          const std::size_t i = static_cast<std::size_t>(r * width + c);
+          ASSERT_EQ(seen[i], 1);
+          const g::Hit h = caster.cast(direction(c, r), query);
+          ASSERT_EQ(object[i], h.object_id) << c << " " << r;
+          ASSERT_EQ(part[i], h.part) << c << " " << r;
+          ASSERT_EQ(range[i], h.range_m) << c << " " << r;
+          ++per_object[h.object_id];
+          if (h.object_id == 7) ++sat_parts[h.part];
+        }
+      // Every kind of tile was met: sky, the Earth alone, the satellites in front of it, the surrounding composite.
+      EXPECT_GT(per_object[-1], 1000);
+      EXPECT_GT(per_object[3], 1000);
+      EXPECT_GT(per_object[12], 5);
+      EXPECT_GT(per_object[9], 0);
+      EXPECT_EQ(per_object[13], 0);
+      EXPECT_EQ(per_object[11] > 0, query.mask == g::ray_mask_all);
+      EXPECT_EQ(per_object[7] > 0, query.skip_object != 7);
+      if (query.skip_object != 7) {
+        EXPECT_TRUE(sat_parts[0] > 0 && sat_parts[1] > 0);  // bus and wing, cast directly
+      }
+    }
+  }
 }
 
 TEST(RayCaster, SpeedSanityOneMillionRays) {

@@ -47,6 +47,7 @@ void Engine::add_sensor(const std::string& name, const std::string& parent) {
   universe_.add(universe::ObjectKind::sensor, name, parent);
   models_.erase(name);
   frames_.erase(name);
+  spare_scenes_.erase(name);
   changed();
 }
 
@@ -60,6 +61,7 @@ void Engine::remove_object(const std::string& name) {
     models_.erase(s);
     worlds_.erase(s);
     frames_.erase(s);
+    spare_scenes_.erase(s);
   }
   changed();
 }
@@ -222,7 +224,7 @@ const Frame& Engine::render(const std::string& name) {
   const scene::World& w = *frame->world;
   const auto t1 = clock_type::now();
   progress(0.05, "render");
-  frame->scene = scene::generate_scene(w, options_.threads);
+  frame->scene = scene::generate_scene(w, options_.threads, std::move(spare_scenes_[name]));
   progress(0.6, "render");
   frame->sensor = sensor::render_sensor_image(model, frame->scene.image, noise_rng_, options_.threads);
   progress(0.9, "render");
@@ -287,7 +289,9 @@ const Frame& Engine::render(const std::string& name) {
       << " point sources, " << 1e3 * seconds_between(t0, t4) << " ms";
     options_.log(0, s.str());
   }
-  frames_[name] = frame;
+  std::shared_ptr<const Frame>& slot = frames_[name];
+  if (slot.use_count() == 1) spare_scenes_[name] = std::move(std::const_pointer_cast<Frame>(slot)->scene);
+  slot = frame;
   return *frame;
 }
 

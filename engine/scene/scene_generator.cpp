@@ -1,10 +1,11 @@
 #include "scene/scene_generator.hpp"
 
 #include <chrono>
+#include <utility>
 
 namespace eoir::scene {
 
-SceneImage generate_scene(const World& world, unsigned threads) {
+SceneImage generate_scene(const World& world, unsigned threads, SceneImage storage) {
   using clock = std::chrono::steady_clock;
   const auto seconds = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
   const auto t0 = clock::now();
@@ -36,8 +37,10 @@ SceneImage generate_scene(const World& world, unsigned threads) {
   // extended sources and shade only what is hit (WorldObject::radiance_at).
   const std::int64_t w = grid.width(), h = grid.height();
   const std::size_t count = static_cast<std::size_t>(w * h);
-  out.hits.assign(count, SampleHit{});
-  out.image.radiance_W_cm2_sr.assign(count, 0.0);
+  out.hits = std::move(storage.hits);
+  out.image.radiance_W_cm2_sr = std::move(storage.image.radiance_W_cm2_sr);
+  out.hits.resize(count);  // cast_grid emits every sample once
+  out.image.radiance_W_cm2_sr.resize(count);
   const double sky_radiance = world.sky.background_radiance_W_cm2_sr;
   const auto direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r); };
   world.caster.cast_grid(

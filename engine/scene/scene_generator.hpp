@@ -28,7 +28,9 @@ struct SceneImage {
   std::size_t rays = 0;
 };
 
-// threads: 0 = all cores.
-SceneImage generate_scene(const World& world, unsigned threads);
+// threads: 0 = all cores. `storage`: a finished scene whose sample buffers
+// are reused (every sample is overwritten), so a frame touches no fresh
+// memory (DESIGN.md 4).
+SceneImage generate_scene(const World& world, unsigned threads, SceneImage storage = {});
 
 }  // namespace eoir::scene

@@ -98,16 +98,17 @@ std::vector<std::uint8_t> scene_display(const radiometry::RadianceImage& scene, 
   std::stable_sort(point_irradiance.begin(), point_irradiance.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   const auto fill = [&](std::int64_t b, std::int64_t e, double* out) {
-    std::int64_t r = b / fw, c = b % fw;
-    for (std::int64_t i = b; i < e; ++i) {
-      const double t = tx[static_cast<std::size_t>(c)], u = ty[static_cast<std::size_t>(r)];
-      const double cos_theta = 1.0 / std::sqrt(1.0 + t * t + u * u);
-      out[i - b] = scene.radiance_W_cm2_sr[static_cast<std::size_t>((r + guard) * w + guard + c)] *
-                   (d_area * cos_theta * cos_theta * cos_theta / f2);
-      if (++c == fw) {
-        c = 0;
-        ++r;
+    for (std::int64_t i = b; i < e;) {  // row by row
+      const std::int64_t r = i / fw, c0 = i % fw, n = std::min(fw - c0, e - i);
+      const double u = ty[static_cast<std::size_t>(r)];
+      const double* radiance = scene.radiance_W_cm2_sr.data() + (r + guard) * w + guard + c0;
+      const double* t = tx.data() + c0;
+      double* o = out + (i - b);
+      for (std::int64_t j = 0; j < n; ++j) {
+        const double cos_theta = 1.0 / std::sqrt(1.0 + t[j] * t[j] + u * u);
+        o[j] = radiance[j] * (d_area * cos_theta * cos_theta * cos_theta / f2);
       }
+      i += n;
     }
     auto it = std::lower_bound(point_irradiance.begin(), point_irradiance.end(), b,
                                [](const auto& p, std::int64_t i) { return p.first < i; });

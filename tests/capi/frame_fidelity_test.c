@@ -3,7 +3,7 @@
  * the sensor; eoir_frame_fidelity_get reports the settings of the last frame
  * (the sensor's own with budget 0, the chosen ones with a budget) and the
  * plugin table carries it. */
-#include "table3_sensor.h"
+#include "host_target_sensor.h"
 
 /* The number after "\"key\":" in a JSON text, NAN if absent. */
 static double json_number(const char* text, const char* key) {
@@ -16,8 +16,6 @@ static double json_number(const char* text, const char* key) {
 
 int main(void) {
   eoir_engine e = NULL;
-  eoir_state s;
-  eoir_time t;
   const eoir_api_v1* api = NULL;
   const void* table = NULL;
   char text[4096], small[8];
@@ -27,20 +25,7 @@ int main(void) {
   int i, same = 1;
 
   OK(eoir_engine_create(NULL, &e));
-  OK(eoir_time_from_iso("2010-08-25T18:00:00Z", &t));
-  OK(eoir_engine_set_time(e, &t));
-  OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Host"));
-  memset(&s, 0, sizeof s);
-  s.struct_size = sizeof s;
-  s.attitude[0] = 1;
-  s.position[0] = 7000e3;
-  OK(eoir_object_set_state(e, "Host", NULL, &s));
-  OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Target"));
-  s.position[2] = 50e3;
-  OK(eoir_object_set_state(e, "Target", NULL, &s));
-  add_table3_sensor(e, "Host", "Sensor1");
-  OK(eoir_set_integer(e, "Sensor1", "horizontal_pixels", 16));
-  OK(eoir_set_integer(e, "Sensor1", "vertical_pixels", 16));
+  add_host_target_sensor(e, "Sensor1");
 
   /* Bad budgets are refused, naming the field. */
   FAILS(eoir_set_number(e, "Sensor1", "error_budget", NAN), EOIR_ERR_OUT_OF_RANGE, "error_budget");

@@ -46,6 +46,7 @@ void Engine::add_object(universe::ObjectKind kind, const std::string& name) {
 void Engine::add_sensor(const std::string& name, const std::string& parent) {
   universe_.add(universe::ObjectKind::sensor, name, parent);
   models_.erase(name);
+  adaptive_.erase(name);
   frames_.erase(name);
   spare_scenes_.erase(name);
   changed();
@@ -60,6 +61,7 @@ void Engine::remove_object(const std::string& name) {
   for (const auto& s : sensors) {
     models_.erase(s);
     worlds_.erase(s);
+    adaptive_.erase(s);
     frames_.erase(s);
     spare_scenes_.erase(s);
   }
@@ -220,6 +222,12 @@ const Frame& Engine::render(const std::string& name) {
   auto frame = std::make_shared<Frame>();
   frame->sensor_model = sensor_model(name);
   frame->world = world(name);
+  const universe::SensorParameters& own = frame->sensor_model->parameters;
+  if (own.fidelity.error_budget > 0)
+    adaptive_frame(name, scene::choose_fidelity(*frame->world, universe_, own.spectral_intervals, options_.threads),
+                   *frame);
+  else
+    frame->fidelity = scene::fixed_fidelity(own.fidelity, own.spectral_intervals);
   const sensor::SensorModel& model = *frame->sensor_model;
   const scene::World& w = *frame->world;
   const auto t1 = clock_type::now();
@@ -293,6 +301,35 @@ const Frame& Engine::render(const std::string& name) {
   if (slot.use_count() == 1) spare_scenes_[name] = std::move(std::const_pointer_cast<Frame>(slot)->scene);
   slot = frame;
   return *frame;
+}
+
+void Engine::adaptive_frame(const std::string& name, const scene::FidelityChoice& choice, Frame& frame) {
+  scene::FidelityChoice settings = choice;  // the key: the knobs, not the estimate
+  settings.spectral_error = settings.sampling_error = settings.patch_error = settings.point_source_error = 0;
+  const std::string key = settings.json();
+  const universe::Object& s = universe_.sensor(name);
+  CachedAdaptive& cached = adaptive_[name];
+  if (!cached.model || cached.model_revision != s.revision || cached.settings != key) {
+    universe::SensorParameters p = s.sensor;
+    p.fidelity = choice.fidelity;
+    p.spectral_intervals = choice.spectral_intervals;
+    cached.model = sensor::resolve_sensor(p);
+    cached.model_revision = s.revision;
+    cached.world.reset();
+  }
+  if (!cached.world || cached.world_revision != revision_ || !(cached.time == time_) || cached.settings != key) {
+    const sensor::SensorModel& m = *cached.model;
+    cached.world = scene::build_world(universe_, library(), time_, s,
+                                      scene::ViewDefinition{m.grid, m.spectral, m.fidelity(),
+                                                            m.parameters.integration_time_ms * 1e-3});
+    cached.world_revision = revision_;
+    cached.time = time_;
+    ++world_builds_;
+  }
+  cached.settings = key;
+  frame.sensor_model = cached.model;
+  frame.world = cached.world;
+  frame.fidelity = choice;
 }
 
 const Frame& Engine::frame(const std::string& name) const {

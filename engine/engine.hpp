@@ -113,6 +113,18 @@ class Engine {
     std::uint64_t revision = 0;
     std::shared_ptr<const sensor::SensorModel> model;
   };
+  // Adaptive fidelity: the model and world of the settings chosen for a frame,
+  // kept while the choice repeats (point-source tables, FFT plans and
+  // tessellations are then not rebuilt).
+  struct CachedAdaptive {
+    std::uint64_t model_revision = 0, world_revision = 0;
+    std::string settings;  // FidelityChoice::json() without the error estimate
+    EngineTime time;
+    std::shared_ptr<const sensor::SensorModel> model;
+    std::shared_ptr<const scene::World> world;
+  };
+  // The model and world of `choice` for `sensor` at the engine time.
+  void adaptive_frame(const std::string& sensor, const scene::FidelityChoice& choice, Frame& frame);
   EngineOptions options_;
   universe::Universe universe_;
   EngineTime time_;
@@ -121,6 +133,7 @@ class Engine {
   std::uint64_t world_builds_ = 0;
   std::map<std::string, CachedModel> models_;
   std::map<std::string, CachedWorld> worlds_;
+  std::map<std::string, CachedAdaptive> adaptive_;
   std::map<std::pair<std::string, std::string>, metrics::TargetMetrics> target_cache_;  // at revision_ and time_
   std::map<std::string, std::shared_ptr<const Frame>> frames_;
   // Per sensor, the sample buffers of the frame the last render replaced

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "metrics/target_metrics.hpp"
+#include "scene/adaptive_fidelity.hpp"
 #include "scene/scene_generator.hpp"
 #include "scene/world.hpp"
 #include "sensor/image_chain.hpp"
@@ -57,6 +58,10 @@ struct Frame {
   std::vector<std::uint8_t> sensor_display;  // pixels
   std::vector<TruthEntry> truth;
   FrameTimings timings;
+  // The settings the frame was rendered with: the sensor's own, or those its
+  // error budget chose (scene/adaptive_fidelity.hpp); world and sensor_model
+  // are built with them.
+  scene::FidelityChoice fidelity;
 
   const EngineTime& time() const { return world->time; }
   const geometry::SampleGrid& grid() const { return scene.image.grid; }

@@ -56,6 +56,20 @@ EOIR_API eoir_status eoir_image_info_get(eoir_engine engine, const char* sensor,
   });
 }
 
+EOIR_API eoir_status eoir_frame_fidelity_get(eoir_engine engine, const char* sensor, char* buffer, size_t capacity,
+                                             size_t* length_out) {
+  return with_engine(engine, [&](Engine& e) {
+    const Frame& f = e.frame(str(sensor, "sensor"));
+    need(length_out, "length_out");
+    const std::string text = f.fidelity.json();
+    *length_out = text.size();
+    if (!buffer) return;
+    if (text.size() + 1 > capacity)
+      throw Error(Status::buffer_too_small, "capacity: " + std::to_string(text.size() + 1) + " bytes needed");
+    std::memcpy(buffer, text.c_str(), text.size() + 1);
+  });
+}
+
 EOIR_API eoir_status eoir_image_get(eoir_engine engine, const char* sensor, int32_t kind, double* values,
                                     size_t capacity) {
   return with_engine(engine, [&](Engine& e) {

@@ -62,6 +62,7 @@ const eoir_api_v1 api_v1 = {
     eoir_material_load,
     eoir_spectrum_add,
     eoir_target_spectrum_get,
+    eoir_frame_fidelity_get,
 };
 }  // namespace
 

@@ -32,6 +32,12 @@ const std::vector<std::string>& point_tail_names() {
 const std::vector<Spec>& fidelity_properties() {
   static const std::vector<Spec> table = [] {
     std::vector<Spec> t;
+    t.push_back(number_property<F>("error_budget", "relative",
+                                   "Adaptive fidelity: the relative RMS error of the pixel means allowed per frame "
+                                   "(e.g. 0.005); the engine chooses the cheapest knobs its error model keeps within "
+                                   "it for each frame and reports them (scene/adaptive_fidelity.hpp). 0: off, every "
+                                   "knob as set",
+                                   [](F& f) -> auto& { return f.error_budget; }, Range{0, 1, false, true}, true));
     t.push_back(enum_property<F, SceneMode>(
         "scene_mode",
         "Scene generation mode (spec 4.2): coarse (one radiance per patch dA), smooth (radiance evaluated at "

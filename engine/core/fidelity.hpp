@@ -42,6 +42,11 @@ struct PsfReach {
 };
 
 struct Fidelity {
+  // Adaptive fidelity (scene/adaptive_fidelity.hpp): the relative RMS error
+  // of the pixel means allowed per frame; the engine then chooses the
+  // cheapest knobs that its error model keeps within it. 0: off, every knob
+  // as set.
+  double error_budget = 0.0;
   // Scene generator (spec 4.1-4.2).
   SceneMode scene_mode = SceneMode::coarse;
   std::int64_t samples_per_pixel = 4;  // scene samples per pixel and axis (spec 4.1.3: 4)

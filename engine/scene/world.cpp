@@ -359,16 +359,28 @@ double WorldObject::point_irradiance_W_cm2() const {
   const double r2 = range_m * range_m;
   if (!detailed_point_source) return world_->view.spectral.integrate(point_spectral_irradiance());
   if (placed.parts.size() == 1 && surface->plain()) return surface->part_radiance(0) * (projected_area_m2() / r2);
-  // The sum over visible patches of L dOmega (ERRATA eq. 11).
+  return visible_patch_sum(tessellation(), [this](std::int32_t k) { return patch_radiance(k); }) / r2;
+}
+
+double WorldObject::detailed_point_irradiance_W_cm2(double patch_edge_m) const {
+  const geometry::Tessellation t = geometry::tessellate(placed.parts, patch_edge_m);
+  return visible_patch_sum(t, [&](std::int32_t k) {
+           const geometry::Patch& p = t.patches[static_cast<std::size_t>(k)];
+           return effective_radiance(p.part, p.centre_body_m, p.normal_body);
+         }) / (range_m * range_m);
+}
+
+template <class PatchRadiance>
+double WorldObject::visible_patch_sum(const geometry::Tessellation& t, PatchRadiance radiance) const {
+  // The sum over visible patches of L dOmega (ERRATA eq. 11), times R^2.
   const Vec3 v = toward_observer_body();
-  const geometry::Tessellation& t = tessellation();
-  double irradiance = 0;
+  double sum = 0;
   for (std::size_t k = 0; k < t.patches.size(); ++k) {
     const geometry::Patch& patch = t.patches[k];
     const double facing = patch.normal_body.dot(v);
-    if (facing > 0) irradiance += patch_radiance(static_cast<std::int32_t>(k)) * facing * patch.area_m2;
+    if (facing > 0) sum += radiance(static_cast<std::int32_t>(k)) * facing * patch.area_m2;
   }
-  return irradiance / r2;
+  return sum;
 }
 
 std::vector<double> WorldObject::point_spectral_irradiance() const {

@@ -125,6 +125,9 @@ class WorldObject {
   // eq. 11; L A* / R^2 for a single plain shape); simple, eq. 7 toward the
   // observer.
   double point_irradiance_W_cm2() const;
+  // The detailed sum on a tessellation of another patch edge (uncached): how
+  // the sum converges with the patch size (scene/adaptive_fidelity.hpp).
+  double detailed_point_irradiance_W_cm2(double patch_edge_m) const;
   // Its spectral vector (W cm^-2 um^-1).
   std::vector<double> point_spectral_irradiance() const;
 
@@ -141,6 +144,9 @@ class WorldObject {
     double solid_angle_sr = 0;   // projected solid angle at the receiver
     std::vector<double> radiance;  // toward the receiver, lit by the Sun
   };
+  // sum over the patches of t facing the observer of L_k cos A_k (ERRATA eq. 11 times R^2).
+  template <class PatchRadiance>
+  double visible_patch_sum(const geometry::Tessellation& t, PatchRadiance radiance) const;
   // Eq. 8 sums of source `light` as seen from this object's centre.
   const std::vector<AreaSourcePatch>& area_source(std::size_t light) const;
   // Adds sum_i E_i (I_i . N) BRDF(I_i, N, O) at a point (eq. 4's bracket).

@@ -114,6 +114,22 @@ class RunContext {
     return out;
   }
 
+  // The settings the last frame of `sensor` was rendered with: the sensor's
+  // knobs, or those its error_budget chose, with the error estimate
+  // (eoir_frame_fidelity_get; the sensor's knobs from an older library).
+  nlohmann::ordered_json frame_fidelity(const std::string& sensor) const {
+    const eoir_api_v1& api = engine_.api();
+    if (api.struct_size < offsetof(eoir_api_v1, frame_fidelity_get) + sizeof api.frame_fidelity_get)
+      return fidelity(sensor);
+    std::size_t length = 0;
+    engine_.check(api.frame_fidelity_get(engine_.handle(), sensor.c_str(), nullptr, 0, &length), sensor + ".fidelity");
+    std::string text(length + 1, '\0');
+    engine_.check(api.frame_fidelity_get(engine_.handle(), sensor.c_str(), text.data(), text.size(), &length),
+                  sensor + ".fidelity");
+    text.resize(length);
+    return nlohmann::ordered_json::parse(text);
+  }
+
   eoir_image_info info(const std::string& sensor, int32_t kind, const std::string& where) const {
     eoir_image_info in{};
     in.struct_size = sizeof in;
@@ -283,7 +299,7 @@ class RunContext {
     wcs.dateref = fits_time(iso_of(in));
     io::add_tan_pointing(h, wcs);
     // The fidelity of the frame, as HIERARCH FID <property> cards.
-    const nlohmann::ordered_json knobs = fidelity(s.name);
+    const nlohmann::ordered_json knobs = frame_fidelity(s.name);
     for (auto it = knobs.begin(); it != knobs.end(); ++it) {
       const std::string key = "FID " + it.key();
       const nlohmann::ordered_json& v = it.value();

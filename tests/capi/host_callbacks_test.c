@@ -2,7 +2,7 @@
  * progress during renders and series of data providers, log a line per
  * render, and stop with EOIR_ERR_CANCELLED when progress returns non-zero,
  * keeping the previous frame. */
-#include "table3_sensor.h"
+#include "host_target_sensor.h"
 
 struct host_record {
   int progress_calls;
@@ -33,7 +33,6 @@ int main(void) {
   eoir_host_api host;
   const void* table = NULL;
   eoir_engine e = NULL;
-  eoir_state s;
   eoir_time t, times[3];
   double before[16 * 16], after[16 * 16], values[3];
   int i, same = 1;
@@ -47,20 +46,8 @@ int main(void) {
   CHECK(table != NULL);
 
   OK(eoir_engine_create(NULL, &e));
-  OK(eoir_time_from_iso("2010-08-25T18:00:00Z", &t));
-  OK(eoir_engine_set_time(e, &t));
-  OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Host"));
-  memset(&s, 0, sizeof s);
-  s.struct_size = sizeof s;
-  s.attitude[0] = 1;
-  s.position[0] = 7000e3;
-  OK(eoir_object_set_state(e, "Host", NULL, &s));
-  OK(eoir_object_add(e, EOIR_KIND_SATELLITE, "Target"));
-  s.position[2] = 50e3;
-  OK(eoir_object_set_state(e, "Target", NULL, &s));
-  add_table3_sensor(e, "Host", "Sensor1");
-  OK(eoir_set_integer(e, "Sensor1", "horizontal_pixels", 16));
-  OK(eoir_set_integer(e, "Sensor1", "vertical_pixels", 16));
+  add_host_target_sensor(e, "Sensor1");
+  OK(eoir_engine_get_time(e, EOIR_TIME_UTC, &t));
 
   OK(eoir_render(e, "Sensor1"));
   CHECK(record.progress_calls >= 3);

@@ -25,4 +25,5 @@ static void add_table3_sensor(eoir_engine e, const char* parent, const char* sen
   OK(eoir_set_array(e, sensor, "saturation_pairs", saturation, 2));
   OK(eoir_set_number(e, sensor, "jitter_mrad", 0.0));
 }
+
 #endif

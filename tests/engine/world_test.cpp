@@ -198,3 +198,47 @@ TEST(World, PointSourceTablesFollowTheSensorParameters) {
   e->set_property("Sensor", "f_number", Value(8.0));
   EXPECT_LT(e->sensor_model("Sensor")->point_sources().core_steps, second->point_sources().core_steps);
 }
+
+// Adaptive fidelity (scene/adaptive_fidelity.hpp): a frame rendered with an
+// error budget reports the settings chosen and an estimate within the budget;
+// while the choice repeats, its sensor model (point-source tables, plans) and
+// world are reused; budget 0 renders the sensor's own model, bit for bit.
+TEST(World, AdaptiveFidelityReportsReusesAndTurnsOff) {
+  auto e = geo_engine();
+  const std::vector<double> own = e->render("Sensor").sensor.mean_electrons;
+  EXPECT_EQ(e->frame("Sensor").fidelity.error_budget, 0.0);
+  EXPECT_EQ(e->frame("Sensor").fidelity.estimated_error(), 0.0);
+
+  e->set_property("Sensor", "error_budget", Value(0.01));
+  const eoir::Frame& first = e->render("Sensor");
+  const auto model = first.sensor_model;
+  const auto world = first.world;
+  EXPECT_EQ(first.fidelity.error_budget, 0.01);
+  EXPECT_LE(first.fidelity.estimated_error(), 0.01);
+  EXPECT_EQ(model->fidelity().samples_per_pixel, first.fidelity.fidelity.samples_per_pixel);
+  EXPECT_EQ(model->parameters.spectral_intervals, first.fidelity.spectral_intervals);
+  EXPECT_NE(first.fidelity.json().find("\"estimated_error\""), std::string::npos);
+  const auto builds = e->world_builds();
+  const eoir::Frame& second = e->render("Sensor");
+  EXPECT_EQ(second.sensor_model, model);
+  EXPECT_EQ(second.world, world);
+  EXPECT_EQ(e->world_builds(), builds);
+
+  e->set_property("Sensor", "error_budget", Value(0.0));
+  const eoir::Frame& off = e->render("Sensor");
+  EXPECT_EQ(off.sensor_model, e->sensor_model("Sensor"));
+  EXPECT_EQ(off.sensor.mean_electrons, own);
+}
+
+TEST(World, ErrorBudgetOutsideItsRangeIsRefusedNamingIt) {
+  auto e = geo_engine();
+  for (double bad : {std::nan(""), -1e-3, 1.0, 5.0}) {
+    try {
+      e->set_property("Sensor", "error_budget", Value(bad));
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const eoir::Error& err) {
+      EXPECT_EQ(err.status(), eoir::Status::out_of_range);
+      EXPECT_NE(std::string(err.what()).find("error_budget"), std::string::npos);
+    }
+  }
+}

@@ -252,6 +252,7 @@ _SIGNATURES = {
     "eoir_material_load": (eoir_status, [eoir_engine, _c_str]),
     "eoir_spectrum_add": (eoir_status, [eoir_engine, _c_str, _c_dblp, _c_dblp, c_size_t]),
     "eoir_target_spectrum_get": (eoir_status, [eoir_engine, _c_str, _c_str, _c_dblp, _c_dblp, c_size_t, _c_sizep]),
+    "eoir_frame_fidelity_get": (eoir_status, [eoir_engine, _c_str, c_char_p, c_size_t, _c_sizep]),
     "eoir_plugin_entry": (eoir_status, [c_uint32, POINTER(eoir_host_api), POINTER(c_void_p)]),
 }
 
@@ -315,7 +316,9 @@ class eoir_api_v1(Structure):
                 ("provider_series", _fn("eoir_provider_series")),
                 ("material_load", _fn("eoir_material_load")),
                 ("spectrum_add", _fn("eoir_spectrum_add")),
-                ("target_spectrum_get", _fn("eoir_target_spectrum_get"))]
+                ("target_spectrum_get", _fn("eoir_target_spectrum_get")),
+                # appended in 1.4 (adaptive fidelity)
+                ("frame_fidelity_get", _fn("eoir_frame_fidelity_get"))]
 
 
 # ------------------------------------------------------------------- loading

@@ -5,6 +5,7 @@ from __future__ import annotations
 import ctypes
 import datetime as _dt
 import functools
+import json
 import math
 import numbers
 import os
@@ -662,6 +663,17 @@ class Engine(_Closing):
     def render(self, sensor: str) -> None:
         """Render the frame of a sensor at the engine time (eoir_render)."""
         check(lib.eoir_render(self.handle, encode(sensor)))
+
+    def frame_fidelity(self, sensor: str) -> Dict[str, Any]:
+        """The fidelity settings the last frame of a sensor was rendered with
+        (eoir_frame_fidelity_get): a dict with error_budget, estimated_error,
+        spectral_intervals and every fidelity knob; with error_budget > 0 the
+        settings the engine chose for that frame (README "Adaptive fidelity")."""
+        n = c_size_t()
+        check(lib.eoir_frame_fidelity_get(self.handle, encode(sensor), None, 0, byref(n)))
+        buf = ctypes.create_string_buffer(n.value + 1)
+        check(lib.eoir_frame_fidelity_get(self.handle, encode(sensor), buf, n.value + 1, byref(n)))
+        return json.loads(buf.value.decode("utf-8"))
 
     def _image_info(self, sensor: str, code: int) -> "_lib.eoir_image_info":
         info = _lib.eoir_image_info()

@@ -45,7 +45,7 @@ extern "C" {
 
 /* ------------------------------------------------------------------ version */
 #define EOIR_VERSION_MAJOR 1
-#define EOIR_VERSION_MINOR 3
+#define EOIR_VERSION_MINOR 4
 #define EOIR_VERSION_PATCH 0
 
 /* Returns EOIR_VERSION_MAJOR*10000 + MINOR*100 + PATCH of the loaded library. */
@@ -338,6 +338,19 @@ typedef enum eoir_image_kind {
  * (EOIR_ERR_CANCELLED, the previous frame stays). */
 EOIR_API eoir_status eoir_render(eoir_engine engine, const char* sensor);
 
+/* The fidelity settings the last frame of `sensor` was rendered with (1.4),
+ * as a JSON object: {"error_budget": b, "estimated_error": e,
+ * "spectral_intervals": N, "<knob>": value, ...} with every fidelity knob
+ * (README "Fidelity"). With the sensor property error_budget at 0 these are
+ * the sensor's own settings and estimated_error is 0; with a budget > 0 they
+ * are those the engine chose for that frame, and estimated_error is its
+ * error model's estimate of the relative RMS error of the pixel means (README
+ * "Adaptive fidelity"). *length_out receives the text's length without the
+ * '\0'; buffer may be NULL to ask for it, else EOIR_ERR_BUFFER_TOO_SMALL if
+ * capacity < length + 1; EOIR_ERR_NO_STATE if no frame was rendered. */
+EOIR_API eoir_status eoir_frame_fidelity_get(eoir_engine engine, const char* sensor, char* buffer, size_t capacity,
+                                             size_t* length_out);
+
 typedef struct eoir_image_info {
   uint32_t struct_size;
   uint32_t width;        /* samples or pixels */
@@ -510,6 +523,8 @@ typedef struct eoir_api_v1 {
   eoir_status (*material_load)(eoir_engine, const char*);
   eoir_status (*spectrum_add)(eoir_engine, const char*, const double*, const double*, size_t);
   eoir_status (*target_spectrum_get)(eoir_engine, const char*, const char*, double*, double*, size_t, size_t*);
+  /* appended in 1.4 (adaptive fidelity) */
+  eoir_status (*frame_fidelity_get)(eoir_engine, const char*, char*, size_t, size_t*);
 } eoir_api_v1;
 
 /* The plugin's one entry point (resolved by name with dlsym). Returns, in

@@ -272,15 +272,11 @@ std::int32_t patch_at_facing(const Tessellation& t, const std::vector<ShapePart>
 
 std::int32_t patch_at(const Tessellation& t, const std::vector<ShapePart>& parts, std::int32_t part,
                       const Vec3& point_body_m) {
+  if (part < 0 || static_cast<std::size_t>(part) >= parts.size()) return -1;
+  const ShapePart& sp = parts[static_cast<std::size_t>(part)];
+  const Vec3 p = sp.orientation.toRotationMatrix().transpose() * (point_body_m - sp.offset_m);
   // The plate's face follows the side of the point (z < 0: back face).
-  Vec3 n = Vec3::UnitZ();
-  if (part >= 0 && static_cast<std::size_t>(part) < parts.size()) {
-    const ShapePart& sp = parts[static_cast<std::size_t>(part)];
-    const Mat3 r = sp.orientation.toRotationMatrix();
-    if ((r.transpose() * (point_body_m - sp.offset_m)).z() < 0) n = -Vec3::UnitZ();
-    n = r * n;
-  }
-  return patch_at_facing(t, parts, part, point_body_m, n);
+  return patch_in_part(t, part, sp.geom, p, Vec3(0, 0, p.z() < 0 ? -1.0 : 1.0));
 }
 
 }  // namespace eoir::geometry

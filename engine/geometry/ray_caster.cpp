@@ -362,7 +362,7 @@ bool cone_meets(const Cone& cone, const PartBound& b) {
 
 void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                           const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
-                          const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, double)>& emit,
+                          const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, double, const Vec3&)>& emit,
                           unsigned threads, const RayQuery& query) const {
   if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
   if (width <= 0 || height <= 0) return;
@@ -426,7 +426,7 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
           for (std::int64_t r = r0; r < r1; ++r)
             for (std::int64_t c = c0; c < c1; ++c) {
               if (tile_bounds.empty()) {  // no object near: the sky
-                emit(c, r, -1, -1, sky_range_m);
+                emit(c, r, -1, -1, sky_range_m, Vec3::Zero());
                 continue;
               }
               const Vec3 d = direction(c, r);
@@ -446,16 +446,16 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                   }
                 }
                 if (best_part < 0)
-                  emit(c, r, -1, -1, sky_range_m);
+                  emit(c, r, -1, -1, sky_range_m, Vec3::Zero());
                 else
-                  emit(c, r, od.object->object_id, best_part, best);
+                  emit(c, r, od.object->object_id, best_part, best, d);
                 continue;
               }
               cast_one(scene, rc, rh, d, 0, query);
               if (rc.object < 0)
-                emit(c, r, -1, -1, sky_range_m);
+                emit(c, r, -1, -1, sky_range_m, Vec3::Zero());
               else
-                emit(c, r, objects[static_cast<std::size_t>(rc.object)].object->object_id, rc.part, rc.best_t);
+                emit(c, r, objects[static_cast<std::size_t>(rc.object)].object->object_id, rc.part, rc.best_t, d);
             }
         }
     }

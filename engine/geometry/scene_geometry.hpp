@@ -119,15 +119,16 @@ class RayCaster {
   // The lean form for a frame's sample grid: ray (c, r) of width x height
   // goes along direction(c, r), a pinhole projection (the rays of a
   // rectangle of samples lie in the cone of its corner rays), and its nearest
-  // surface goes to emit(c, r, object_id, part, range_m) (object_id -1: the
-  // sky); no point or normal is computed. Cast in tiles of 8 x 8 samples: a
+  // surface goes to emit(c, r, object_id, part, range_m, direction) (object_id
+  // -1: the sky, with a zero direction, as sky tiles compute none); no point
+  // or normal is computed. Cast in tiles of 8 x 8 samples: a
   // tile whose bounding cone meets no part's bounding sphere is sky, one
   // whose nearby parts are all of one object is intersected with them
   // directly, the others go through Embree; the hits are those of cast().
   // Both callbacks are called from the worker threads, each sample once.
   void cast_grid(std::int64_t width, std::int64_t height,
                  const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
-                 const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, double)>& emit,
+                 const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, double, const Vec3&)>& emit,
                  unsigned threads = 0, const RayQuery& query = {}) const;
   // True if any surface lies along `direction` closer than range_m.
   bool occluded(const Vec3& direction, double range_m, const RayQuery& query = {}) const;

@@ -45,7 +45,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
   const auto direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r); };
   world.caster.cast_grid(
       w, h, direction,
-      [&](std::int64_t c, std::int64_t r, std::int32_t object, std::int32_t part, double range_m) {
+      [&](std::int64_t c, std::int64_t r, std::int32_t object, std::int32_t part, double range_m, const Vec3& d) {
         const auto i = static_cast<std::size_t>(r * w + c);
         out.hits[i] = SampleHit{object, part};
         if (object < 0) {
@@ -57,7 +57,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
           out.image.radiance_W_cm2_sr[i] = o.surface->part_radiance(part);
           return;
         }
-        const Vec3 point_body = o.placed.body_to_frame.transpose() * (range_m * direction(c, r) - o.placed.position_m);
+        const Vec3 point_body = o.placed.body_to_frame.transpose() * (range_m * d - o.placed.position_m);
         out.image.radiance_W_cm2_sr[i] = o.radiance_at(part, point_body);
       },
       threads, geometry::RayQuery{geometry::ray_mask_extended, -1});

@@ -324,9 +324,12 @@ TEST(RayCaster, GridCastMatchesRayByRay) {
       std::vector<std::int32_t> object(width * height), part(width * height);
       std::vector<double> range(width * height);
       caster.cast_grid(width, height, direction,
-                       [&](std::int64_t c, std::int64_t r, std::int32_t o, std::int32_t p, double t) {
+                       [&](std::int64_t c, std::int64_t r, std::int32_t o, std::int32_t p, double t, const Vec3& d) {
                          const std::size_t i = static_cast<std::size_t>(r * width + c);
                          ++seen[i];
+                         if (o >= 0) {
+                           EXPECT_EQ(d, direction(c, r));
+                         }
                          object[i] = o;
                          part[i] = p;
                          range[i] = t;

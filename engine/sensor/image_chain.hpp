@@ -23,7 +23,8 @@ struct SensorImage {
 };
 
 // Draws noise from `rng` (the engine's seeded generator) when noise is on;
-// threads (0 = all cores) share the convolution, the result does not depend on them.
+// threads (0 = all cores) share the convolution; the result depends on them
+// only through the rounding of FFTW's plan for that thread count.
 SensorImage render_sensor_image(const SensorModel& model, const radiometry::RadianceImage& scene,
                                 std::mt19937_64& rng, unsigned threads = 0);
 

@@ -54,7 +54,8 @@ class BlurredScene {
   int pad_;
 };
 
-// threads: 0 = all cores; the result does not depend on them.
+// threads: 0 = all cores; the result depends on them only through the
+// rounding of FFTW's plan for that thread count.
 BlurredScene convolve_scene(const SensorModel& model, const radiometry::RadianceImage& scene, unsigned threads);
 
 }  // namespace eoir::sensor

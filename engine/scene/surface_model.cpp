@@ -10,14 +10,23 @@
 namespace eoir::scene {
 
 void Geography::latitude_longitude_deg(const Vec3& p, double& latitude_deg, double& longitude_deg) const {
-  if (geodetic) {
-    double h = 0;
-    const double a = equatorial_radius_m, f = (a - polar_radius_m) / a;
-    GeographicLib::Geocentric(a, f).Reverse(p.x(), p.y(), p.z(), latitude_deg, longitude_deg, h);
+  const double rho = std::hypot(p.x(), p.y());
+  longitude_deg = std::atan2(p.y(), p.x()) * constants::deg_per_rad;
+  if (!geodetic) {
+    latitude_deg = std::atan2(p.z(), rho) * constants::deg_per_rad;
     return;
   }
-  latitude_deg = std::atan2(p.z(), std::hypot(p.x(), p.y())) * constants::deg_per_rad;
-  longitude_deg = std::atan2(p.y(), p.x()) * constants::deg_per_rad;
+  // On the spheroid (a ray's hit) the geodetic latitude is the normal's
+  // elevation, tan(lat) = (a/c)^2 z / rho; off it (a patch centre) WGS84's
+  // geodetic inverse (GeographicLib).
+  const double a = equatorial_radius_m, c = polar_radius_m;
+  const double on_surface = (rho / a) * (rho / a) + (p.z() / c) * (p.z() / c) - 1.0;
+  if (std::fabs(on_surface) <= 1e-12) {
+    latitude_deg = std::atan2(a * a * p.z(), c * c * rho) * constants::deg_per_rad;
+    return;
+  }
+  double h = 0;
+  GeographicLib::Geocentric(a, (a - c) / a).Reverse(p.x(), p.y(), p.z(), latitude_deg, longitude_deg, h);
 }
 
 SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal, std::vector<double> self_radiance,
@@ -52,52 +61,47 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
   }
 }
 
-const SurfaceSpectrum& SurfaceModel::spectrum(const SurfaceSite& site) const {
+SurfacePoint SurfaceModel::at(const SurfaceSite& site) const {
+  const PartSurface& part = parts_[index(site.part)];
+  SurfacePoint point{site.part, part.spectrum, part.temperature_K};
   const Geography& g = geography_;
-  if (g.bitmap()) {
-    double lat = 0, lon = 0;
-    g.latitude_longitude_deg(site.point_body_m, lat, lon);
-    if (g.land_cover) {
-      const std::uint8_t c = g.land_cover->at(lat, lon);
-      if (c < g.class_spectra.size() && g.class_spectra[c]) return *g.class_spectra[c];
-    } else {
-      const SurfaceSpectrum* s = g.albedo_spectra[g.albedo->at(lat, lon)];
-      if (s) return *s;
-    }
+  const bool climatology = g.climatology && g.land_mask;
+  double lat = 0, lon = 0;
+  if (g.bitmap() || climatology) g.latitude_longitude_deg(site.point_body_m, lat, lon);
+  if (g.land_cover) {
+    const std::uint8_t c = g.land_cover->at(lat, lon);
+    if (c < g.class_spectra.size() && g.class_spectra[c]) point.spectrum = g.class_spectra[c];
+  } else if (g.albedo) {
+    if (const SurfaceSpectrum* s = g.albedo_spectra[g.albedo->at(lat, lon)]) point.spectrum = s;
   }
-  return *parts_[index(site.part)].spectrum;
-}
-
-double SurfaceModel::temperature_K(const SurfaceSite& site) const {
-  const Geography& g = geography_;
-  if (g.climatology && g.land_mask) {
-    double lat = 0, lon = 0;
-    g.latitude_longitude_deg(site.point_body_m, lat, lon);
+  if (climatology) {
     const auto kind = g.land_mask->at(lat, lon) ? universe::SurfaceKind::land : universe::SurfaceKind::water;
-    return surface_temperature_K(*g.climatology, kind, lat, lon, g.calendar);
+    point.temperature_K = surface_temperature_K(*g.climatology, kind, lat, lon, g.calendar);
+  } else {
+    point.temperature_K = thermal_.at(site.normal_body, part.temperature_K);
   }
-  return thermal_.at(site.normal_body, parts_[index(site.part)].temperature_K);
+  return point;
 }
 
-void SurfaceModel::add_emission(const SurfaceSite& site, std::vector<double>& out) const {
+void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& out) const {
   if (!self_radiance_.empty()) {
     for (std::size_t i = 0; i < out.size(); ++i) out[i] += self_radiance_[i];
     return;
   }
-  spectrum(site).add_emission(temperature_K(site), out);
+  point.spectrum->add_emission(point.temperature_K, out);
 }
 
-double SurfaceModel::emission_radiance(const SurfaceSite& site) const {
-  if (!varying()) return part_radiance(site.part);
-  return spectrum(site).emission_radiance(temperature_K(site));
+double SurfaceModel::emission_radiance(const SurfacePoint& point) const {
+  if (!varying()) return part_radiance(point.part);
+  return point.spectrum->emission_radiance(point.temperature_K);
 }
 
-double SurfaceModel::emission_radiance_interpolated(const SurfaceSite& site) const {
+double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point) const {
   if (!thermal_.subsolar || table_.empty() || geography_.bitmap() || geography_.climatology)
-    return emission_radiance(site);
-  const auto& row = table_[index(site.part)];
+    return emission_radiance(point);
+  const auto& row = table_[index(point.part)];
   const double last = static_cast<double>(row.size() - 1);
-  const double u = std::clamp((temperature_K(site) - table_T0_) / table_dT_, 0.0, last);
+  const double u = std::clamp((point.temperature_K - table_T0_) / table_dT_, 0.0, last);
   const auto k = std::min(static_cast<std::size_t>(u), row.size() - 2);
   return row[k] + (u - static_cast<double>(k)) * (row[k + 1] - row[k]);
 }

@@ -34,6 +34,14 @@ struct SurfaceSite {
   Vec3 normal_body = Vec3::UnitZ();
 };
 
+// What the surface is at a site: its material and temperature, the maps and
+// the thermal model read once (SurfaceModel::at).
+struct SurfacePoint {
+  std::int32_t part = 0;
+  const SurfaceSpectrum* spectrum = nullptr;
+  double temperature_K = 0.0;
+};
+
 // A central body's coordinates and the maps read at a point.
 struct Geography {
   double equatorial_radius_m = 0, polar_radius_m = 0;
@@ -62,24 +70,23 @@ class SurfaceModel {
                Geography geography, const radiometry::SpectralView& view, std::int64_t temperature_table_size);
   const PartSurface& part(std::int32_t i) const { return parts_[index(i)]; }
   std::size_t part_count() const { return parts_.size(); }
-  // The material at a site (the map's in bitmap mode).
-  const SurfaceSpectrum& spectrum(const SurfaceSite& site) const;
+  // The material (the map's in bitmap mode) and temperature at a site.
+  SurfacePoint at(const SurfaceSite& site) const;
   // Some part (or map class) reflects light in the band.
   bool reflects() const { return reflects_; }
-  bool reflects(const SurfaceSite& site) const { return self_radiance_.empty() && spectrum(site).reflects(); }
+  bool reflects(const SurfacePoint& point) const { return self_radiance_.empty() && point.spectrum->reflects(); }
   // The temperature or the material varies over a part.
   bool varying() const { return thermal_.subsolar || geography_.bitmap() || geography_.climatology; }
   // One radiance per part, whatever the point and the light.
   bool plain() const { return !reflects_ && !varying(); }
   bool bitmap() const { return geography_.bitmap(); }
 
-  double temperature_K(const SurfaceSite& site) const;
   // Self-emission eps B(T) (or the tabulated radiance) at the view's
   // wavelengths added to `out`, its band integral (eq. 48; exact where the
   // view says), and the same through the L(T) table.
-  void add_emission(const SurfaceSite& site, std::vector<double>& out) const;
-  double emission_radiance(const SurfaceSite& site) const;
-  double emission_radiance_interpolated(const SurfaceSite& site) const;
+  void add_emission(const SurfacePoint& point, std::vector<double>& out) const;
+  double emission_radiance(const SurfacePoint& point) const;
+  double emission_radiance_interpolated(const SurfacePoint& point) const;
   // plain(): the effective radiance of a whole part.
   double part_radiance(std::int32_t part) const { return part_radiance_[index(part)]; }
   const Geography& geography() const { return geography_; }

@@ -287,26 +287,26 @@ const std::vector<WorldObject::AreaSourcePatch>& WorldObject::area_source(std::s
 std::vector<double> WorldObject::spectral_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
                                                    const Vec3& toward, bool sun_only) const {
   std::vector<double> out(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
-  const SurfaceSite site{part, point_body_m, normal_body};
-  if (surface->reflects(site)) {
+  const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
+  if (surface->reflects(point)) {
     std::vector<double> E(out.size(), 0.0);
-    const SurfaceSpectrum& s = surface->spectrum(site);
+    const SurfaceSpectrum& s = *point.spectrum;
     add_reflected_irradiance(to_frame(point_body_m), placed.body_to_frame * normal_body, toward, s.brdf(), sun_only, E);
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = E[i] * s.srf()[i];
   }
-  surface->add_emission(site, out);
+  surface->add_emission(point, out);
   return out;
 }
 
 double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
                                        bool interpolated) const {
   if (surface->plain()) return surface->part_radiance(part);
-  const SurfaceSite site{part, point_body_m, normal_body};
-  double L = interpolated ? surface->emission_radiance_interpolated(site) : surface->emission_radiance(site);
-  if (surface->reflects(site)) {
+  const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
+  double L = interpolated ? surface->emission_radiance_interpolated(point) : surface->emission_radiance(point);
+  if (surface->reflects(point)) {
     const Vec3 p = to_frame(point_body_m);
     std::vector<double> E(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
-    const SurfaceSpectrum& s = surface->spectrum(site);
+    const SurfaceSpectrum& s = *point.spectrum;
     add_reflected_irradiance(p, placed.body_to_frame * normal_body, -p.normalized(), s.brdf(), false, E);
     for (std::size_t i = 0; i < E.size(); ++i) E[i] *= s.srf()[i];
     L += world_->view.spectral.integrate(E);
@@ -594,11 +594,11 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     std::vector<double> srf(n, 0.0), emitted(n, 0.0);
     double total_area = 0;
     auto add = [&](const SurfaceSite& site, double area) {
-      const SurfaceSpectrum& s = w.surface->spectrum(site);
-      if (w.surface->reflects(site))
-        for (std::size_t i = 0; i < n; ++i) srf[i] += area * s.srf()[i];
+      const SurfacePoint point = w.surface->at(site);
+      if (w.surface->reflects(point))
+        for (std::size_t i = 0; i < n; ++i) srf[i] += area * point.spectrum->srf()[i];
       std::vector<double> e(n, 0.0);
-      w.surface->add_emission(site, e);
+      w.surface->add_emission(point, e);
       for (std::size_t i = 0; i < n; ++i) emitted[i] += area * e[i];
       total_area += area;
     };

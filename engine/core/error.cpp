@@ -12,15 +12,15 @@ std::string describe(double value) {
 }
 }  // namespace
 
-void require_finite(double value, const std::string& field) {
-  if (!std::isfinite(value)) throw Error(Status::out_of_range, field + ": not finite (" + describe(value) + ")");
+void require_finite(double value, std::string_view field) {
+  if (!std::isfinite(value)) throw Error(Status::out_of_range, std::string(field) + ": not finite (" + describe(value) + ")");
 }
-void require_positive(double value, const std::string& field) {
+void require_positive(double value, std::string_view field) {
   require_finite(value, field);
-  if (!(value > 0.0)) throw Error(Status::out_of_range, field + ": must be > 0, got " + describe(value));
+  if (!(value > 0.0)) throw Error(Status::out_of_range, std::string(field) + ": must be > 0, got " + describe(value));
 }
-void require_non_negative(double value, const std::string& field) {
+void require_non_negative(double value, std::string_view field) {
   require_finite(value, field);
-  if (value < 0.0) throw Error(Status::out_of_range, field + ": must be >= 0, got " + describe(value));
+  if (value < 0.0) throw Error(Status::out_of_range, std::string(field) + ": must be >= 0, got " + describe(value));
 }
 }  // namespace eoir

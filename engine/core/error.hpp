@@ -3,6 +3,7 @@
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace eoir {
 
@@ -37,10 +38,10 @@ class Error : public std::runtime_error {
 };
 
 // Throws out_of_range naming `field` unless value is finite.
-void require_finite(double value, const std::string& field);
+void require_finite(double value, std::string_view field);
 // Throws out_of_range naming `field` unless value is finite and > 0.
-void require_positive(double value, const std::string& field);
+void require_positive(double value, std::string_view field);
 // Throws out_of_range naming `field` unless value is finite and >= 0.
-void require_non_negative(double value, const std::string& field);
+void require_non_negative(double value, std::string_view field);
 
 }  // namespace eoir

@@ -19,19 +19,19 @@ double SpectralView::integrate(const std::vector<double>& spectral_values) const
   return integrate_spectral_samples(band, spectral_values);
 }
 
-std::vector<double> SpectralView::gray_body_spectrum(double temperature_K, double reflectance) const {
+void SpectralView::add_gray_body_spectrum(double temperature_K, double reflectance, std::vector<double>& out) const {
   const double emissivity = emissivity_from_reflectance(reflectance);
-  std::vector<double> out(sample_wavelengths_um.size());
-  for (std::size_t i = 0; i < out.size(); ++i)
-    out[i] = emissivity * planck_radiance(sample_wavelengths_um[i], temperature_K);
-  return out;
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] += emissivity * planck_radiance(sample_wavelengths_um[i], temperature_K);
 }
 
 double SpectralView::gray_body_radiance(double temperature_K, double reflectance) const {
   if (integration == BandIntegration::exact)
     return gray_body_band_radiance(emissivity_from_reflectance(reflectance), temperature_K, band.low_um,
                                    band.high_um);
-  return integrate(gray_body_spectrum(temperature_K, reflectance));
+  thread_local std::vector<double> e;  // per-sample scratch: no allocation per call
+  e.assign(sample_wavelengths_um.size(), 0.0);
+  add_gray_body_spectrum(temperature_K, reflectance, e);
+  return integrate(e);
 }
 
 }  // namespace eoir::radiometry

@@ -22,8 +22,9 @@ struct SpectralView {
   double integrate(const std::vector<double>& spectral_values) const;
   // eps B_lambda(T) of an opaque gray body of reflectance `reflectance`
   // (eq. 4's self-emission, emissivity 1 - SRF, spec 4.1.4.1): the spectral
-  // vector, and its band integral (exact when the view says so).
-  std::vector<double> gray_body_spectrum(double temperature_K, double reflectance) const;
+  // vector added to `out` (one value per sample wavelength), and its band
+  // integral (exact when the view says so).
+  void add_gray_body_spectrum(double temperature_K, double reflectance, std::vector<double>& out) const;
   double gray_body_radiance(double temperature_K, double reflectance) const;
 };
 

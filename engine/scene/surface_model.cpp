@@ -76,7 +76,7 @@ SurfacePoint SurfaceModel::at(const SurfaceSite& site) const {
   }
   if (climatology) {
     const auto kind = g.land_mask->at(lat, lon) ? universe::SurfaceKind::land : universe::SurfaceKind::water;
-    point.temperature_K = surface_temperature_K(*g.climatology, kind, lat, lon, g.calendar);
+    point.temperature_K = g.climatology_now.temperature_K(kind, lat, lon);
   } else {
     point.temperature_K = thermal_.at(site.normal_body, part.temperature_K);
   }

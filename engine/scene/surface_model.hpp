@@ -55,7 +55,7 @@ struct Geography {
   // Thermal model climatology: land or water from the mask, then the tables.
   const universe::RasterLevel* land_mask = nullptr;
   const universe::SurfaceClimatology* climatology = nullptr;
-  CalendarInstant calendar;  // of the frame's time (day of year, UTC hours)
+  ClimatologyInstant climatology_now;  // the tables and the Sun at the frame's time
   void latitude_longitude_deg(const Vec3& point_body_m, double& latitude_deg, double& longitude_deg) const;
   bool bitmap() const { return land_cover || albedo; }
 };

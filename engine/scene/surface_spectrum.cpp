@@ -22,8 +22,7 @@ SurfaceSpectrum::SurfaceSpectrum(const universe::Material& material, double gray
 
 void SurfaceSpectrum::add_emission(double temperature_K, std::vector<double>& out) const {
   if (gray_) {
-    const std::vector<double> e = view_->gray_body_spectrum(temperature_K, gray_reflectance_);
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] += e[i];
+    view_->add_gray_body_spectrum(temperature_K, gray_reflectance_, out);
     return;
   }
   const radiometry::SpectralBand& b = view_->band;
@@ -39,7 +38,8 @@ void SurfaceSpectrum::add_emission(double temperature_K, std::vector<double>& ou
 
 double SurfaceSpectrum::emission_radiance(double temperature_K) const {
   if (gray_) return view_->gray_body_radiance(temperature_K, gray_reflectance_);
-  std::vector<double> e(srf_.size(), 0.0);
+  thread_local std::vector<double> e;  // per-sample scratch: no allocation per call
+  e.assign(srf_.size(), 0.0);
   add_emission(temperature_K, e);
   return view_->integrate(e);
 }

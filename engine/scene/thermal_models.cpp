@@ -18,10 +18,10 @@ using constants::rad_per_deg;
 
 constexpr double kHoursPerDay = 24.0;
 
-void require_range(double value, double lo, double hi, const std::string& field) {
+void require_range(double value, double lo, double hi, std::string_view field) {
   require_finite(value, field);
   if (value < lo || value > hi)
-    throw Error(Status::out_of_range, field + ": " + std::to_string(value) + " outside [" + std::to_string(lo) + ", " +
+    throw Error(Status::out_of_range, std::string(field) + ": " + std::to_string(value) + " outside [" + std::to_string(lo) + ", " +
                                           std::to_string(hi) + "]");
 }
 
@@ -36,6 +36,12 @@ double wrap(double x, double period) {
 double wrap_hour_angle_deg(double h) {
   double r = wrap(h, 360.0);
   return r > 180.0 ? r - 360.0 : r;
+}
+
+double local_solar_time_from_eot_h(double utc_hours, double longitude_deg, double equation_of_time_min) {
+  require_finite(utc_hours, "utc_hours");
+  require_finite(longitude_deg, "longitude_deg");
+  return wrap(utc_hours + longitude_deg / 15.0 + equation_of_time_min / 60.0, kHoursPerDay);
 }
 
 void check_body(const AirlessThermal& body) {
@@ -94,9 +100,7 @@ CalendarInstant calendar_instant(const EngineTime& time) {
 }
 
 double local_solar_time_h(double utc_hours, double longitude_deg, double day_of_year) {
-  require_finite(utc_hours, "utc_hours");
-  require_finite(longitude_deg, "longitude_deg");
-  return wrap(utc_hours + longitude_deg / 15.0 + equation_of_time_min(day_of_year) / 60.0, kHoursPerDay);
+  return local_solar_time_from_eot_h(utc_hours, longitude_deg, equation_of_time_min(day_of_year));
 }
 
 double local_solar_time_h(const EngineTime& time, double longitude_deg) {
@@ -124,6 +128,12 @@ SunriseSunset sunrise_sunset(double latitude_deg, double declination_deg, double
 
 DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
                            const DiurnalShape& shape)
+    : DiurnalCycle(t_min_K, t_max_K, latitude_deg, declination_deg, shape, DayOnly{}) {
+  solve_night();
+}
+
+DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
+                           const DiurnalShape& shape, DayOnly)
     : t_min_K_(t_min_K), t_max_K_(t_max_K) {
   require_finite(t_min_K, "t_min_K");
   require_finite(t_max_K, "t_max_K");
@@ -140,41 +150,49 @@ DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, 
   const double lag_h = shape.max_lag_h * std::sin(pi * day_h / kHoursPerDay);
   time_of_max_h_ = 12.0 + lag_h;
   half_period_h_ = 2.0 * (time_of_max_h_ - sunrise_h_);  // cos = 0 at sunrise: T(t_sr) = t_min
-
   const double range_K = t_max_K - t_min_K;
   const double theta_s = pi * (sunset_h_ - time_of_max_h_) / half_period_h_;  // in (0, pi/2) for a day < 24 h
   sunset_K_ = t_min_K + range_K * std::cos(theta_s);
+  sunset_slope_K_h_ = range_K * pi / half_period_h_ * std::sin(theta_s);  // -dT/dt at sunset
   asymptote_K_ = t_min_K;
+}
+
+void DiurnalCycle::solve_night() {
   decay_h_ = 0.0;
-  const double night_h = kHoursPerDay - day_h;
-  const double slope_K_h = range_K * pi / half_period_h_ * std::sin(theta_s);  // -dT/dt at sunset
-  const double drop_K = sunset_K_ - t_min_K;
-  if (night_h <= 0.0 || drop_K <= 0.0 || slope_K_h <= 0.0) return;  // no night, or a flat one at t_min
+  const double night_h = kHoursPerDay - (sunset_h_ - sunrise_h_);
+  const double drop_K = sunset_K_ - t_min_K_;
+  if (night_h <= 0.0 || drop_K <= 0.0 || sunset_slope_K_h_ <= 0.0) return;  // no night, or a flat one at t_min
   // k (1 - exp(-n/k)) = q: increasing in k from 0 to n, so a root exists iff q < n.
-  const double q_h = drop_K / slope_K_h;
+  const double q_h = drop_K / sunset_slope_K_h_;
   if (q_h >= night_h) {
     linear_night_ = true;
     decay_h_ = std::numeric_limits<double>::infinity();
     return;
   }
-  // Newton on g(k) = k (1 - exp(-n/k)), g'(k) = 1 - (1 + n/k) exp(-n/k) > 0,
-  // kept inside the bracket (bisection where a step leaves it): ~5 steps to
-  // 1e-13 where bisection takes ~45.
-  double lo = q_h, hi = night_h * night_h / (night_h - q_h);  // g(lo) <= q < g(hi)
-  double k = 0.5 * (lo + hi);
-  for (int i = 0; i < 200; ++i) {
-    const double e = std::exp(-night_h / k);
-    const double g = k * -std::expm1(-night_h / k) - q_h;
-    if (g < 0) lo = k; else hi = k;
-    const double slope = 1.0 - (1.0 + night_h / k) * e;
-    double next = slope > 0 ? k - g / slope : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    const bool done = std::fabs(next - k) <= 1e-13 * k || hi - lo <= 1e-13 * hi;
-    k = next;
-    if (done) break;
+  // With x = n/k and r = q/n in (0, 1): F(x) = 1 - exp(-x) - r x = 0. F is
+  // concave with F(0) = 0, F'(0) > 0, so its positive root x* lies where F
+  // falls; from x0 = 1/r (F(x0) = -exp(-1/r) < 0, right of x*) Newton's
+  // steps decrease monotonically to x* (the tangent of a concave function lies
+  // above it): 2-4 steps to 1e-15 for the r in (0.1, 0.4) of a 4-24 h day.
+  const double r = q_h / night_h;
+  double x = 1.0 / r;
+  for (int i = 0; i < 100; ++i) {
+    const double e = std::exp(-x);               // < 0.14 for x > 2: 1 - e has no cancellation
+    const double step = (1.0 - e - r * x) / (e - r);  // F / F', F' < 0 right of x*
+    x -= step;
+    if (!(step > 1e-15 * x)) break;
   }
-  decay_h_ = k;
-  asymptote_K_ = sunset_K_ - decay_h_ * slope_K_h;
+  decay_h_ = night_h / x;
+  asymptote_K_ = sunset_K_ - decay_h_ * sunset_slope_K_h_;
+}
+
+double DiurnalCycle::temperature_K(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
+                                   double local_solar_time_h, const DiurnalShape& shape) {
+  DiurnalCycle cycle(t_min_K, t_max_K, latitude_deg, declination_deg, shape, DayOnly{});
+  require_finite(local_solar_time_h, "local_solar_time_h");
+  if (cycle.sunrise_h_ + wrap(local_solar_time_h - cycle.sunrise_h_, kHoursPerDay) > cycle.sunset_h_)
+    cycle.solve_night();  // only a night-time point needs the decay
+  return cycle.temperature_K(local_solar_time_h);
 }
 
 double DiurnalCycle::temperature_K(double local_solar_time_h) const {
@@ -196,21 +214,30 @@ double surface_temperature_K(const universe::SurfaceClimatology& climatology, un
                              double latitude_deg, double day_of_year, double local_solar_time_h,
                              const DiurnalShape& shape) {
   const universe::DailyExtremes x = climatology.table(kind).at(latitude_deg, day_of_year);
-  return DiurnalCycle(x.t_min_K, x.t_max_K, latitude_deg, solar_declination_deg(day_of_year), shape)
-      .temperature_K(local_solar_time_h);
+  return DiurnalCycle::temperature_K(x.t_min_K, x.t_max_K, latitude_deg, solar_declination_deg(day_of_year),
+                                     local_solar_time_h, shape);
 }
 
 double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
                              double latitude_deg, double longitude_deg, const EngineTime& time,
                              const DiurnalShape& shape) {
-  return surface_temperature_K(climatology, kind, latitude_deg, longitude_deg, calendar_instant(time), shape);
+  return ClimatologyInstant(climatology, calendar_instant(time)).temperature_K(kind, latitude_deg, longitude_deg, shape);
 }
 
-double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
-                             double latitude_deg, double longitude_deg, const CalendarInstant& c,
-                             const DiurnalShape& shape) {
-  return surface_temperature_K(climatology, kind, latitude_deg, c.day_of_year,
-                               local_solar_time_h(c.utc_hours, longitude_deg, c.day_of_year), shape);
+ClimatologyInstant::ClimatologyInstant(const universe::SurfaceClimatology& climatology,
+                                       const CalendarInstant& calendar)
+    : land_(climatology.land.day(calendar.day_of_year)),
+      water_(climatology.water.day(calendar.day_of_year)),
+      calendar_(calendar),
+      declination_deg_(solar_declination_deg(calendar.day_of_year)),
+      equation_of_time_min_(equation_of_time_min(calendar.day_of_year)) {}
+
+double ClimatologyInstant::temperature_K(universe::SurfaceKind kind, double latitude_deg, double longitude_deg,
+                                         const DiurnalShape& shape) const {
+  const universe::DailyExtremes x = (kind == universe::SurfaceKind::land ? land_ : water_).at(latitude_deg);
+  return DiurnalCycle::temperature_K(
+      x.t_min_K, x.t_max_K, latitude_deg, declination_deg_,
+      local_solar_time_from_eot_h(calendar_.utc_hours, longitude_deg, equation_of_time_min_), shape);
 }
 
 // ---- 2. Airless central bodies ----------------------------------------------

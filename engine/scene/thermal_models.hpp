@@ -132,6 +132,10 @@ class DiurnalCycle {
   DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
                const DiurnalShape& shape = {});
   double temperature_K(double local_solar_time_h) const;
+  // The same at one local solar time, the night decay solved only for a
+  // point between sunset and sunrise (it is the costly part).
+  static double temperature_K(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
+                              double local_solar_time_h, const DiurnalShape& shape = {});
 
   double sunrise_h() const { return sunrise_h_; }  // start of the cosine (T = t_min)
   double sunset_h() const { return sunset_h_; }    // start of the night decay
@@ -142,9 +146,14 @@ class DiurnalCycle {
   double sunset_K() const { return sunset_K_; }
 
  private:
+  struct DayOnly {};  // the day branch alone; solve_night() adds the night
+  DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
+               const DiurnalShape& shape, DayOnly);
+  void solve_night();
+
   double t_min_K_, t_max_K_;
   double sunrise_h_ = 6.0, sunset_h_ = 18.0, time_of_max_h_ = 13.5, half_period_h_ = 15.0;
-  double sunset_K_ = 0.0, asymptote_K_ = 0.0, decay_h_ = 0.0;
+  double sunset_K_ = 0.0, sunset_slope_K_h_ = 0.0, asymptote_K_ = 0.0, decay_h_ = 0.0;
   bool linear_night_ = false;
 };
 
@@ -157,10 +166,22 @@ double surface_temperature_K(const universe::SurfaceClimatology& climatology, un
 double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
                              double latitude_deg, double longitude_deg, const EngineTime& time,
                              const DiurnalShape& shape = {});
-// The same with the instant's calendar computed once (per frame).
-double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
-                             double latitude_deg, double longitude_deg, const CalendarInstant& calendar,
-                             const DiurnalShape& shape = {});
+// The climatology and the Sun at one instant, computed once for a frame:
+// both tables at the day of year, the declination and the equation of time.
+class ClimatologyInstant {
+ public:
+  ClimatologyInstant() = default;
+  ClimatologyInstant(const universe::SurfaceClimatology& climatology, const CalendarInstant& calendar);
+  // surface_temperature_K at a geodetic latitude/longitude (deg).
+  double temperature_K(universe::SurfaceKind kind, double latitude_deg, double longitude_deg,
+                       const DiurnalShape& shape = {}) const;
+  const CalendarInstant& calendar() const { return calendar_; }
+
+ private:
+  universe::ClimatologyDay land_, water_;
+  CalendarInstant calendar_;
+  double declination_deg_ = 0.0, equation_of_time_min_ = 0.0;
+};
 
 // ---- 2. Airless central bodies ----------------------------------------------
 

@@ -305,7 +305,8 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
   double L = interpolated ? surface->emission_radiance_interpolated(point) : surface->emission_radiance(point);
   if (surface->reflects(point)) {
     const Vec3 p = to_frame(point_body_m);
-    std::vector<double> E(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
+    thread_local std::vector<double> E;  // per-sample scratch: no allocation per call
+    E.assign(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
     const SurfaceSpectrum& s = *point.spectrum;
     add_reflected_irradiance(p, placed.body_to_frame * normal_body, -p.normalized(), s.brdf(), false, E);
     for (std::size_t i = 0; i < E.size(); ++i) E[i] *= s.srf()[i];
@@ -541,7 +542,6 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       geography.equatorial_radius_m = w.equatorial_radius_m;
       geography.polar_radius_m = w.polar_radius_m;
       geography.geodetic = o.central_body == universe::CentralBody::earth;
-      geography.calendar = calendar_instant(t);
       // Maps at the level the ground sample distance asks for (spec 4.2.3).
       const double gsd_m = std::max(w.range_m - w.equatorial_radius_m, 1.0) * sample_angle_rad;
       if (const universe::BodyMaps* maps = library.maps_of(o.central_body)) {
@@ -567,6 +567,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
         if (o.body.thermal_model == universe::ThermalModel::climatology && maps->land_mask) {
           geography.land_mask = &maps->land_mask->level_for(gsd_m, w.equatorial_radius_m);
           geography.climatology = library.climatology.get();
+          geography.climatology_now = ClimatologyInstant(*geography.climatology, calendar_instant(t));
         }
       }
       if (o.body.thermal_model == universe::ThermalModel::climatology && !geography.climatology)

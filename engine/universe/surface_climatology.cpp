@@ -163,27 +163,9 @@ DailyExtremes ClimatologyTable::entry(std::size_t band, int month) const {
   return months_[band][static_cast<std::size_t>(month - 1)];
 }
 
-DailyExtremes ClimatologyTable::at(double latitude_deg, double day_of_year) const {
-  require_finite(latitude_deg, "latitude_deg");
+ClimatologyDay ClimatologyTable::day(double day_of_year) const {
   require_finite(day_of_year, "day_of_year");
-  if (latitude_deg < -90.0 || latitude_deg > 90.0)
-    throw Error(Status::out_of_range, "latitude_deg: " + format(latitude_deg) + " outside [-90, 90]");
-
-  // Latitude: the two bracketing bands and the weight of the upper one.
-  std::size_t lo = 0, hi = 0;
-  double w_lat = 0.0;
-  const auto& lat = latitudes_deg_;
-  if (latitude_deg <= lat.front()) {
-    lo = hi = 0;
-  } else if (latitude_deg >= lat.back()) {
-    lo = hi = lat.size() - 1;
-  } else {
-    hi = static_cast<std::size_t>(std::upper_bound(lat.begin(), lat.end(), latitude_deg) - lat.begin());
-    lo = hi - 1;
-    w_lat = (latitude_deg - lat[lo]) / (lat[hi] - lat[lo]);
-  }
-
-  // Time: days since 1 January 00:00 wrapped into one year, then the two
+  // Days since 1 January 00:00 wrapped into one year, then the two
   // bracketing mid-months (December -> January across the year end).
   double x = std::fmod(day_of_year - 1.0, kYear_days);
   if (x < 0.0) x += kYear_days;
@@ -199,13 +181,33 @@ DailyExtremes ClimatologyTable::at(double latitude_deg, double day_of_year) cons
     }
   }
   const double w_time = (x - c0) / (c1 - c0);
+  ClimatologyDay day;
+  day.latitudes_deg_ = latitudes_deg_;
+  for (const auto& band : months_) {
+    const DailyExtremes a = band[static_cast<std::size_t>(m0 - 1)], c = band[static_cast<std::size_t>(m1 - 1)];
+    day.bands_.push_back(
+        {a.t_min_K + w_time * (c.t_min_K - a.t_min_K), a.t_max_K + w_time * (c.t_max_K - a.t_max_K)});
+  }
+  return day;
+}
 
-  auto blend = [&](std::size_t b) {
-    const DailyExtremes a = months_[b][static_cast<std::size_t>(m0 - 1)];
-    const DailyExtremes c = months_[b][static_cast<std::size_t>(m1 - 1)];
-    return DailyExtremes{a.t_min_K + w_time * (c.t_min_K - a.t_min_K), a.t_max_K + w_time * (c.t_max_K - a.t_max_K)};
-  };
-  const DailyExtremes a = blend(lo), b = blend(hi);
+DailyExtremes ClimatologyTable::at(double latitude_deg, double day_of_year) const {
+  require_finite(latitude_deg, "latitude_deg");
+  return day(day_of_year).at(latitude_deg);
+}
+
+DailyExtremes ClimatologyDay::at(double latitude_deg) const {
+  require_finite(latitude_deg, "latitude_deg");
+  if (latitude_deg < -90.0 || latitude_deg > 90.0)
+    throw Error(Status::out_of_range, "latitude_deg: " + format(latitude_deg) + " outside [-90, 90]");
+  // The two bracketing bands and the weight of the upper one.
+  const auto& lat = latitudes_deg_;
+  if (latitude_deg <= lat.front()) return bands_.front();
+  if (latitude_deg >= lat.back()) return bands_.back();
+  const auto hi = static_cast<std::size_t>(std::upper_bound(lat.begin(), lat.end(), latitude_deg) - lat.begin());
+  const std::size_t lo = hi - 1;
+  const double w_lat = (latitude_deg - lat[lo]) / (lat[hi] - lat[lo]);
+  const DailyExtremes a = bands_[lo], b = bands_[hi];
   return {a.t_min_K + w_lat * (b.t_min_K - a.t_min_K), a.t_max_K + w_lat * (b.t_max_K - a.t_max_K)};
 }
 

@@ -46,6 +46,20 @@ struct DailyExtremes {
   double t_max_K = 0.0;  // monthly mean of the daily maximum
 };
 
+// The table at one day of year: each band's extremes blended in time
+// (ClimatologyTable::day), computed once for a frame.
+class ClimatologyDay {
+ public:
+  // Linear in latitude between band centres, the end bands held beyond
+  // them; throws out_of_range for a non-finite latitude or one outside [-90, 90].
+  DailyExtremes at(double latitude_deg) const;
+
+ private:
+  friend class ClimatologyTable;
+  std::vector<double> latitudes_deg_;
+  std::vector<DailyExtremes> bands_;
+};
+
 class ClimatologyTable {
  public:
   // Parses the CSV text of `in`; `name` (normally the path) starts every
@@ -57,7 +71,9 @@ class ClimatologyTable {
   // Interpolated extremes at a latitude [-90, 90] and day of year (see
   // above); throws out_of_range for a non-finite argument or a latitude
   // outside [-90, 90].
-  DailyExtremes at(double latitude_deg, double day_of_year) const;
+  DailyExtremes at(double latitude_deg, double day_of_year) const;  // day(day_of_year).at(latitude_deg)
+  // All bands at a day of year (throws out_of_range for a non-finite day).
+  ClimatologyDay day(double day_of_year) const;
 
   const std::string& source() const { return source_; }
   const std::vector<double>& band_centres_deg() const { return latitudes_deg_; }

@@ -105,7 +105,8 @@ std::uint8_t RasterLevel::at(double latitude_deg, double longitude_deg) const {
   const double per_degree = cells_per_degree_ > 0 ? static_cast<double>(cells_per_degree_) : 1.0 / cell_deg_;
   auto i = static_cast<std::int64_t>(std::floor((lat_north_deg_ - latitude_deg) * per_degree));
   i = std::clamp<std::int64_t>(i, 0, height_ - 1);
-  double lon = std::fmod(longitude_deg - lon_west_deg_, 360.0);
+  double lon = longitude_deg - lon_west_deg_;  // wrapped into [0, 360): fmod only off [-360, 360)
+  if (lon < -360.0 || lon >= 360.0) lon = std::fmod(lon, 360.0);
   if (lon < 0) lon += 360.0;
   auto j = static_cast<std::int64_t>(std::floor(lon * per_degree));
   j = std::clamp<std::int64_t>(j, 0, width_ - 1);

@@ -48,7 +48,7 @@ void Engine::add_sensor(const std::string& name, const std::string& parent) {
   models_.erase(name);
   adaptive_.erase(name);
   frames_.erase(name);
-  spare_scenes_.erase(name);
+  spare_buffers_.erase(name);
   changed();
 }
 
@@ -63,7 +63,7 @@ void Engine::remove_object(const std::string& name) {
     worlds_.erase(s);
     adaptive_.erase(s);
     frames_.erase(s);
-    spare_scenes_.erase(s);
+    spare_buffers_.erase(s);
   }
   changed();
 }
@@ -232,17 +232,18 @@ const Frame& Engine::render(const std::string& name) {
   const scene::World& w = *frame->world;
   const auto t1 = clock_type::now();
   progress(0.05, "render");
-  frame->scene = scene::generate_scene(w, options_.threads, std::move(spare_scenes_[name]));
+  FrameBuffers& spare = spare_buffers_[name];
+  frame->scene = scene::generate_scene(w, options_.threads, std::move(spare.scene));
   progress(0.6, "render");
   frame->sensor = sensor::render_sensor_image(model, frame->scene.image, noise_rng_, options_.threads);
   progress(0.9, "render");
   const auto t2 = clock_type::now();
   const universe::SensorParameters& p = model.parameters;
-  frame->scene_display =
-      sensor::scene_display(frame->scene.image, p.display_agc, p.display_gain_step, options_.threads);
+  frame->scene_display = sensor::scene_display(frame->scene.image, p.display_agc, p.display_gain_step,
+                                               options_.threads, std::move(spare.scene_display));
   const double full_scale = std::isfinite(model.metrics.saturation_electrons) ? model.metrics.saturation_electrons : 1e6;
   frame->sensor_display = sensor::compress_for_display(frame->sensor.electrons, p.display_agc, p.display_gain_step,
-                                                       full_scale, options_.threads);
+                                                       full_scale, options_.threads, std::move(spare.sensor_display));
   const auto t3 = clock_type::now();
   // Per-frame truth: the target metrics of every object and star in the
   // field, evaluated on the same world.
@@ -298,7 +299,12 @@ const Frame& Engine::render(const std::string& name) {
     options_.log(0, s.str());
   }
   std::shared_ptr<const Frame>& slot = frames_[name];
-  if (slot.use_count() == 1) spare_scenes_[name] = std::move(std::const_pointer_cast<Frame>(slot)->scene);
+  if (slot.use_count() == 1) {
+    Frame& old = *std::const_pointer_cast<Frame>(slot);
+    spare.scene = std::move(old.scene);
+    spare.scene_display = std::move(old.scene_display);
+    spare.sensor_display = std::move(old.sensor_display);
+  }
   slot = frame;
   return *frame;
 }

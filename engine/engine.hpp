@@ -136,9 +136,14 @@ class Engine {
   std::map<std::string, CachedAdaptive> adaptive_;
   std::map<std::pair<std::string, std::string>, metrics::TargetMetrics> target_cache_;  // at revision_ and time_
   std::map<std::string, std::shared_ptr<const Frame>> frames_;
-  // Per sensor, the sample buffers of the frame the last render replaced
-  // (when nothing else held it), reused by the next render.
-  std::map<std::string, scene::SceneImage> spare_scenes_;
+  // Per sensor, the sample and display buffers of the frame the last render
+  // replaced (when nothing else held it), reused by the next render: a
+  // steady sequence of frames touches no fresh memory.
+  struct FrameBuffers {
+    scene::SceneImage scene;
+    std::vector<std::uint8_t> scene_display, sensor_display;
+  };
+  std::map<std::string, FrameBuffers> spare_buffers_;
   std::shared_ptr<universe::Library> library_;  // loaded on first use
   std::vector<universe::Material> user_materials_;
   std::vector<universe::NamedSpectrum> user_spectra_;

@@ -17,8 +17,8 @@ constexpr std::int64_t kChunk = 4096;  // values made at a time, per thread
 // greatest value, then for the bytes) in chunks, never held whole.
 template <class Fill>
 std::vector<std::uint8_t> compress(std::int64_t n, const Fill& fill, bool agc, std::int64_t gain_step,
-                                   double full_scale, unsigned threads) {
-  std::vector<std::uint8_t> out(static_cast<std::size_t>(n), 0);
+                                   double full_scale, unsigned threads, std::vector<std::uint8_t> out) {
+  out.resize(static_cast<std::size_t>(n));  // every byte is written below
   if (n == 0) return out;
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   double lo = 0, scale = 0;
@@ -68,15 +68,17 @@ std::vector<std::uint8_t> compress(std::int64_t n, const Fill& fill, bool agc, s
 }  // namespace
 
 std::vector<std::uint8_t> compress_for_display(const std::vector<double>& values, bool agc, std::int64_t gain_step,
-                                               double full_scale, unsigned threads) {
+                                               double full_scale, unsigned threads,
+                                               std::vector<std::uint8_t> storage) {
   const auto fill = [&values](std::int64_t b, std::int64_t e, double* out) {
     std::copy(values.begin() + b, values.begin() + e, out);
   };
-  return compress(static_cast<std::int64_t>(values.size()), fill, agc, gain_step, full_scale, threads);
+  return compress(static_cast<std::int64_t>(values.size()), fill, agc, gain_step, full_scale, threads,
+                  std::move(storage));
 }
 
 std::vector<std::uint8_t> scene_display(const radiometry::RadianceImage& scene, bool agc, std::int64_t gain_step,
-                                        unsigned threads) {
+                                        unsigned threads, std::vector<std::uint8_t> storage) {
   const geometry::SampleGrid& g = scene.grid;
   const std::int64_t w = g.width(), fw = g.field_width(), fh = g.field_height(), guard = g.guard_samples();
   // dOmega = dA' cos^3(theta) / f^2 (SampleGrid::sample_solid_angle_sr) with
@@ -114,7 +116,7 @@ std::vector<std::uint8_t> scene_display(const radiometry::RadianceImage& scene, 
                                [](const auto& p, std::int64_t i) { return p.first < i; });
     for (; it != point_irradiance.end() && it->first < e; ++it) out[it->first - b] += it->second;
   };
-  return compress(fw * fh, fill, agc, gain_step, 1e-6, threads);
+  return compress(fw * fh, fill, agc, gain_step, 1e-6, threads, std::move(storage));
 }
 
 }  // namespace eoir::sensor

@@ -37,7 +37,7 @@ Pick pick_sample(const World& world, const SceneImage& scene, std::int64_t c, st
   // The same surface point, normal and direction the image's sample used.
   Vec3 point_body, shading_normal;
   o.shading_point(hit.part, hit.point_body_m, point_body, shading_normal);
-  pick.temperature_K = o.surface->at(SurfaceSite{hit.part, point_body, shading_normal}).temperature_K;
+  pick.temperature_K = o.surface->temperature_K(o.surface->at(SurfaceSite{hit.part, point_body, shading_normal}));
   pick.spectral_radiance_W_cm2_sr_um =
       o.spectral_radiance(hit.part, point_body, shading_normal, -o.to_frame(point_body).normalized());
   if (o.central_body) {

@@ -3,6 +3,7 @@
 #include <GeographicLib/Geocentric.hpp>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/constants.hpp"
 #include "scene/thermal_models.hpp"
@@ -49,38 +50,59 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
   for (const PartSurface& s : parts_)
     part_radiance_.push_back(self_radiance_.empty() ? s.spectrum->emission_radiance(s.temperature_K)
                                                     : view.integrate(self_radiance_));
-  if (!thermal_.subsolar || temperature_table_size <= 0) return;
-  const auto n = temperature_table_size;
-  table_T0_ = std::min(thermal_.night_K, thermal_.subsolar_K);
-  table_dT_ = std::max(std::fabs(thermal_.subsolar_K - thermal_.night_K), 1e-9) / static_cast<double>(n - 1);
-  for (const PartSurface& s : parts_) {
-    std::vector<double> row(static_cast<std::size_t>(n + 1));
-    for (std::int64_t k = 0; k <= n; ++k)
-      row[static_cast<std::size_t>(k)] = s.spectrum->emission_radiance(table_T0_ + static_cast<double>(k) * table_dT_);
-    table_.push_back(std::move(row));
+  if (thermal_.subsolar && temperature_table_size > 0) {
+    const auto n = temperature_table_size;
+    table_T0_ = std::min(thermal_.night_K, thermal_.subsolar_K);
+    table_dT_ = std::max(std::fabs(thermal_.subsolar_K - thermal_.night_K), 1e-9) / static_cast<double>(n - 1);
+    for (const PartSurface& s : parts_) {
+      std::vector<double> row(static_cast<std::size_t>(n + 1));
+      for (std::int64_t k = 0; k <= n; ++k)
+        row[static_cast<std::size_t>(k)] = s.spectrum->emission_radiance(table_T0_ + static_cast<double>(k) * table_dT_);
+      table_.push_back(std::move(row));
+    }
   }
+  // The hottest the surface can be: its parts, eq. 12's subsolar point, the
+  // airless night (below both), the climatology's day; one table step above
+  // it for the L(T) table's last node. Every term eps_i B(lambda_i, T) of a
+  // band integral grows with T.
+  if (!self_radiance_.empty()) {
+    emission_bound_ = std::numeric_limits<double>::infinity();
+    return;
+  }
+  double hottest_K = 0;
+  for (const PartSurface& s : parts_) hottest_K = std::max(hottest_K, s.temperature_K);
+  if (thermal_.subsolar) hottest_K = std::max({hottest_K, thermal_.subsolar_K, thermal_.night_K}) + table_dT_;
+  if (geography_.climatology) hottest_K = std::max(hottest_K, geography_.climatology_now.hottest_K());
+  const auto bound = [&](const SurfaceSpectrum* s) {
+    if (s) emission_bound_ = std::max(emission_bound_, s->emission_radiance(hottest_K));
+  };
+  for (const PartSurface& s : parts_) bound(s.spectrum);
+  for (const auto* s : geography_.class_spectra) bound(s);
+  for (const auto* s : geography_.albedo_spectra) bound(s);
 }
 
 SurfacePoint SurfaceModel::at(const SurfaceSite& site) const {
-  const PartSurface& part = parts_[index(site.part)];
-  SurfacePoint point{site.part, part.spectrum, part.temperature_K};
+  SurfacePoint point{site, parts_[index(site.part)].spectrum};
   const Geography& g = geography_;
-  const bool climatology = g.climatology && g.land_mask;
-  double lat = 0, lon = 0;
-  if (g.bitmap() || climatology) g.latitude_longitude_deg(site.point_body_m, lat, lon);
+  if (g.bitmap() || (g.climatology && g.land_mask))
+    g.latitude_longitude_deg(site.point_body_m, point.latitude_deg, point.longitude_deg);
   if (g.land_cover) {
-    const std::uint8_t c = g.land_cover->at(lat, lon);
+    const std::uint8_t c = g.land_cover->at(point.latitude_deg, point.longitude_deg);
     if (c < g.class_spectra.size() && g.class_spectra[c]) point.spectrum = g.class_spectra[c];
   } else if (g.albedo) {
-    if (const SurfaceSpectrum* s = g.albedo_spectra[g.albedo->at(lat, lon)]) point.spectrum = s;
-  }
-  if (climatology) {
-    const auto kind = g.land_mask->at(lat, lon) ? universe::SurfaceKind::land : universe::SurfaceKind::water;
-    point.temperature_K = g.climatology_now.temperature_K(kind, lat, lon);
-  } else {
-    point.temperature_K = thermal_.at(site.normal_body, part.temperature_K);
+    if (const SurfaceSpectrum* s = g.albedo_spectra[g.albedo->at(point.latitude_deg, point.longitude_deg)])
+      point.spectrum = s;
   }
   return point;
+}
+
+double SurfaceModel::temperature_K(const SurfacePoint& point) const {
+  const PartSurface& part = parts_[index(point.site.part)];
+  const Geography& g = geography_;
+  if (!g.climatology || !g.land_mask) return thermal_.at(point.site.normal_body, part.temperature_K);
+  const auto kind = g.land_mask->at(point.latitude_deg, point.longitude_deg) ? universe::SurfaceKind::land
+                                                                             : universe::SurfaceKind::water;
+  return g.climatology_now.temperature_K(kind, point.latitude_deg, point.longitude_deg);
 }
 
 void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& out) const {
@@ -88,20 +110,20 @@ void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& 
     for (std::size_t i = 0; i < out.size(); ++i) out[i] += self_radiance_[i];
     return;
   }
-  point.spectrum->add_emission(point.temperature_K, out);
+  point.spectrum->add_emission(temperature_K(point), out);
 }
 
 double SurfaceModel::emission_radiance(const SurfacePoint& point) const {
-  if (!varying()) return part_radiance(point.part);
-  return point.spectrum->emission_radiance(point.temperature_K);
+  if (!varying()) return part_radiance(point.site.part);
+  return point.spectrum->emission_radiance(temperature_K(point));
 }
 
 double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point) const {
   if (!thermal_.subsolar || table_.empty() || geography_.bitmap() || geography_.climatology)
     return emission_radiance(point);
-  const auto& row = table_[index(point.part)];
+  const auto& row = table_[index(point.site.part)];
   const double last = static_cast<double>(row.size() - 1);
-  const double u = std::clamp((point.temperature_K - table_T0_) / table_dT_, 0.0, last);
+  const double u = std::clamp((temperature_K(point) - table_T0_) / table_dT_, 0.0, last);
   const auto k = std::min(static_cast<std::size_t>(u), row.size() - 2);
   return row[k] + (u - static_cast<double>(k)) * (row[k + 1] - row[k]);
 }

@@ -34,12 +34,13 @@ struct SurfaceSite {
   Vec3 normal_body = Vec3::UnitZ();
 };
 
-// What the surface is at a site: its material and temperature, the maps and
-// the thermal model read once (SurfaceModel::at).
+// What the surface is at a site (SurfaceModel::at): its material from the
+// maps, and where it is for its temperature (SurfaceModel::temperature_K),
+// which only self-emission needs.
 struct SurfacePoint {
-  std::int32_t part = 0;
+  SurfaceSite site;
   const SurfaceSpectrum* spectrum = nullptr;
-  double temperature_K = 0.0;
+  double latitude_deg = 0.0, longitude_deg = 0.0;  // central bodies with maps or a climatology
 };
 
 // A central body's coordinates and the maps read at a point.
@@ -70,8 +71,10 @@ class SurfaceModel {
                Geography geography, const radiometry::SpectralView& view, std::int64_t temperature_table_size);
   const PartSurface& part(std::int32_t i) const { return parts_[index(i)]; }
   std::size_t part_count() const { return parts_.size(); }
-  // The material (the map's in bitmap mode) and temperature at a site.
+  // The material at a site (the map's in bitmap mode).
   SurfacePoint at(const SurfaceSite& site) const;
+  // The temperature there (the thermal model or the climatology).
+  double temperature_K(const SurfacePoint& point) const;
   // Some part (or map class) reflects light in the band.
   bool reflects() const { return reflects_; }
   bool reflects(const SurfacePoint& point) const { return self_radiance_.empty() && point.spectrum->reflects(); }
@@ -87,6 +90,9 @@ class SurfaceModel {
   void add_emission(const SurfacePoint& point, std::vector<double>& out) const;
   double emission_radiance(const SurfacePoint& point) const;
   double emission_radiance_interpolated(const SurfacePoint& point) const;
+  // At least emission_radiance and emission_radiance_interpolated anywhere
+  // on the surface (infinity for a tabulated radiance).
+  double emission_bound() const { return emission_bound_; }
   // plain(): the effective radiance of a whole part.
   double part_radiance(std::int32_t part) const { return part_radiance_[index(part)]; }
   const Geography& geography() const { return geography_; }
@@ -100,7 +106,8 @@ class SurfaceModel {
   const radiometry::SpectralView* view_;
   bool reflects_ = false;
   std::vector<double> part_radiance_;
-  double table_T0_ = 0, table_dT_ = 1;
+  double table_T0_ = 0, table_dT_ = 0;
+  double emission_bound_ = 0;
   std::vector<std::vector<double>> table_;  // per part, L at T0 + k dT
 };
 

@@ -74,6 +74,7 @@
 //    after it this overstates how fast the temperature changes.
 #pragma once
 #include <Eigen/Core>
+#include <algorithm>
 
 #include "core/time.hpp"
 #include "universe/surface_climatology.hpp"
@@ -176,6 +177,9 @@ class ClimatologyInstant {
   double temperature_K(universe::SurfaceKind kind, double latitude_deg, double longitude_deg,
                        const DiurnalShape& shape = {}) const;
   const CalendarInstant& calendar() const { return calendar_; }
+  // No temperature_K of this instant exceeds it: the day's greatest t_max
+  // (the diurnal cycle stays within t_min..t_max).
+  double hottest_K() const { return std::max(land_.hottest_K(), water_.hottest_K()); }
 
  private:
   universe::ClimatologyDay land_, water_;

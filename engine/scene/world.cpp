@@ -16,6 +16,10 @@ namespace eoir::scene {
 namespace {
 using universe::ObjectKind;
 
+// Relative size below which a sample's self-emission is left out beside its
+// reflected light (WorldObject::effective_radiance).
+constexpr double kNegligibleEmission = 1e-10;
+
 // True if a sphere (centre in sensor body axes, radius) lies wholly outside
 // the pyramid of the sample grid (field of view plus guard band).
 bool outside_view(const Vec3& centre_body, double radius, const geometry::SampleGrid& grid) {
@@ -302,7 +306,7 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
                                        bool interpolated) const {
   if (surface->plain()) return surface->part_radiance(part);
   const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
-  double L = interpolated ? surface->emission_radiance_interpolated(point) : surface->emission_radiance(point);
+  double reflected = 0;
   if (surface->reflects(point)) {
     const Vec3 p = to_frame(point_body_m);
     thread_local std::vector<double> E;  // per-sample scratch: no allocation per call
@@ -310,9 +314,14 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
     const SurfaceSpectrum& s = *point.spectrum;
     add_reflected_irradiance(p, placed.body_to_frame * normal_body, -p.normalized(), s.brdf(), false, E);
     for (std::size_t i = 0; i < E.size(); ++i) E[i] *= s.srf()[i];
-    L += world_->view.spectral.integrate(E);
+    reflected = world_->view.spectral.integrate(E);
   }
-  return L;
+  // Self-emission that cannot reach kNegligibleEmission of the reflected
+  // light (a visible band by day: B(0.75 um, 380 K) ~ 1e-22 of the Sun's) is
+  // left out: it would change the sum by less than that, relative.
+  if (reflected > surface->emission_bound() / kNegligibleEmission) return reflected;
+  return (interpolated ? surface->emission_radiance_interpolated(point) : surface->emission_radiance(point)) +
+         reflected;
 }
 
 double WorldObject::patch_radiance(std::int32_t patch) const {

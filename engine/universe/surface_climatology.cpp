@@ -196,6 +196,12 @@ DailyExtremes ClimatologyTable::at(double latitude_deg, double day_of_year) cons
   return day(day_of_year).at(latitude_deg);
 }
 
+double ClimatologyDay::hottest_K() const {
+  double t = 0.0;
+  for (const DailyExtremes& b : bands_) t = std::max(t, b.t_max_K);
+  return t;
+}
+
 DailyExtremes ClimatologyDay::at(double latitude_deg) const {
   require_finite(latitude_deg, "latitude_deg");
   if (latitude_deg < -90.0 || latitude_deg > 90.0)

@@ -53,6 +53,8 @@ class ClimatologyDay {
   // Linear in latitude between band centres, the end bands held beyond
   // them; throws out_of_range for a non-finite latitude or one outside [-90, 90].
   DailyExtremes at(double latitude_deg) const;
+  // The greatest t_max_K of any band (at() never exceeds it).
+  double hottest_K() const;
 
  private:
   friend class ClimatologyTable;

@@ -242,3 +242,40 @@ TEST(World, ErrorBudgetOutsideItsRangeIsRefusedNamingIt) {
     }
   }
 }
+
+// The emission bound (SurfaceModel::emission_bound) is at least the surface's
+// self-emission everywhere on the Earth (climatology temperatures, bitmap
+// materials), in the visible and in 8-12 um; by day in 0.45-0.75 um it is
+// below 1e-10 of the sunlit radiance, so WorldObject::effective_radiance
+// leaves the emission out there (changing the sum by less than 1e-10).
+TEST(World, EmissionBoundHoldsOverTheEarth) {
+  for (const bool visible : {true, false}) {
+    auto e = geo_engine();
+    e->add_object(ObjectKind::central_body, "Moon");
+    e->set_property("Sensor", "scene_mode", Value(std::string("bitmap")));
+    if (visible) {
+      e->set_property("Sensor", "band_low_um", Value(0.45));
+      e->set_property("Sensor", "band_high_um", Value(0.75));
+    }
+    const auto world = e->world("Sensor");
+    const eoir::scene::WorldObject& earth = *world->find("Earth");
+    const eoir::scene::SurfaceModel& s = *earth.surface;
+    const double a = 6378137.0, c = 6356752.314245;  // WGS84
+    const double bound = s.emission_bound();
+    ASSERT_TRUE(std::isfinite(bound) && bound > 0);
+    double brightest = 0;
+    for (double lat = -89.5; lat < 90; lat += 1.0)
+      for (double lon = -179.5; lon < 180; lon += 1.0) {
+        const double f = lat * M_PI / 180, l = lon * M_PI / 180;
+        const Eigen::Vector3d p(a * std::cos(f) * std::cos(l), a * std::cos(f) * std::sin(l), c * std::sin(f));
+        const Eigen::Vector3d n = earth.normal_at(0, p);
+        const eoir::scene::SurfacePoint point = s.at(eoir::scene::SurfaceSite{0, p, n});
+        ASSERT_LE(s.emission_radiance(point), bound) << lat << " " << lon;
+        brightest = std::max(brightest, earth.effective_radiance(0, p, n));
+      }
+    if (visible)
+      EXPECT_LT(bound, 1e-10 * brightest);
+    else
+      EXPECT_GT(bound, 1e-3 * brightest);  // 8-12 um: the emission is the signal, never left out
+  }
+}

@@ -32,7 +32,7 @@ rm -f "$results"/*.json
   echo "cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
   echo "mem=$(free -g | awk '/^Mem:/ {print $2 " GiB"}')"
   echo "uptime_before=$(uptime)"
-  echo "commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)$(git -C "$root" diff --quiet 2>/dev/null || echo ' (+ uncommitted changes)')"
+  echo "commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)$(git -C "$root" diff --quiet -- . ':!tests/bench/results' 2>/dev/null || echo ' (+ uncommitted changes)')"
   echo "build_type=$(grep -m1 '^CMAKE_BUILD_TYPE' "$build/CMakeCache.txt" | cut -d= -f2)"
   echo "compiler=$(grep -m1 '^CMAKE_CXX_COMPILER:' "$build/CMakeCache.txt" | cut -d= -f2) $(grep -h -m1 'CMAKE_CXX_COMPILER_VERSION' "$build/CMakeFiles/"*/CMakeCXXCompiler.cmake 2>/dev/null | head -1 | cut -d'"' -f2)"
 } > "$results/machine.txt"

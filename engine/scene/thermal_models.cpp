@@ -21,8 +21,8 @@ constexpr double kHoursPerDay = 24.0;
 void require_range(double value, double lo, double hi, std::string_view field) {
   require_finite(value, field);
   if (value < lo || value > hi)
-    throw Error(Status::out_of_range, std::string(field) + ": " + std::to_string(value) + " outside [" + std::to_string(lo) + ", " +
-                                          std::to_string(hi) + "]");
+    throw Error(Status::out_of_range, std::string(field) + ": " + std::to_string(value) + " outside [" +
+                                          std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
 
 // x wrapped into [0, period).
@@ -177,8 +177,8 @@ void DiurnalCycle::solve_night() {
   const double r = q_h / night_h;
   double x = 1.0 / r;
   for (int i = 0; i < 100; ++i) {
-    const double e = std::exp(-x);               // < 0.14 for x > 2: 1 - e has no cancellation
-    const double step = (1.0 - e - r * x) / (e - r);  // F / F', F' < 0 right of x*
+    const double e_minus_1 = std::expm1(-x);  // 1 - exp(-x) without cancellation at small x
+    const double step = (-e_minus_1 - r * x) / (1.0 + e_minus_1 - r);  // F / F', F' < 0 right of x*
     x -= step;
     if (!(step > 1e-15 * x)) break;
   }

@@ -21,7 +21,8 @@ double SpectralView::integrate(const std::vector<double>& spectral_values) const
 
 void SpectralView::add_gray_body_spectrum(double temperature_K, double reflectance, std::vector<double>& out) const {
   const double emissivity = emissivity_from_reflectance(reflectance);
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] += emissivity * planck_radiance(sample_wavelengths_um[i], temperature_K);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] += emissivity * planck_radiance(sample_wavelengths_um[i], temperature_K);
 }
 
 double SpectralView::gray_body_radiance(double temperature_K, double reflectance) const {

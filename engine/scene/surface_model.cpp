@@ -57,7 +57,8 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
     for (const PartSurface& s : parts_) {
       std::vector<double> row(static_cast<std::size_t>(n + 1));
       for (std::int64_t k = 0; k <= n; ++k)
-        row[static_cast<std::size_t>(k)] = s.spectrum->emission_radiance(table_T0_ + static_cast<double>(k) * table_dT_);
+        row[static_cast<std::size_t>(k)] =
+            s.spectrum->emission_radiance(table_T0_ + static_cast<double>(k) * table_dT_);
       table_.push_back(std::move(row));
     }
   }

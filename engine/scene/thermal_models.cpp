@@ -221,7 +221,8 @@ double surface_temperature_K(const universe::SurfaceClimatology& climatology, un
 double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
                              double latitude_deg, double longitude_deg, const EngineTime& time,
                              const DiurnalShape& shape) {
-  return ClimatologyInstant(climatology, calendar_instant(time)).temperature_K(kind, latitude_deg, longitude_deg, shape);
+  const ClimatologyInstant now(climatology, calendar_instant(time));
+  return now.temperature_K(kind, latitude_deg, longitude_deg, shape);
 }
 
 ClimatologyInstant::ClimatologyInstant(const universe::SurfaceClimatology& climatology,

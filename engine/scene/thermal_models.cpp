@@ -189,17 +189,23 @@ void DiurnalCycle::solve_night() {
 double DiurnalCycle::temperature_K(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
                                    double local_solar_time_h, const DiurnalShape& shape) {
   DiurnalCycle cycle(t_min_K, t_max_K, latitude_deg, declination_deg, shape, DayOnly{});
-  require_finite(local_solar_time_h, "local_solar_time_h");
-  if (cycle.sunrise_h_ + wrap(local_solar_time_h - cycle.sunrise_h_, kHoursPerDay) > cycle.sunset_h_)
-    cycle.solve_night();  // only a night-time point needs the decay
-  return cycle.temperature_K(local_solar_time_h);
+  const double u = cycle.from_sunrise_h(local_solar_time_h);
+  if (u > cycle.sunset_h_) cycle.solve_night();  // only a night-time point needs the decay
+  return cycle.temperature_at_K(u);
 }
 
 double DiurnalCycle::temperature_K(double local_solar_time_h) const {
+  return temperature_at_K(from_sunrise_h(local_solar_time_h));
+}
+
+double DiurnalCycle::from_sunrise_h(double local_solar_time_h) const {
   require_finite(local_solar_time_h, "local_solar_time_h");
+  return sunrise_h_ + wrap(local_solar_time_h - sunrise_h_, kHoursPerDay);  // [t_sr, t_sr + 24)
+}
+
+double DiurnalCycle::temperature_at_K(double u) const {
   const double range_K = t_max_K_ - t_min_K_;
   if (range_K <= 0.0) return t_min_K_;
-  const double u = sunrise_h_ + wrap(local_solar_time_h - sunrise_h_, kHoursPerDay);  // [t_sr, t_sr + 24)
   if (u <= sunset_h_) return t_min_K_ + range_K * std::cos(pi * (u - time_of_max_h_) / half_period_h_);
   const double since_sunset_h = u - sunset_h_;
   if (linear_night_) {

@@ -151,6 +151,8 @@ class DiurnalCycle {
   DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
                const DiurnalShape& shape, DayOnly);
   void solve_night();
+  double from_sunrise_h(double local_solar_time_h) const;  // the local time in [t_sr, t_sr + 24) h
+  double temperature_at_K(double from_sunrise_h) const;
 
   double t_min_K_, t_max_K_;
   double sunrise_h_ = 6.0, sunset_h_ = 18.0, time_of_max_h_ = 13.5, half_period_h_ = 15.0;
@@ -176,7 +178,6 @@ class ClimatologyInstant {
   // surface_temperature_K at a geodetic latitude/longitude (deg).
   double temperature_K(universe::SurfaceKind kind, double latitude_deg, double longitude_deg,
                        const DiurnalShape& shape = {}) const;
-  const CalendarInstant& calendar() const { return calendar_; }
   // No temperature_K of this instant exceeds it: the day's greatest t_max
   // (the diurnal cycle stays within t_min..t_max).
   double hottest_K() const { return std::max(land_.hottest_K(), water_.hottest_K()); }

@@ -86,9 +86,10 @@ double relative_sum(const std::vector<double>& a, const std::vector<double>& ref
 // Renders the sensor twice to warm up (static metrics, FFT plans, and the
 // engine's two alternating sets of frame buffers: a frame's buffers are
 // reused two frames later, once the host has let go of that frame), then once
-// per iteration: the steady-state frame of a sequence. Reports the stage split averaged over the frames and the
-// mean wall-clock frame time against the machine's floor for that frame size
-// (machine_floor.hpp, measured in this process before the frames).
+// per iteration: the steady-state frame of a sequence. Reports the stage
+// split averaged over the frames and the mean wall-clock frame time against
+// the machine's floor for that frame size (machine_floor.hpp, measured in
+// this process before the frames).
 void time_frames(benchmark::State& state, eoir::Engine& engine, long pixels = 0) {
   engine.render("Sensor");
   engine.render("Sensor");

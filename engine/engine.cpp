@@ -223,10 +223,14 @@ const Frame& Engine::render(const std::string& name) {
   frame->sensor_model = sensor_model(name);
   frame->world = world(name);
   const universe::SensorParameters& own = frame->sensor_model->parameters;
-  if (own.fidelity.error_budget > 0)
-    adaptive_frame(name, scene::choose_fidelity(*frame->world, universe_, own.spectral_intervals, options_.threads),
-                   *frame);
-  else
+  if (own.fidelity.error_budget > 0) {
+    CachedAdaptive& cached = adaptive_[name];
+    if (cached.chosen_for != frame->world) {
+      cached.choice = scene::choose_fidelity(*frame->world, universe_, own.spectral_intervals, options_.threads);
+      cached.chosen_for = frame->world;
+    }
+    adaptive_frame(name, cached.choice, *frame);
+  } else
     frame->fidelity = scene::fixed_fidelity(own.fidelity, own.spectral_intervals);
   const sensor::SensorModel& model = *frame->sensor_model;
   const scene::World& w = *frame->world;

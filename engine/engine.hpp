@@ -122,6 +122,10 @@ class Engine {
     EngineTime time;
     std::shared_ptr<const sensor::SensorModel> model;
     std::shared_ptr<const scene::World> world;
+    // The choice made on the sensor's own world `chosen_for`: a function of
+    // that world alone, so rendering the same world again reuses it.
+    std::shared_ptr<const scene::World> chosen_for;
+    scene::FidelityChoice choice;
   };
   // The model and world of `choice` for `sensor` at the engine time.
   void adaptive_frame(const std::string& sensor, const scene::FidelityChoice& choice, Frame& frame);

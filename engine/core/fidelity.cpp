@@ -46,6 +46,11 @@ const std::vector<Spec>& fidelity_properties() {
     t.push_back(integer_property<F>("samples_per_pixel", "count",
                                     "Scene samples per pixel along each axis (spec 4.1.3: 4)",
                                     [](F& f) -> auto& { return f.samples_per_pixel; }, Range{1, 16}, true));
+    t.push_back(integer_property<F>("edge_supersampling", "count",
+                                    "Sub-samples per axis of each scene sample at a silhouette edge (its hit and a "
+                                    "neighbour's differ in object or part): the sample takes their mean, so edge "
+                                    "pixels are covered as by samples_per_pixel times this. 1: off",
+                                    [](F& f) -> auto& { return f.edge_supersampling; }, Range{1, 16}, true));
     t.push_back(number_property<F>("central_body_patch_size_m", "m",
                                    "Default patch edge of central bodies at the Earth's radius, scaled with the "
                                    "radius (spec 4.2.3: 785 km)",

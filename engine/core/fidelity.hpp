@@ -50,6 +50,10 @@ struct Fidelity {
   // Scene generator (spec 4.1-4.2).
   SceneMode scene_mode = SceneMode::coarse;
   std::int64_t samples_per_pixel = 4;  // scene samples per pixel and axis (spec 4.1.3: 4)
+  // Sub-samples per axis of each scene sample at a silhouette edge (its hit
+  // and a 4-neighbour's differ in object or part): the sample takes their
+  // mean, so edge pixels are covered as by samples_per_pixel times this. 1: off.
+  std::int64_t edge_supersampling = 1;
   // Default patch edge where an object's patch_size_m is 0 (spec 4.1.5.2):
   // central bodies scaled from the Earth's 785 km (spec 4.2.3), other objects
   // their largest part's diameter divided by this.

@@ -5,10 +5,39 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
 namespace eoir {
+
+// Runs worker(t) for t in [0, count) on count threads, the calling thread
+// taking t = 0, and rethrows on the calling thread the first exception a
+// worker threw once all have finished (none escapes a worker thread).
+template <class F>
+void run_workers(unsigned count, F&& worker) {
+  if (count <= 1) {
+    worker(0u);
+    return;
+  }
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto guarded = [&](unsigned t) {
+    try {
+      worker(t);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  pool.reserve(count - 1);
+  for (unsigned t = 1; t < count; ++t) pool.emplace_back(guarded, t);
+  guarded(0u);
+  for (auto& th : pool) th.join();
+  if (failure) std::rethrow_exception(failure);
+}
 
 // threads 0 = all cores; small loops (fewer than min_per_thread iterations a
 // thread) run on fewer threads.
@@ -18,16 +47,7 @@ void parallel_ranges(std::int64_t n, unsigned threads, F&& fn, std::int64_t min_
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   const auto by_size = static_cast<unsigned>(std::max<std::int64_t>(1, n / std::max<std::int64_t>(1, min_per_thread)));
   const unsigned count = std::min(threads, by_size);
-  if (count <= 1) {
-    fn(std::int64_t{0}, n);
-    return;
-  }
-  std::vector<std::thread> pool;
-  pool.reserve(count - 1);
-  for (unsigned t = 1; t < count; ++t)
-    pool.emplace_back([&fn, n, t, count] { fn(n * t / count, n * (t + 1) / count); });
-  fn(std::int64_t{0}, n / count);
-  for (auto& th : pool) th.join();
+  run_workers(count, [&fn, n, count](unsigned t) { fn(n * t / count, n * (t + 1) / count); });
 }
 
 }  // namespace eoir

@@ -24,6 +24,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "core/parallel_ranges.hpp"
 #include "geometry/scene_geometry.hpp"
 #include "geometry/shape_intersect.hpp"
 
@@ -274,13 +275,7 @@ void for_each_ray(std::size_t count, unsigned threads, const Body& body) {
       for (std::size_t i = b * kBlock; i < end; ++i) body(i, rc, rh);
     }
   };
-  if (threads == 1) {
-    worker();
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (unsigned k = 0; k < threads; ++k) pool.emplace_back(worker);
-  for (auto& th : pool) th.join();
+  run_workers(threads, [&](unsigned) { worker(); });
 }
 }  // namespace
 
@@ -460,15 +455,7 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
         }
     }
   };
-  const auto blocks = static_cast<unsigned>(std::min<std::int64_t>(threads, blocks_x * blocks_y));
-  if (blocks <= 1) {
-    worker();
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (unsigned k = 1; k < blocks; ++k) pool.emplace_back(worker);
-  worker();
-  for (auto& th : pool) th.join();
+  run_workers(static_cast<unsigned>(std::min<std::int64_t>(threads, blocks_x * blocks_y)), [&](unsigned) { worker(); });
 }
 
 bool RayCaster::occluded(const Vec3& d, double range_m, const RayQuery& query) const {

@@ -5,19 +5,19 @@
 
 namespace eoir::geometry {
 
-double SampleGrid::tan_x(std::int64_t c) const {
-  const double x_cm = (0.5 * static_cast<double>(width()) - static_cast<double>(c) - 0.5) * pitch_x_cm /
+double SampleGrid::tan_x(double c) const {
+  const double x_cm = (0.5 * static_cast<double>(width()) - c - 0.5) * pitch_x_cm /
                       static_cast<double>(per_pixel);
   return x_cm / focal_length_cm;
 }
 
-double SampleGrid::tan_y(std::int64_t r) const {
-  const double y_cm = (0.5 * static_cast<double>(height()) - static_cast<double>(r) - 0.5) * pitch_y_cm /
+double SampleGrid::tan_y(double r) const {
+  const double y_cm = (0.5 * static_cast<double>(height()) - r - 0.5) * pitch_y_cm /
                       static_cast<double>(per_pixel);
   return y_cm / focal_length_cm;
 }
 
-Eigen::Vector3d SampleGrid::direction_body(std::int64_t c, std::int64_t r) const {
+Eigen::Vector3d SampleGrid::direction_body(double c, double r) const {
   return Eigen::Vector3d(tan_x(c), tan_y(r), 1.0).normalized();
 }
 

@@ -32,11 +32,12 @@ struct SampleGrid {
   std::int64_t field_width() const { return pixels_x * per_pixel; }   // samples inside the field
   std::int64_t field_height() const { return pixels_y * per_pixel; }
   // Tangents of the sample's direction (body x/z and y/z) for sample (c, r) of
-  // the full grid including the guard band.
-  double tan_x(std::int64_t c) const;
-  double tan_y(std::int64_t r) const;
+  // the full grid including the guard band; fractional coordinates lie
+  // within a sample's footprint (c +- 1/2, r +- 1/2).
+  double tan_x(double c) const;
+  double tan_y(double r) const;
   // Unit direction in the sensor body frame.
-  Eigen::Vector3d direction_body(std::int64_t c, std::int64_t r) const;
+  Eigen::Vector3d direction_body(double c, double r) const;
   // Solid angle of one sample at (c, r) (sr), for display irradiance.
   double sample_solid_angle_sr(std::int64_t c, std::int64_t r) const;
   // The smallest angle between neighbouring samples (rad), on the axis.

@@ -233,11 +233,12 @@ FidelityChoice choose_fidelity(const World& world, const universe::Universe& uni
   fewest = std::min<std::int64_t>(fewest, 16);
   if (!extended) {
     f.samples_per_pixel = 1;  // point sources and the sky: no edge to sample
+    f.edge_supersampling = 1;
     return c;
   }
   std::int64_t stride = 1, columns = 1;
   const std::vector<ProbeSample> probe = probe_field(world, stride, columns, threads);
-  double sum_L2 = 0, sum_edge2 = 0;
+  double sum_L2 = 0, sum_edge2 = 0, crossings = 0;
   for (std::size_t i = 0; i < probe.size(); ++i) {
     const ProbeSample& s = probe[i];
     sum_L2 += s.radiance * s.radiance;
@@ -245,6 +246,7 @@ FidelityChoice choose_fidelity(const World& world, const universe::Universe& uni
       if (probe[j].object != s.object || probe[j].part != s.part) {
         const double dL = probe[j].radiance - s.radiance;
         sum_edge2 += dL * dL;
+        crossings += 1;
       }
     };
     const auto column = static_cast<std::int64_t>(i) % columns;
@@ -253,11 +255,17 @@ FidelityChoice choose_fidelity(const World& world, const universe::Universe& uni
   }
   if (!(sum_L2 > 0)) {
     f.samples_per_pixel = fewest;
+    f.edge_supersampling = 1;
     return c;
   }
   // Each probe link crossing an edge stands for `stride` edge pixels among stride^2 pixels per probe.
   const double edge_fraction = sum_edge2 / (static_cast<double>(stride) * sum_L2);
-  const auto sampling_error = [&](std::int64_t n) { return edge_coverage_rms(n) * std::sqrt(edge_fraction); };
+  const double edge_pixels = std::min(1.0, crossings / (static_cast<double>(stride) * static_cast<double>(probe.size())));
+  // n x n samples with s x s sub-samples at silhouette edges cover an edge
+  // pixel as (n s)^2 samples do (scene/scene_generator.cpp).
+  const auto sampling_error = [&](std::int64_t n, std::int64_t s) {
+    return edge_coverage_rms(n * s) * std::sqrt(edge_fraction);
+  };
   // Coarse-mode error of patches of edge s on central bodies (spec 4.2.1): a
   // sample takes the radiance of its patch centre, offset from it by u, v
   // uniform in [-s/2, s/2] along the surface. To first order the mean square
@@ -285,29 +293,32 @@ FidelityChoice choose_fidelity(const World& world, const universe::Universe& uni
     // The body's share of the frame: its probes' mean square error times their count.
     return used ? std::sqrt(e2 / static_cast<double>(used) * static_cast<double>(on_bodies.size()) / sum_L2) : 0.0;
   };
-  // Fewest samples per pixel keeping the total within the budget, 0 if none.
-  const auto samples_for = [&](double other_error) -> std::int64_t {
-    const double left2 = budget * budget - spent2 - other_error * other_error;
-    if (left2 <= 0) return 0;
-    for (std::int64_t n = fewest; n <= 16; ++n)
-      if (sampling_error(n) <= std::sqrt(left2)) return n;
-    return 0;
-  };
-  // Relative cost of a frame: n^2 samples, shaded each in smooth mode (about
-  // 4 times a coarse frame's per sample: tests/bench/results/fidelity_sweep.md).
-  constexpr double smooth_cost_factor = 4.0;
+  // Relative cost of a frame per pixel: n^2 samples plus s^2 sub-samples on
+  // each sample at an edge (about 3 n per edge pixel: the samples an edge
+  // crosses and their neighbours across it), shaded each in smooth mode at
+  // about 1.3 times a coarse sample's cost (tests/bench/results/fidelity_sweep.md).
+  constexpr double smooth_cost_factor = 1.3;
   double best_cost = std::numeric_limits<double>::infinity();
   const auto consider = [&](SceneMode mode, double patch_m, double e_patch) {
-    const std::int64_t n = samples_for(e_patch);
-    if (n == 0) return;
-    const double cost = static_cast<double>(n * n) * (mode == SceneMode::coarse ? 1.0 : smooth_cost_factor);
-    if (cost >= best_cost) return;
-    best_cost = cost;
-    f.scene_mode = mode;
-    f.central_body_patch_size_m = patch_m;
-    f.samples_per_pixel = n;
-    c.patch_error = e_patch;
-    c.sampling_error = sampling_error(n);
+    const double left2 = budget * budget - spent2 - e_patch * e_patch;
+    if (left2 <= 0) return;
+    for (std::int64_t n = fewest; n <= 16; ++n)
+      for (std::int64_t s = 1; s <= 16; ++s) {
+        if (sampling_error(n, s) > std::sqrt(left2)) continue;
+        const auto N = static_cast<double>(n), S = static_cast<double>(s);
+        const double cost = (N * N + (s > 1 ? 3.0 * N * edge_pixels * S * S : 0.0)) *
+                            (mode == SceneMode::coarse ? 1.0 : smooth_cost_factor);
+        if (cost < best_cost) {
+          best_cost = cost;
+          f.scene_mode = mode;
+          f.central_body_patch_size_m = patch_m;
+          f.samples_per_pixel = n;
+          f.edge_supersampling = s;
+          c.patch_error = e_patch;
+          c.sampling_error = sampling_error(n, s);
+        }
+        break;  // more sub-samples only cost more
+      }
   };
   if (own.scene_mode == SceneMode::bitmap) {  // the surface map's materials: a model of its own, kept
     consider(SceneMode::bitmap, own.central_body_patch_size_m, 0.0);
@@ -320,8 +331,9 @@ FidelityChoice choose_fidelity(const World& world, const universe::Universe& uni
   if (!std::isfinite(best_cost)) {  // beyond the model's reach: the finest settings it knows
     f.scene_mode = own.scene_mode == SceneMode::bitmap ? SceneMode::bitmap : SceneMode::smooth;
     f.samples_per_pixel = 16;
+    f.edge_supersampling = 16;
     c.patch_error = 0;
-    c.sampling_error = sampling_error(16);
+    c.sampling_error = sampling_error(16, 16);
   }
   return c;
 }

@@ -5,17 +5,17 @@
 // the relative RMS error of the pixel means, and the terms add in
 // quadrature: knobs cheap to tighten (spectral intervals, point-source
 // patches) get a tenth of the budget each, the scene grid (samples per pixel
-// and scene mode, cost ~ n^2, smooth about 4 times coarse) the rest, at the
-// cheapest pair that fits:
+// n, edge sub-samples s and scene mode; cost ~ n^2 + 3 n s^2 per edge pixel,
+// smooth about 1.3 times coarse) the rest, at the cheapest setting that fits:
 //  - spectral intervals: the error of the band-integral rule (spec 5.3,
 //    eq. 48; radiometry/band_integral.hpp) on Planck spectra at the
 //    temperatures in the field, computed exactly against the series integral;
-//  - samples per pixel (spec 4.1.3, 5.2 eqs. 13-14): the coverage error of
-//    n x n point samples on a pixel crossed by a silhouette edge, RMS
-//    1 / (n sqrt 12) of the contrast (an edge parallel to the sample rows;
-//    any other edge does better), summed over the edges a probe of the
-//    field finds; and no object imaged extended may turn into a point source
-//    (spec 4.1.6.1);
+//  - samples per pixel and edge sub-samples (spec 4.1.3, 5.2 eqs. 13-14):
+//    the coverage error of n x n point samples, each refined to s x s at a
+//    silhouette edge, on a pixel crossed by the edge: RMS 1 / (n s sqrt 12)
+//    of the contrast (an edge parallel to the sample rows; any other edge
+//    does better), summed over the edges a probe of the field finds; and no
+//    object imaged extended may turn into a point source (spec 4.1.6.1);
 //  - coarse patches of central bodies (spec 4.2.1, 4.1.5.2): a sample takes
 //    the radiance of its patch centre, off by |grad L| s / sqrt 12 RMS on a
 //    patch of edge s, estimated from the radiance s / 2 away on the surface

@@ -23,12 +23,16 @@ struct ObjectLight {
   Vec3 position_m = Vec3::Zero();     // observer-relative
   double radius_m = 0.0;              // volumetric mean radius of its true shape
   double bounding_radius_m = 0.0;
+  bool area_source = false;           // its tessellation can serve eq. 8 (resolved objects)
+};
+
+// The spectra of an eq. 7 source (WorldObject::light_spectra, made on first use).
+struct LightSpectra {
   // E_sun(lambda) SRF(lambda) 2 / (3 pi) at the source, times its visible
   // fraction of the Sun: multiply by Phase(psi) dOmega (W cm^-2 sr^-1 um^-1).
   std::vector<double> reflected;
   // Overall emittance times B(T_eff): multiply by dOmega.
   std::vector<double> emitted;
-  bool area_source = false;           // its tessellation can serve eq. 8 (resolved objects)
 };
 
 // The phase function of a Lambertian sphere, eq. 7: (sin psi + (pi - psi)

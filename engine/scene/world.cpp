@@ -264,8 +264,48 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     const Vec3 to_sun = (w.sun.position_m - src.position_m).normalized();
     const double phase = lambertian_sphere_phase(std::acos(std::clamp(-to_sun.dot(I), -1.0, 1.0)));
     const double g = omega * visible * cos_i * brdf.value(I, toward, n);
-    for (std::size_t i = 0; i < count; ++i) out[i] += g * (src.reflected[i] * phase + src.emitted[i]);
+    const LightSpectra& spectra = w.objects[static_cast<std::size_t>(src.object)]->light_spectra();
+    for (std::size_t i = 0; i < count; ++i) out[i] += g * (spectra.reflected[i] * phase + spectra.emitted[i]);
   }
+}
+
+const LightSpectra& WorldObject::light_spectra() const {
+  std::call_once(lit_, [this] {
+    const World& w = *world_;
+    const std::size_t n = w.spectral().sample_wavelengths_um.size();
+    std::vector<double> srf(n, 0.0), e(n);
+    std::vector<double>& emitted = light_spectra_.emitted;
+    emitted.assign(n, 0.0);
+    double total_area = 0;
+    const auto add = [&](const SurfaceSite& site, double area) {
+      const SurfacePoint point = surface->at(site);
+      if (surface->reflects(point))
+        for (std::size_t i = 0; i < n; ++i) srf[i] += area * point.spectrum->srf()[i];
+      std::fill(e.begin(), e.end(), 0.0);
+      surface->add_emission(point, e);
+      for (std::size_t i = 0; i < n; ++i) emitted[i] += area * e[i];
+      total_area += area;
+    };
+    if (surface->varying()) {
+      for (const geometry::Patch& p : tessellation().patches)
+        add(SurfaceSite{p.part, p.centre_body_m, p.normal_body}, p.area_m2);
+    } else {
+      for (std::size_t p = 0; p < placed.parts.size(); ++p)
+        add(SurfaceSite{static_cast<std::int32_t>(p), Vec3::Zero(), Vec3::UnitZ()},
+            geometry::shape_surface_area_m2(placed.parts[p].geom));
+    }
+    if (total_area > 0)
+      for (std::size_t i = 0; i < n; ++i) {
+        srf[i] /= total_area;
+        emitted[i] /= total_area;
+      }
+    const double fraction = sun_fraction(placed.position_m);
+    const double sun_omega = universe::sun_projected_solid_angle_sr((w.sun.position_m - placed.position_m).norm());
+    light_spectra_.reflected.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      light_spectra_.reflected[i] = w.sun.radiance[i] * sun_omega * fraction * srf[i] * 2.0 / (3.0 * constants::pi);
+  });
+  return light_spectra_;
 }
 
 const std::vector<WorldObject::AreaSourcePatch>& WorldObject::area_source(std::size_t light) const {
@@ -399,7 +439,7 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
   const double r2 = range_m * range_m;
   if (!detailed_point_source && light_ >= 0) {
     // Eq. 7 toward the observer: [E_sun SRF 2/(3 pi) Phase(psi) + eps B(T)] dOmega.
-    const ObjectLight& self = w.lights[static_cast<std::size_t>(light_)];
+    const LightSpectra& self = light_spectra();
     const double omega = constants::pi * volumetric_radius_m * volumetric_radius_m / r2;
     const Vec3 to_sun = (w.sun.position_m - placed.position_m).normalized();
     const Vec3 to_observer = -placed.position_m / range_m;
@@ -589,7 +629,6 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   }
 
   // 4. Every object but the Sun as a light source (eq. 7; eq. 8 where large).
-  const std::size_t n = static_cast<std::size_t>(band.intervals);
   for (const auto& wp : world->objects) {
     WorldObject& w = *wp;
     if (w.id == world->sun.object) continue;
@@ -599,38 +638,6 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     light.radius_m = w.volumetric_radius_m;
     light.bounding_radius_m = w.bounding_radius_m;
     light.area_source = true;
-    // Overall (area-weighted) SRF and emission: per patch where the
-    // temperature varies, per part otherwise.
-    std::vector<double> srf(n, 0.0), emitted(n, 0.0);
-    double total_area = 0;
-    auto add = [&](const SurfaceSite& site, double area) {
-      const SurfacePoint point = w.surface->at(site);
-      if (w.surface->reflects(point))
-        for (std::size_t i = 0; i < n; ++i) srf[i] += area * point.spectrum->srf()[i];
-      std::vector<double> e(n, 0.0);
-      w.surface->add_emission(point, e);
-      for (std::size_t i = 0; i < n; ++i) emitted[i] += area * e[i];
-      total_area += area;
-    };
-    if (w.surface->varying()) {
-      for (const geometry::Patch& p : w.tessellation().patches)
-        add(SurfaceSite{p.part, p.centre_body_m, p.normal_body}, p.area_m2);
-    } else {
-      for (std::size_t p = 0; p < w.placed.parts.size(); ++p)
-        add(SurfaceSite{static_cast<std::int32_t>(p), Vec3::Zero(), Vec3::UnitZ()},
-            geometry::shape_surface_area_m2(w.placed.parts[p].geom));
-    }
-    if (total_area > 0)
-      for (std::size_t i = 0; i < n; ++i) {
-        srf[i] /= total_area;
-        emitted[i] /= total_area;
-      }
-    const double fraction = w.sun_fraction(w.placed.position_m);
-    const double sun_omega = universe::sun_projected_solid_angle_sr((world->sun.position_m - w.placed.position_m).norm());
-    light.reflected.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-      light.reflected[i] = world->sun.radiance[i] * sun_omega * fraction * srf[i] * 2.0 / (3.0 * constants::pi);
-    light.emitted = std::move(emitted);
     w.light_ = static_cast<std::int32_t>(world->lights.size());
     world->lights.push_back(std::move(light));
   }

@@ -131,6 +131,11 @@ class WorldObject {
   // Its spectral vector (W cm^-2 um^-1).
   std::vector<double> point_spectral_irradiance() const;
 
+  // This object as a source of eq. 7: its area-weighted SRF and emission
+  // (per patch where the temperature varies, per part otherwise), made on
+  // first use (thread-safe): only frames that light another object read it.
+  const LightSpectra& light_spectra() const;
+
   // Visible fraction of the Sun's disc at a point of this object (umbra 0,
   // penumbra between, sunlight 1) against every other body.
   double sun_fraction(const Vec3& point_frame_m) const;
@@ -158,6 +163,8 @@ class WorldObject {
   mutable std::once_flag tessellated_;
   mutable geometry::Tessellation tessellation_;
   mutable std::unique_ptr<std::atomic<double>[]> patch_cache_;  // NaN until computed
+  mutable std::once_flag lit_;
+  mutable LightSpectra light_spectra_;
   mutable std::mutex area_mutex_;
   mutable std::map<std::size_t, std::vector<AreaSourcePatch>> area_sources_;
 };
@@ -183,7 +190,7 @@ class World {
   const radiometry::SpectralView& spectral() const { return view.spectral; }
   const Fidelity& fidelity() const { return view.fidelity; }
   // Direction of sample (c, r) of the full grid, J2000 axes.
-  Vec3 sample_direction(std::int64_t c, std::int64_t r) const {
+  Vec3 sample_direction(double c, double r) const {
     return observer.body_to_j2000 * view.grid.direction_body(c, r);
   }
   // nullptr if the world holds no object of that name (culled by kind, shape

@@ -60,6 +60,15 @@ def test_adaptive_frame_within_budget_of_the_high_fidelity_frame(scene):
         assert error <= BUDGET
         # The sensor's own settings are unchanged: the choice is the frame's.
         assert e.get(sensor, "samples_per_pixel") == own["samples_per_pixel"]
+        # The choice is kept for its world only: a re-render reuses it, a new
+        # step (set_time builds the world anew) makes the same one again, and
+        # a changed budget makes a new one.
+        assert np.array_equal(render_mean(e, sensor), adaptive) and e.frame_fidelity(sensor) == chosen
+        sc.set_time(sc.times()[0])
+        assert np.array_equal(render_mean(e, sensor), adaptive) and e.frame_fidelity(sensor) == chosen
+        e.set(sensor, "error_budget", 2 * BUDGET)
+        render_mean(e, sensor)
+        assert e.frame_fidelity(sensor)["error_budget"] == 2 * BUDGET
 
         e.set(sensor, "error_budget", 0.0)
         assert np.array_equal(render_mean(e, sensor), before)

@@ -39,15 +39,28 @@ void run_workers(unsigned count, F&& worker) {
   if (failure) std::rethrow_exception(failure);
 }
 
-// threads 0 = all cores; small loops (fewer than min_per_thread iterations a
-// thread) run on fewer threads.
-template <class F>
-void parallel_ranges(std::int64_t n, unsigned threads, F&& fn, std::int64_t min_per_thread = 4096) {
-  if (n <= 0) return;
+// How many ranges parallel_ranges splits [0, n) into: threads (0 = all
+// cores), fewer for small loops (fewer than min_per_thread iterations a thread).
+inline unsigned parallel_range_count(std::int64_t n, unsigned threads, std::int64_t min_per_thread = 4096) {
+  if (n <= 0) return 0;
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   const auto by_size = static_cast<unsigned>(std::max<std::int64_t>(1, n / std::max<std::int64_t>(1, min_per_thread)));
-  const unsigned count = std::min(threads, by_size);
-  run_workers(count, [&fn, n, count](unsigned t) { fn(n * t / count, n * (t + 1) / count); });
+  return std::min(threads, by_size);
+}
+
+// fn(t, begin, end) on range t of parallel_range_count(n, threads,
+// min_per_thread): for results kept per range, in range order.
+template <class F>
+void parallel_indexed_ranges(std::int64_t n, unsigned threads, F&& fn, std::int64_t min_per_thread = 4096) {
+  const unsigned count = parallel_range_count(n, threads, min_per_thread);
+  if (count == 0) return;
+  run_workers(count, [&fn, n, count](unsigned t) { fn(t, n * t / count, n * (t + 1) / count); });
+}
+
+template <class F>
+void parallel_ranges(std::int64_t n, unsigned threads, F&& fn, std::int64_t min_per_thread = 4096) {
+  parallel_indexed_ranges(
+      n, threads, [&fn](unsigned, std::int64_t begin, std::int64_t end) { fn(begin, end); }, min_per_thread);
 }
 
 }  // namespace eoir

@@ -81,15 +81,22 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
     const auto differs = [&](std::size_t a, std::size_t b) {
       return out.hits[a].object_id != out.hits[b].object_id || out.hits[a].part != out.hits[b].part;
     };
+    // The edge samples in grid order, found row block by row block.
+    constexpr std::int64_t rows_per_thread = 64;
+    std::vector<std::vector<std::size_t>> found(parallel_range_count(h, threads, rows_per_thread));
+    parallel_indexed_ranges(h, threads, [&](unsigned t, std::int64_t r0, std::int64_t r1) {
+      std::vector<std::size_t>& mine = found[t];
+      for (std::int64_t r = r0; r < r1; ++r)
+        for (std::int64_t c = 0; c < w; ++c) {
+          const auto i = static_cast<std::size_t>(r * w + c);
+          if ((c > 0 && differs(i, i - 1)) || (c + 1 < w && differs(i, i + 1)) ||
+              (r > 0 && differs(i, i - static_cast<std::size_t>(w))) ||
+              (r + 1 < h && differs(i, i + static_cast<std::size_t>(w))))
+            mine.push_back(i);
+        }
+    }, rows_per_thread);
     std::vector<std::size_t> edges;
-    for (std::int64_t r = 0; r < h; ++r)
-      for (std::int64_t c = 0; c < w; ++c) {
-        const auto i = static_cast<std::size_t>(r * w + c);
-        if ((c > 0 && differs(i, i - 1)) || (c + 1 < w && differs(i, i + 1)) ||
-            (r > 0 && differs(i, i - static_cast<std::size_t>(w))) ||
-            (r + 1 < h && differs(i, i + static_cast<std::size_t>(w))))
-          edges.push_back(i);
-      }
+    for (const auto& f : found) edges.insert(edges.end(), f.begin(), f.end());
     const auto sub = static_cast<std::size_t>(s * s);
     constexpr std::size_t edges_per_batch = 4096;  // bounds the batch's rays and hits
     std::vector<Vec3> directions;

@@ -24,8 +24,8 @@ std::vector<std::uint8_t> compress(std::int64_t n, const Fill& fill, bool agc, s
   double lo = 0, scale = 0;
   if (agc) {
     // Least and greatest value, per range then together.
-    std::vector<std::pair<double, double>> ranges(threads, {INFINITY, -INFINITY});
-    parallel_ranges(n, threads, [&](std::int64_t b, std::int64_t e) {
+    std::vector<std::pair<double, double>> ranges(parallel_range_count(n, threads), {INFINITY, -INFINITY});
+    parallel_indexed_ranges(n, threads, [&](unsigned t, std::int64_t b, std::int64_t e) {
       double values[kChunk], mn = INFINITY, mx = -INFINITY;
       for (std::int64_t i = b; i < e; i += kChunk) {
         const std::int64_t m = std::min(kChunk, e - i);
@@ -34,7 +34,7 @@ std::vector<std::uint8_t> compress(std::int64_t n, const Fill& fill, bool agc, s
         mn = std::min(mn, *lo_it);
         mx = std::max(mx, *hi_it);
       }
-      ranges[static_cast<std::size_t>(b * static_cast<std::int64_t>(threads) / n)] = {mn, mx};
+      ranges[t] = {mn, mx};
     });
     double mn = INFINITY, mx = -INFINITY;
     for (const auto& r : ranges) {

@@ -25,6 +25,23 @@ TEST(Display, AgcMapsTheRangeTo0Through255) {
     EXPECT_EQ(one[i], static_cast<std::uint8_t>(std::lround((v[i] + 4.0) * 255.0 / 14.0))) << i;
 }
 
+// An odd count splits into unequal ranges: each range's least and greatest
+// value must still reach the AGC (the greatest value in the first half, the
+// least in the second: either alone would misplace 7.5, which maps to
+// round(7.5 * 255 / 10) = 191).
+TEST(Display, AgcSeesEveryRangeOfAnOddCount) {
+  std::vector<double> v(8195);
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = i < v.size() / 2 ? 5.0 + (i % 2) * 2.5 : 0.5 + 0.5 * (i % 2);
+  v[10] = 10.0;
+  v[v.size() - 1] = 0.0;
+  for (unsigned threads : {1u, 2u, 3u}) {
+    const auto b = s::compress_for_display(v, true, 0, 1.0, threads);
+    EXPECT_EQ(b[10], 255) << threads;
+    EXPECT_EQ(b[v.size() - 1], 0) << threads;
+    EXPECT_EQ(b[1], 191) << threads;
+  }
+}
+
 TEST(Display, FixedGainStepsOfThirtyAndClipping) {
   const std::vector<double> v{0.0, 0.5e-6, 1e-6, 2e-6, 1e-6 / 30.0};
   const auto step0 = s::compress_for_display(v, false, 0, 1e-6, 2);

@@ -55,7 +55,7 @@ REFERENCE_OVERRIDES = {
 }
 
 # Time steps timed for the reference and adaptive rows (a star_field
-# reference step, with its 128-division satellite lit by the 50 km Earth, takes ~35 s).
+# reference step, with its 128-division satellite lit by the 50 km Earth, takes 35-42 s).
 STEP_REPEAT = 2
 # Error budgets of the adaptive rows (relative RMS of the pixel means).
 ADAPTIVE_BUDGETS = [0.005, 0.01]

@@ -1,9 +1,14 @@
 #include "core/fftw_plans.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <tuple>
 
@@ -33,17 +38,34 @@ class Cache {
     RealBuffer r = placement == Placement::in_place ? nullptr : real_buffer(real_n);
     double* real = placement == Placement::in_place ? reinterpret_cast<double*>(c.get()) : r.get();
     fftw_plan_with_nthreads(static_cast<int>(threads));
-    fftw_plan plan = forward ? fftw_plan_dft_r2c_2d(rows, cols, real, c.get(), FFTW_ESTIMATE)
-                             : fftw_plan_dft_c2r_2d(rows, cols, c.get(), real, FFTW_ESTIMATE);
+    const unsigned flags = wisdom_path_.empty() ? FFTW_ESTIMATE : FFTW_MEASURE;
+    fftw_plan plan = forward ? fftw_plan_dft_r2c_2d(rows, cols, real, c.get(), flags)
+                             : fftw_plan_dft_c2r_2d(rows, cols, c.get(), real, flags);
     if (!plan)
       throw Error(Status::internal, "fft: FFTW could not plan a " + std::to_string(rows) + "x" +
                                         std::to_string(cols) + " transform");
     plans_.emplace(key, plan);
+    if (!wisdom_path_.empty()) save_wisdom();
     return plan;
   }
 
  private:
-  Cache() { fftw_init_threads(); }
+  Cache() {
+    fftw_init_threads();
+    if (const char* path = std::getenv("EOIR_FFTW_WISDOM"); path && *path) {
+      wisdom_path_ = path;
+      // A cache: absent, unreadable or corrupt, it is planned anew and rewritten.
+      fftw_import_wisdom_from_filename(path);
+    }
+  }
+  // Written to a temporary file and renamed: a reader never sees half a file.
+  void save_wisdom() const {
+    const std::string temporary = wisdom_path_ + ".tmp" + std::to_string(::getpid());
+    if (fftw_export_wisdom_to_filename(temporary.c_str()) && std::rename(temporary.c_str(), wisdom_path_.c_str()) == 0)
+      return;
+    std::remove(temporary.c_str());
+  }
+  std::string wisdom_path_;  // EOIR_FFTW_WISDOM: plans measured (FFTW_MEASURE) and kept there
   ~Cache() {
     for (auto& entry : plans_) fftw_destroy_plan(entry.second);
   }

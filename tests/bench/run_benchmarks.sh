@@ -6,8 +6,11 @@
 #   tests/bench/run_benchmarks.sh [build dir]     (default: build)
 #
 # bench_frame runs once per frame case, each in its own process, so that the
-# peak RSS it reports (getrusage) belongs to that case alone. Total run time
-# on a 2-core machine: about 5 minutes.
+# peak RSS it reports (getrusage) belongs to that case alone. The engine's FFT
+# plans are measured and kept as FFTW wisdom in $EOIR_FFTW_WISDOM (default
+# <build dir>/fftw_wisdom; core/fftw_plans.hpp), as the floor's are measured:
+# the first run on a machine spends about a minute more planning. Total run
+# time on a 2-core machine: about 5 minutes.
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -15,6 +18,7 @@ root="$(cd "$here/../.." && pwd)"
 build="${1:-build}"
 case "$build" in /*) ;; *) build="$root/$build" ;; esac
 results="$here/results"
+export EOIR_FFTW_WISDOM="${EOIR_FFTW_WISDOM:-$build/fftw_wisdom}"
 python="${PYTHON:-/usr/bin/python3}"
 
 for exe in tests/bench/bench_static_metrics tests/bench/bench_frame tests/bench/bench_state \
@@ -33,6 +37,7 @@ rm -f "$results"/*.json
   echo "mem=$(free -g | awk '/^Mem:/ {print $2 " GiB"}')"
   echo "uptime_before=$(uptime)"
   echo "commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)$(git -C "$root" diff --quiet -- . ':!tests/bench/results' 2>/dev/null || echo ' (+ uncommitted changes)')"
+  echo "fftw_wisdom=$EOIR_FFTW_WISDOM"
   echo "build_type=$(grep -m1 '^CMAKE_BUILD_TYPE' "$build/CMakeCache.txt" | cut -d= -f2)"
   echo "compiler=$(grep -m1 '^CMAKE_CXX_COMPILER:' "$build/CMakeCache.txt" | cut -d= -f2) $(grep -h -m1 'CMAKE_CXX_COMPILER_VERSION' "$build/CMakeFiles/"*/CMakeCXXCompiler.cmake 2>/dev/null | head -1 | cut -d'"' -f2)"
 } > "$results/machine.txt"

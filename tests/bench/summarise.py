@@ -404,6 +404,8 @@ def main():
         f"- Date: {m.get('date', '?')}",
         f"- Machine: {m.get('nproc', '?')} cores, {m.get('cpu', '?')}, {m.get('mem', '?')} RAM",
         f"- Build: {m.get('build_type', '?')}, {m.get('compiler', '?')}; engine commit {m.get('commit', '?')}",
+        "- FFT plans: " + (f"measured, kept in {m['fftw_wisdom']}" if m.get("fftw_wisdom") else "estimated")
+        + " (EOIR_FFTW_WISDOM)",
         f"- Load before: `{m.get('uptime_before', '?').strip()}`",
         f"- Load after: `{m.get('uptime_after', '?').strip()}`",
         "",

@@ -46,13 +46,6 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
   out.hits.resize(count);  // cast_grid emits every sample once
   out.image.radiance_W_cm2_sr.resize(count);
   const double sky_radiance = world.sky.background_radiance_W_cm2_sr;
-  // The radiance a ray brings back: the background light (spec 4.1.4; 0
-  // without a sky) or the object's as the scene mode says.
-  const auto shade = [&](std::int32_t object, std::int32_t part, const Vec3& point_body_m) {
-    if (object < 0) return sky_radiance;
-    const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];
-    return o.surface->plain() ? o.surface->part_radiance(part) : o.radiance_at(part, point_body_m);
-  };
   const auto direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r); };
   const geometry::RayQuery extended{geometry::ray_mask_extended, -1};
   world.caster.cast_grid(
@@ -61,12 +54,16 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
         const auto i = static_cast<std::size_t>(r * w + c);
         out.hits[i] = SampleHit{object, part};
         if (object < 0) {
-          out.image.radiance_W_cm2_sr[i] = sky_radiance;
+          out.image.radiance_W_cm2_sr[i] = sky_radiance;  // the background light (spec 4.1.4), 0 without a sky
           return;
         }
         const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];
-        out.image.radiance_W_cm2_sr[i] =
-            shade(object, part, o.placed.body_to_frame.transpose() * (range_m * d - o.placed.position_m));
+        if (o.surface->plain()) {  // no surface point needed
+          out.image.radiance_W_cm2_sr[i] = o.surface->part_radiance(part);
+          return;
+        }
+        const Vec3 point_body = o.placed.body_to_frame.transpose() * (range_m * d - o.placed.position_m);
+        out.image.radiance_W_cm2_sr[i] = o.radiance_at(part, point_body);
       },
       threads, extended);
   out.rays = count;
@@ -120,7 +117,9 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
               double sum = 0;
               for (std::size_t m = 0; m < sub; ++m) {
                 const geometry::Hit& hit = sub_hits[static_cast<std::size_t>(k) * sub + m];
-                sum += shade(hit.object_id, hit.part, hit.point_body_m);
+                sum += hit.object_id < 0 ? sky_radiance
+                                         : world.objects[static_cast<std::size_t>(hit.object_id)]->radiance_at(
+                                               hit.part, hit.point_body_m);
               }
               out.image.radiance_W_cm2_sr[edges[first + static_cast<std::size_t>(k)]] = sum / static_cast<double>(sub);
             }

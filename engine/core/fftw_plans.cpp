@@ -26,27 +26,36 @@ class Cache {
     return cache;
   }
   fftw_plan get(bool forward, int rows, int cols, Placement placement, unsigned threads) {
-    requests.fetch_add(1, std::memory_order_relaxed);
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    std::lock_guard<std::mutex> lock(mutex_);
-    const auto key = std::make_tuple(forward, rows, cols, placement, threads);
-    auto it = plans_.find(key);
-    if (it != plans_.end()) return it->second;
-    const std::size_t real_n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
-    const std::size_t complex_n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols / 2 + 1);
-    ComplexBuffer c = complex_buffer(complex_n);
-    RealBuffer r = placement == Placement::in_place ? nullptr : real_buffer(real_n);
-    double* real = placement == Placement::in_place ? reinterpret_cast<double*>(c.get()) : r.get();
-    fftw_plan_with_nthreads(static_cast<int>(threads));
-    const unsigned flags = wisdom_path_.empty() ? FFTW_ESTIMATE : FFTW_MEASURE;
-    fftw_plan plan = forward ? fftw_plan_dft_r2c_2d(rows, cols, real, c.get(), flags)
-                             : fftw_plan_dft_c2r_2d(rows, cols, c.get(), real, flags);
-    if (!plan)
-      throw Error(Status::internal, "fft: FFTW could not plan a " + std::to_string(rows) + "x" +
-                                        std::to_string(cols) + " transform");
-    plans_.emplace(key, plan);
-    if (!wisdom_path_.empty()) save_wisdom();
-    return plan;
+    const bool in_place = placement == Placement::in_place;
+    return get(Key{forward ? Kind::r2c_2d : Kind::c2r_2d, rows, cols, in_place ? 1 : 0, static_cast<int>(threads)},
+               [&](unsigned flags) {
+                 const std::size_t real_n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+                 const std::size_t complex_n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols / 2 + 1);
+                 ComplexBuffer c = complex_buffer(complex_n);
+                 RealBuffer r = in_place ? nullptr : real_buffer(real_n);
+                 double* real = in_place ? reinterpret_cast<double*>(c.get()) : r.get();
+                 fftw_plan_with_nthreads(static_cast<int>(threads));
+                 return forward ? fftw_plan_dft_r2c_2d(rows, cols, real, c.get(), flags)
+                                : fftw_plan_dft_c2r_2d(rows, cols, c.get(), real, flags);
+               });
+  }
+  fftw_plan get_row(bool forward, int n) {
+    return get(Key{forward ? Kind::row_r2c : Kind::row_c2r, n, 1, 1, 1}, [&](unsigned flags) {
+      ComplexBuffer c = complex_buffer(static_cast<std::size_t>(n / 2 + 1));
+      double* real = reinterpret_cast<double*>(c.get());
+      fftw_plan_with_nthreads(1);
+      return forward ? fftw_plan_dft_r2c_1d(n, real, c.get(), flags) : fftw_plan_dft_c2r_1d(n, c.get(), real, flags);
+    });
+  }
+  fftw_plan get_columns(int n, int count, int stride, int sign) {
+    return get(Key{sign == FFTW_FORWARD ? Kind::columns_forward : Kind::columns_backward, n, count, stride, 1},
+               [&](unsigned flags) {
+                 ComplexBuffer c = complex_buffer(static_cast<std::size_t>(n) * static_cast<std::size_t>(stride));
+                 fftw_plan_with_nthreads(1);
+                 return fftw_plan_many_dft(1, &n, count, c.get(), nullptr, stride, 1, c.get(), nullptr, stride, 1,
+                                           sign, flags);
+               });
   }
 
  private:
@@ -69,8 +78,25 @@ class Cache {
   ~Cache() {
     for (auto& entry : plans_) fftw_destroy_plan(entry.second);
   }
+  enum class Kind { r2c_2d, c2r_2d, row_r2c, row_c2r, columns_forward, columns_backward };
+  using Key = std::tuple<Kind, int, int, int, int>;  // kind and its sizes, the thread count last
+  // The plan for key, made by make(flags) on first request.
+  template <class Make>
+  fftw_plan get(const Key& key, Make&& make) {
+    requests.fetch_add(1, std::memory_order_relaxed);
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto it = plans_.find(key);
+    if (it != plans_.end()) return it->second;
+    fftw_plan plan = make(wisdom_path_.empty() ? FFTW_ESTIMATE : FFTW_MEASURE);
+    if (!plan)
+      throw Error(Status::internal, "fft: FFTW could not plan a transform of size " + std::to_string(std::get<1>(key)) +
+                                        " x " + std::to_string(std::get<2>(key)));
+    plans_.emplace(key, plan);
+    if (!wisdom_path_.empty()) save_wisdom();
+    return plan;
+  }
   std::mutex mutex_;
-  std::map<std::tuple<bool, int, int, Placement, unsigned>, fftw_plan> plans_;
+  std::map<Key, fftw_plan> plans_;
 };
 }  // namespace
 
@@ -79,6 +105,11 @@ fftw_plan r2c_2d(int rows, int cols, Placement placement, unsigned threads) {
 }
 fftw_plan c2r_2d(int rows, int cols, Placement placement, unsigned threads) {
   return Cache::instance().get(false, rows, cols, placement, threads);
+}
+fftw_plan row_r2c(int n) { return Cache::instance().get_row(true, n); }
+fftw_plan row_c2r(int n) { return Cache::instance().get_row(false, n); }
+fftw_plan columns(int n, int count, int stride, int sign) {
+  return Cache::instance().get_columns(n, count, stride, sign);
 }
 std::uint64_t plan_requests() { return requests.load(std::memory_order_relaxed); }
 

@@ -25,9 +25,20 @@ namespace eoir::fftw {
 enum class Placement { out_of_place, in_place };
 fftw_plan r2c_2d(int rows, int cols, Placement placement = Placement::out_of_place, unsigned threads = 0);
 fftw_plan c2r_2d(int rows, int cols, Placement placement = Placement::out_of_place, unsigned threads = 0);
-// How many plans r2c_2d and c2r_2d have handed out in this process: the engine
-// asks for a plan right before each transform it executes, so this counts
-// transforms (tests check that a frame does none it need not).
+// One-thread plans for transforms a caller splits among its own threads:
+// - row_r2c / row_c2r: one row of n reals in place (the row padded to
+//   2 (n/2 + 1) reals, its half spectrum n/2 + 1 complex values);
+// - columns: `count` complex transforms of length n in place, element k of
+//   transform j at offset j + k * stride (adjacent columns of a row-major
+//   array `stride` complex values wide); sign FFTW_FORWARD or FFTW_BACKWARD.
+// Executed on other arrays of the same layout with fftw_execute_dft_r2c /
+// _c2r / fftw_execute_dft (16-byte aligned like every fftw_alloc array).
+fftw_plan row_r2c(int n);
+fftw_plan row_c2r(int n);
+fftw_plan columns(int n, int count, int stride, int sign);
+// How many plans the functions above have handed out in this process: the
+// engine asks for its plans when a frame needs a transform, so tests can
+// check that a frame does none it need not.
 std::uint64_t plan_requests();
 
 struct Free {

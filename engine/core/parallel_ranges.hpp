@@ -4,16 +4,19 @@
 // the result is the same for any thread count.
 #pragma once
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <exception>
 #include <mutex>
 #include <thread>
 #include <vector>
 
+#include "core/worker_pool.hpp"
+
 namespace eoir {
 
-// Runs worker(t) for t in [0, count) on count threads, the calling thread
-// taking t = 0, and rethrows on the calling thread the first exception a
+// Runs worker(t) for t in [0, count) on count threads (core/worker_pool.hpp),
+// the calling thread taking t = 0, and rethrows on the calling thread the first exception a
 // worker threw once all have finished (none escapes a worker thread).
 template <class F>
 void run_workers(unsigned count, F&& worker) {
@@ -23,19 +26,14 @@ void run_workers(unsigned count, F&& worker) {
   }
   std::exception_ptr failure;
   std::mutex failure_mutex;
-  const auto guarded = [&](unsigned t) {
+  run_on_worker_threads(count, [&](unsigned t) {
     try {
       worker(t);
     } catch (...) {
       std::lock_guard<std::mutex> lock(failure_mutex);
       if (!failure) failure = std::current_exception();
     }
-  };
-  std::vector<std::thread> pool;
-  pool.reserve(count - 1);
-  for (unsigned t = 1; t < count; ++t) pool.emplace_back(guarded, t);
-  guarded(0u);
-  for (auto& th : pool) th.join();
+  });
   if (failure) std::rethrow_exception(failure);
 }
 
@@ -55,6 +53,22 @@ void parallel_indexed_ranges(std::int64_t n, unsigned threads, F&& fn, std::int6
   const unsigned count = parallel_range_count(n, threads, min_per_thread);
   if (count == 0) return;
   run_workers(count, [&fn, n, count](unsigned t) { fn(t, n * t / count, n * (t + 1) / count); });
+}
+
+// fn(t, begin, end) on chunks of `chunk` iterations of [0, n), the threads
+// taking the next chunk as they finish one (t: the thread, in [0,
+// parallel_range_count(n, threads, chunk))): for loops whose iterations cost
+// unevenly. Which thread takes a chunk varies from run to run, so each
+// iteration must write only its own outputs.
+template <class F>
+void parallel_chunks(std::int64_t n, unsigned threads, std::int64_t chunk, F&& fn) {
+  const unsigned count = parallel_range_count(n, threads, chunk);
+  if (count == 0) return;
+  std::atomic<std::int64_t> next{0};
+  run_workers(count, [&](unsigned t) {
+    for (std::int64_t begin; (begin = next.fetch_add(chunk, std::memory_order_relaxed)) < n;)
+      fn(t, begin, std::min(n, begin + chunk));
+  });
 }
 
 template <class F>

@@ -10,34 +10,6 @@
 
 namespace eoir::sensor {
 
-std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene,
-                                   unsigned threads) {
-  const geometry::SampleGrid& g = scene.grid;
-  const std::int64_t nx = g.pixels_x, ny = g.pixels_y, guard = g.guard_samples();
-  std::vector<double> out(static_cast<std::size_t>(nx * ny), 0.0);
-  const auto& radiance = scene.radiance_W_cm2_sr;
-  // A uniform scene (no extended source, black or lit by the background
-  // light alone) stays uniform: the OTF is 1 at zero frequency and the FFT
-  // padding repeats the border. Skip the scene FFT (DESIGN.md 4).
-  const double first = radiance.empty() ? 0.0 : radiance.front();
-  if (std::all_of(radiance.begin(), radiance.end(), [first](double v) { return v == first; })) {
-    std::fill(out.begin(), out.end(), first);
-    return out;
-  }
-  const BlurredScene blurred = convolve_scene(model, scene, threads);
-  const std::int64_t k = g.per_pixel;
-  parallel_ranges(ny, threads, [&](std::int64_t m0, std::int64_t m1) {
-    for (std::int64_t m = m0; m < m1; ++m)
-      for (std::int64_t n = 0; n < nx; ++n) {
-        double sum = 0;
-        for (std::int64_t r = 0; r < k; ++r)
-          for (std::int64_t c = 0; c < k; ++c) sum += blurred.at(guard + m * k + r, guard + n * k + c);
-        out[static_cast<std::size_t>(m * nx + n)] = sum / static_cast<double>(k * k);  // (1/A_d) integral over the pixel (eq. 49)
-      }
-  }, 16);
-  return out;
-}
-
 std::vector<PointSourceSignal> point_source_signals(const SensorModel& model, const radiometry::RadianceImage& scene) {
   const geometry::SampleGrid& g = scene.grid;
   const StaticMetrics& m = model.metrics;

@@ -10,6 +10,7 @@
 
 #include "radiometry/radiance_image.hpp"
 #include "sensor/point_source_render.hpp"
+#include "sensor/scene_convolution.hpp"
 #include "sensor/sensor_model.hpp"
 
 namespace eoir::sensor {
@@ -27,11 +28,6 @@ struct SensorImage {
 // only through the rounding of FFTW's plan for that thread count.
 SensorImage render_sensor_image(const SensorModel& model, const radiometry::RadianceImage& scene,
                                 std::mt19937_64& rng, unsigned threads = 0);
-
-// Eq. 49 without the responsivity: the scene convolved with the system PSF
-// and averaged over each pixel's samples (W cm^-2 sr^-1 per pixel).
-std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene,
-                                   unsigned threads = 0);
 
 // The scene's point sources in pixel coordinates, streaks in pixels, with
 // R_peak,E E^ps / ENSQ electrons each (eq. 50).

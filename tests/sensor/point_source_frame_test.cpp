@@ -49,10 +49,11 @@ TEST(Spec_5_11_PointSourceFrame, NoFftForPointSourcesOnly) {
   double sum = 0;
   for (double v : image.mean_electrons) sum += v;
   EXPECT_GT(sum, 0.0);
-  // The counter does count: extended radiance brings the scene FFT (r2c and c2r).
+  // The counter does count: extended radiance brings the scene FFT (its row
+  // and column plans, requested once per thread's share).
   scene.radiance_W_cm2_sr[scene.radiance_W_cm2_sr.size() / 2] = 1e-6;
   render_sensor_image(*model, scene, rng);
-  EXPECT_EQ(eoir::fftw::plan_requests(), before + 2);
+  EXPECT_GT(eoir::fftw::plan_requests(), before);
 }
 
 // A point source's sample coordinates and streak (samples, end - start) map

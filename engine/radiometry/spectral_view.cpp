@@ -12,6 +12,8 @@ SpectralView SpectralView::make(double low_um, double high_um, std::int64_t inte
   v.integration = integration;
   v.quadrature = quadrature;
   v.sample_wavelengths_um = v.band.sample_wavelengths_um(quadrature);
+  v.black_body = std::make_shared<const BandPlanckTable>(
+      v.band, v.sample_wavelengths_um, std::vector<double>(v.sample_wavelengths_um.size(), 1.0));
   return v;
 }
 
@@ -29,6 +31,7 @@ double SpectralView::gray_body_radiance(double temperature_K, double reflectance
   if (integration == BandIntegration::exact)
     return gray_body_band_radiance(emissivity_from_reflectance(reflectance), temperature_K, band.low_um,
                                    band.high_um);
+  if (black_body) return emissivity_from_reflectance(reflectance) * black_body->radiance(temperature_K);
   thread_local std::vector<double> e;  // per-sample scratch: no allocation per call
   e.assign(sample_wavelengths_um.size(), 0.0);
   add_gray_body_spectrum(temperature_K, reflectance, e);

@@ -2,10 +2,12 @@
 // at which the scene generator evaluates its spectral radiance vectors, and
 // how it integrates them over the band (eq. 48, RSR = 1 in band).
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "core/fidelity.hpp"
 #include "radiometry/band_integral.hpp"
+#include "radiometry/band_planck_table.hpp"
 
 namespace eoir::radiometry {
 
@@ -14,6 +16,9 @@ struct SpectralView {
   BandIntegration integration = BandIntegration::grid;
   SpectralQuadrature quadrature = SpectralQuadrature::interval_midpoint;
   std::vector<double> sample_wavelengths_um;  // where spectral vectors are evaluated
+  // The black body's band radiance on the grid (grid integration), shared by
+  // copies of the view and every gray body.
+  std::shared_ptr<const BandPlanckTable> black_body;
 
   // Validates the band (throws eoir::Error naming the field).
   static SpectralView make(double low_um, double high_um, std::int64_t intervals, BandIntegration integration,

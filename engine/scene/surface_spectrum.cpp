@@ -18,6 +18,12 @@ SurfaceSpectrum::SurfaceSpectrum(const universe::Material& material, double gray
   srf_ = gray_ ? std::vector<double>(static_cast<std::size_t>(b.intervals), gray_reflectance)
                : material.reflectance.interval_means(b.low_um, b.interval_um(), b.intervals);
   reflects_ = std::any_of(srf_.begin(), srf_.end(), [](double r) { return r > 0.0; });
+  if (!gray_ && view.integration == BandIntegration::grid) {
+    std::vector<double> emissivity(srf_.size());
+    for (std::size_t i = 0; i < srf_.size(); ++i) emissivity[i] = 1.0 - srf_[i];
+    emission_table_ = std::make_shared<const radiometry::BandPlanckTable>(view.band, view.sample_wavelengths_um,
+                                                                          std::move(emissivity));
+  }
 }
 
 void SurfaceSpectrum::add_emission(double temperature_K, std::vector<double>& out) const {
@@ -38,6 +44,7 @@ void SurfaceSpectrum::add_emission(double temperature_K, std::vector<double>& ou
 
 double SurfaceSpectrum::emission_radiance(double temperature_K) const {
   if (gray_) return view_->gray_body_radiance(temperature_K, gray_reflectance_);
+  if (emission_table_) return emission_table_->radiance(temperature_K);
   thread_local std::vector<double> e;  // per-sample scratch: no allocation per call
   e.assign(srf_.size(), 0.0);
   add_emission(temperature_K, e);

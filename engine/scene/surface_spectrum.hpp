@@ -4,6 +4,7 @@
 // the flat SRF of their reflectance property and, in exact band integration,
 // the exact Planck band integral.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "radiometry/brdf.hpp"
@@ -35,6 +36,8 @@ class SurfaceSpectrum {
   bool reflects_ = false;
   std::vector<double> srf_;
   radiometry::Brdf brdf_;
+  // emission_radiance's table, weights 1 - SRF (grid integration, not gray).
+  std::shared_ptr<const radiometry::BandPlanckTable> emission_table_;
 };
 
 }  // namespace eoir::scene

@@ -25,20 +25,14 @@ class Cache {
     static Cache cache;
     return cache;
   }
-  fftw_plan get(bool forward, int rows, int cols, Placement placement, unsigned threads) {
+  fftw_plan get_c2r_2d(int rows, int cols, unsigned threads) {
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    const bool in_place = placement == Placement::in_place;
-    return get(Key{forward ? Kind::r2c_2d : Kind::c2r_2d, rows, cols, in_place ? 1 : 0, static_cast<int>(threads)},
-               [&](unsigned flags) {
-                 const std::size_t real_n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
-                 const std::size_t complex_n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols / 2 + 1);
-                 ComplexBuffer c = complex_buffer(complex_n);
-                 RealBuffer r = in_place ? nullptr : real_buffer(real_n);
-                 double* real = in_place ? reinterpret_cast<double*>(c.get()) : r.get();
-                 fftw_plan_with_nthreads(static_cast<int>(threads));
-                 return forward ? fftw_plan_dft_r2c_2d(rows, cols, real, c.get(), flags)
-                                : fftw_plan_dft_c2r_2d(rows, cols, c.get(), real, flags);
-               });
+    return get(Key{Kind::c2r_2d, rows, cols, 0, static_cast<int>(threads)}, [&](unsigned flags) {
+      ComplexBuffer c = complex_buffer(static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols / 2 + 1));
+      RealBuffer r = real_buffer(static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols));
+      fftw_plan_with_nthreads(static_cast<int>(threads));
+      return fftw_plan_dft_c2r_2d(rows, cols, c.get(), r.get(), flags);
+    });
   }
   fftw_plan get_row(bool forward, int n) {
     return get(Key{forward ? Kind::row_r2c : Kind::row_c2r, n, 1, 1, 1}, [&](unsigned flags) {
@@ -78,7 +72,7 @@ class Cache {
   ~Cache() {
     for (auto& entry : plans_) fftw_destroy_plan(entry.second);
   }
-  enum class Kind { r2c_2d, c2r_2d, row_r2c, row_c2r, columns_forward, columns_backward };
+  enum class Kind { c2r_2d, row_r2c, row_c2r, columns_forward, columns_backward };
   using Key = std::tuple<Kind, int, int, int, int>;  // kind and its sizes, the thread count last
   // The plan for key, made by make(flags) on first request.
   template <class Make>
@@ -100,12 +94,7 @@ class Cache {
 };
 }  // namespace
 
-fftw_plan r2c_2d(int rows, int cols, Placement placement, unsigned threads) {
-  return Cache::instance().get(true, rows, cols, placement, threads);
-}
-fftw_plan c2r_2d(int rows, int cols, Placement placement, unsigned threads) {
-  return Cache::instance().get(false, rows, cols, placement, threads);
-}
+fftw_plan c2r_2d(int rows, int cols, unsigned threads) { return Cache::instance().get_c2r_2d(rows, cols, threads); }
 fftw_plan row_r2c(int n) { return Cache::instance().get_row(true, n); }
 fftw_plan row_c2r(int n) { return Cache::instance().get_row(false, n); }
 fftw_plan columns(int n, int count, int stride, int sign) {

@@ -112,9 +112,22 @@ SunriseSunset sunrise_sunset(double latitude_deg, double declination_deg, double
   require_range(latitude_deg, -90.0, 90.0, "latitude_deg");
   require_range(declination_deg, -90.0, 90.0, "declination_deg");
   require_range(horizon_elevation_deg, -90.0, 90.0, "horizon_elevation_deg");
-  const double lat = latitude_deg * rad_per_deg, dec = declination_deg * rad_per_deg;
-  const double a = std::sin(lat) * std::sin(dec), b = std::cos(lat) * std::cos(dec);
-  const double sin_e0 = std::sin(horizon_elevation_deg * rad_per_deg);
+  // The declination and horizon are the same for every point of a frame:
+  // their sines are kept from this thread's last call.
+  thread_local double last_declination_deg = NAN, sin_dec = 0, cos_dec = 1;
+  thread_local double last_horizon_deg = NAN, sin_e0 = 0;
+  if (!(declination_deg == last_declination_deg)) {
+    const double dec = declination_deg * rad_per_deg;
+    sin_dec = std::sin(dec);
+    cos_dec = std::cos(dec);
+    last_declination_deg = declination_deg;
+  }
+  if (!(horizon_elevation_deg == last_horizon_deg)) {
+    sin_e0 = std::sin(horizon_elevation_deg * rad_per_deg);
+    last_horizon_deg = horizon_elevation_deg;
+  }
+  const double lat = latitude_deg * rad_per_deg;
+  const double a = std::sin(lat) * sin_dec, b = std::cos(lat) * cos_dec;
   // Elevation over the day: sin e = a + b cos h.
   if (b <= 1e-12 || (sin_e0 - a) / b <= -1.0)
     return a + b > sin_e0 ? SunriseSunset{0.0, 24.0} : SunriseSunset{12.0, 12.0};

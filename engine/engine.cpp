@@ -239,7 +239,8 @@ const Frame& Engine::render(const std::string& name) {
   FrameBuffers& spare = spare_buffers_[name];
   frame->scene = scene::generate_scene(w, options_.threads, std::move(spare.scene));
   progress(0.6, "render");
-  frame->sensor = sensor::render_sensor_image(model, frame->scene.image, noise_rng_, options_.threads);
+  frame->sensor =
+      sensor::render_sensor_image(model, frame->scene.image, noise_rng_, options_.threads, std::move(spare.sensor));
   progress(0.9, "render");
   const auto t2 = clock_type::now();
   const universe::SensorParameters& p = model.parameters;
@@ -306,6 +307,7 @@ const Frame& Engine::render(const std::string& name) {
   if (slot.use_count() == 1) {
     Frame& old = *std::const_pointer_cast<Frame>(slot);
     spare.scene = std::move(old.scene);
+    spare.sensor = std::move(old.sensor);
     spare.scene_display = std::move(old.scene_display);
     spare.sensor_display = std::move(old.sensor_display);
   }

@@ -145,6 +145,7 @@ class Engine {
   // steady sequence of frames touches no fresh memory.
   struct FrameBuffers {
     scene::SceneImage scene;
+    sensor::SensorImage sensor;
     std::vector<std::uint8_t> scene_display, sensor_display;
   };
   std::map<std::string, FrameBuffers> spare_buffers_;

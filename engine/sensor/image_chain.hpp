@@ -24,10 +24,11 @@ struct SensorImage {
 };
 
 // Draws noise from `rng` (the engine's seeded generator) when noise is on;
-// threads (0 = all cores) share the convolution; the result depends on them
-// only through the rounding of FFTW's plan for that thread count.
+// threads (0 = all cores) share the convolution, whose result does not
+// depend on them beyond rounding. `storage`: a previous image whose buffers
+// the new one reuses (a frame's fresh pages cost more than its FFTs here).
 SensorImage render_sensor_image(const SensorModel& model, const radiometry::RadianceImage& scene,
-                                std::mt19937_64& rng, unsigned threads = 0);
+                                std::mt19937_64& rng, unsigned threads = 0, SensorImage storage = {});
 
 // The scene's point sources in pixel coordinates, streaks in pixels, with
 // R_peak,E E^ps / ENSQ electrons each (eq. 50).

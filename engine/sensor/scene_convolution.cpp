@@ -89,14 +89,15 @@ void check_alignment(const void* p) {
 }  // namespace
 
 std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene,
-                                   unsigned threads) {
+                                   unsigned threads, std::vector<double> storage) {
   SceneConvolutionCache& cache = *model.scene_convolution;
   const geometry::SampleGrid& g = scene.grid;
   std::call_once(cache.built, [&] { build(cache, model, g, threads); });
   if (g.width() != cache.grid_cols || g.height() != cache.grid_rows)
     throw Error(Status::internal, "convolution: the scene's sample grid is not the sensor model's");
   const std::int64_t nx = g.pixels_x, ny = g.pixels_y, k = g.per_pixel;
-  std::vector<double> out(static_cast<std::size_t>(nx * ny), 0.0);
+  std::vector<double> out = std::move(storage);
+  out.resize(static_cast<std::size_t>(nx * ny));  // every pixel is written below
   std::unique_lock<std::mutex> lock(cache.buffer_mutex);
   const int w = static_cast<int>(g.width()), h = static_cast<int>(g.height());
   const int rows = cache.fft_rows, cols = cache.fft_cols, half = cols / 2 + 1, pad = cache.pad;

@@ -67,7 +67,8 @@ struct SceneConvolutionCache {
 // them beyond rounding. A uniform scene (no extended source, black or lit by
 // the background light alone) stays uniform (the OTF is 1 at zero frequency
 // and the padding repeats the border): it is returned without a transform.
+// `storage`: a buffer the result reuses.
 std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene,
-                                             unsigned threads);
+                                   unsigned threads, std::vector<double> storage = {});
 
 }  // namespace eoir::sensor

@@ -11,7 +11,9 @@
 namespace eoir {
 namespace {
 
-thread_local bool on_pool_thread = false;
+// Set on the pool's threads and on a thread running worker 0 of a pool job:
+// a loop started there gets threads of its own (the pool is busy with it).
+thread_local bool in_pool_job = false;
 
 class WorkerPool {
  public:
@@ -42,7 +44,9 @@ class WorkerPool {
       ++generation_;
     }
     wake_.notify_all();
+    in_pool_job = true;
     worker(0);
+    in_pool_job = false;
     std::unique_lock<std::mutex> lock(mutex_);
     done_.wait(lock, [this] { return remaining_ == 0; });
     job_ = nullptr;
@@ -51,7 +55,7 @@ class WorkerPool {
 
  private:
   void serve(unsigned index) {
-    on_pool_thread = true;
+    in_pool_job = true;
     std::uint64_t seen = 0;
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
@@ -97,7 +101,7 @@ void run_on_worker_threads(unsigned count, const std::function<void(unsigned)>& 
     worker(0);
     return;
   }
-  if (on_pool_thread || pool().owner != ::getpid() || !pool().try_run(count, worker))
+  if (in_pool_job || pool().owner != ::getpid() || !pool().try_run(count, worker))
     run_on_new_threads(count, worker);
 }
 

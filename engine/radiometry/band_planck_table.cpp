@@ -11,8 +11,8 @@ BandPlanckTable::BandPlanckTable(const SpectralBand& band, std::vector<double> s
                                  std::vector<double> weights)
     : band_(band), wavelengths_um_(std::move(sample_wavelengths_um)), weights_(std::move(weights)) {
   u_min_ = 1.0 / max_temperature_K;
-  node_count_ = static_cast<std::size_t>(std::ceil((1.0 / min_temperature_K - u_min_) / node_spacing_per_K)) + 1;
-  block_count_ = (node_count_ - 1 + nodes_per_block - 1) / nodes_per_block;
+  const auto intervals = static_cast<std::size_t>(std::ceil((1.0 / min_temperature_K - u_min_) / node_spacing_per_K));
+  block_count_ = (intervals + nodes_per_block - 1) / nodes_per_block;
   blocks_ = std::make_unique<std::atomic<const Node*>[]>(block_count_);
   for (std::size_t b = 0; b < block_count_; ++b) blocks_[b].store(nullptr, std::memory_order_relaxed);
 }
@@ -62,7 +62,6 @@ double BandPlanckTable::radiance(double temperature_K) const {
   if (b >= block_count_) return direct(temperature_K);
   const Node* nodes = block(b) + (k - b * nodes_per_block);
   const double t = s - static_cast<double>(k);
-  // Cubic Hermite basis on [0, 1].
   // Cubic Hermite basis on [0, 1], relative to the node below (h00 + h01 = 1).
   const double t2 = t * t, t3 = t2 * t;
   const double delta = (3 * t2 - 2 * t3) * nodes[0].log_ratio + (t3 - 2 * t2 + t) * nodes[0].slope_per_node +

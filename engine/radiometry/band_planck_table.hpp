@@ -54,7 +54,6 @@ class BandPlanckTable {
   SpectralBand band_;
   std::vector<double> wavelengths_um_, weights_;
   double u_min_ = 0;
-  std::size_t node_count_ = 0;
   // Block b holds nodes [64 b, 64 b + 64], the last shared with block b + 1.
   std::unique_ptr<std::atomic<const Node*>[]> blocks_;
   std::size_t block_count_ = 0;

@@ -186,7 +186,7 @@ void DiurnalCycle::solve_night() {
   // concave with F(0) = 0, F'(0) > 0, so its positive root x* lies where F
   // falls; from x0 = 1/r (F(x0) = -exp(-1/r) < 0, right of x*) Newton's
   // steps decrease monotonically to x* (the tangent of a concave function lies
-  // above it): 2-4 steps to 1e-15 for the r in (0.1, 0.4) of a 4-24 h day.
+  // above it): 2-3 steps for the r in (0.1, 0.4) of a 4-24 h day.
   // Convergence is quadratic: the error after a step is ~ M step^2, M =
   // |F''/2F'| = exp(-x) / 2|F'|, and M x* <= 1 for every r in (0, 1) (0.4 at
   // r = 0.4, -> 1 as r -> 1), so a step below 1e-8 x leaves an error below

@@ -196,9 +196,10 @@ std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::R
   // zero) and transformed back: the pixel means.
   const int pixel_half = pixel_cols / 2 + 1;
   const fftw_plan backward = fftw::row_c2r(pixel_cols);
-  parallel_chunks(ny, threads, pixel_row_chunk, [&](unsigned, std::int64_t m0, std::int64_t m1) {
-    fftw::ComplexBuffer row_buffer = fftw::complex_buffer(static_cast<std::size_t>(pixel_half));
-    fftw_complex* row = row_buffer.get();
+  std::vector<fftw::ComplexBuffer> row_buffers(parallel_range_count(ny, threads, pixel_row_chunk));  // one a thread
+  parallel_chunks(ny, threads, pixel_row_chunk, [&](unsigned t, std::int64_t m0, std::int64_t m1) {
+    if (!row_buffers[t]) row_buffers[t] = fftw::complex_buffer(static_cast<std::size_t>(pixel_half));
+    fftw_complex* row = row_buffers[t].get();
     for (std::int64_t m = m0; m < m1; ++m) {
       const fftw_complex* spectrum_row = folded + static_cast<std::size_t>(m) * half;
       for (int q = 0; q < pixel_half; ++q) {

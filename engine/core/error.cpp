@@ -12,9 +12,8 @@ std::string describe(double value) {
 }
 }  // namespace
 
-void require_finite(double value, std::string_view field) {
-  if (!std::isfinite(value))
-    throw Error(Status::out_of_range, std::string(field) + ": not finite (" + describe(value) + ")");
+void throw_not_finite(double value, std::string_view field) {
+  throw Error(Status::out_of_range, std::string(field) + ": not finite (" + describe(value) + ")");
 }
 void require_positive(double value, std::string_view field) {
   require_finite(value, field);

@@ -1,6 +1,7 @@
 // Errors of the engine: a status code of the C ABI plus a message that names
 // the offending field. Thrown inside the engine, caught at the C boundary.
 #pragma once
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -37,8 +38,13 @@ class Error : public std::runtime_error {
   Status status_;
 };
 
-// Throws out_of_range naming `field` unless value is finite.
-void require_finite(double value, std::string_view field);
+// Throws out_of_range naming `field` (and the value).
+[[noreturn]] void throw_not_finite(double value, std::string_view field);
+// Throws out_of_range naming `field` unless value is finite (inline: checks
+// on every sample cost a compare).
+inline void require_finite(double value, std::string_view field) {
+  if (!std::isfinite(value)) throw_not_finite(value, field);
+}
 // Throws out_of_range naming `field` unless value is finite and > 0.
 void require_positive(double value, std::string_view field);
 // Throws out_of_range naming `field` unless value is finite and >= 0.

@@ -294,7 +294,7 @@ Hit full_hit(const std::vector<ObjectData>& objects, const RayContext& rc, const
   h.part = rc.part;
   h.range_m = rc.best_t;
   h.point_body_m = obj.body_to_frame.transpose() * (rc.best_t * d - obj.position_m);
-  h.normal_frame = (pd.part_to_frame * rc.normal_part).normalized();
+  h.normal_frame = pd.part_to_frame * rc.normal_part;  // a rotated unit normal
   return h;
 }
 }  // namespace
@@ -357,7 +357,8 @@ bool cone_meets(const Cone& cone, const PartBound& b) {
 
 void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                           const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
-                          const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, double, const Vec3&)>& emit,
+                          const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, double,
+                                                   const Vec3&, const Vec3&)>& emit,
                           unsigned threads, const RayQuery& query) const {
   if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
   if (width <= 0 || height <= 0) return;
@@ -421,7 +422,7 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
           for (std::int64_t r = r0; r < r1; ++r)
             for (std::int64_t c = c0; c < c1; ++c) {
               if (tile_bounds.empty()) {  // no object near: the sky
-                emit(c, r, -1, -1, sky_range_m, Vec3::Zero());
+                emit(c, r, -1, -1, sky_range_m, Vec3::Zero(), Vec3::Zero());
                 continue;
               }
               const Vec3 d = direction(c, r);
@@ -431,6 +432,7 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                 const ObjectData& od = objects[static_cast<std::size_t>(tile_bounds[0]->object)];
                 double best = std::numeric_limits<double>::infinity();
                 int best_part = -1;
+                Vec3 best_normal_part;
                 for (const PartBound* b : tile_bounds) {
                   const PartData& p = od.parts[b->part];
                   double t = 0;
@@ -438,19 +440,24 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                   if (intersect_shape(p.geom, p.origin_part_m, p.part_to_frame.transpose() * d, 0.0, best, t, n)) {
                     best = t;
                     best_part = static_cast<int>(b->part);
+                    best_normal_part = n;
                   }
                 }
                 if (best_part < 0)
-                  emit(c, r, -1, -1, sky_range_m, Vec3::Zero());
+                  emit(c, r, -1, -1, sky_range_m, Vec3::Zero(), Vec3::Zero());
                 else
-                  emit(c, r, od.object->object_id, best_part, best, d);
+                  emit(c, r, od.object->object_id, best_part, best, d,
+                       od.parts[static_cast<std::size_t>(best_part)].part_to_frame * best_normal_part);
                 continue;
               }
               cast_one(scene, rc, rh, d, 0, query);
-              if (rc.object < 0)
-                emit(c, r, -1, -1, sky_range_m, Vec3::Zero());
-              else
-                emit(c, r, objects[static_cast<std::size_t>(rc.object)].object->object_id, rc.part, rc.best_t, d);
+              if (rc.object < 0) {
+                emit(c, r, -1, -1, sky_range_m, Vec3::Zero(), Vec3::Zero());
+              } else {
+                const ObjectData& od = objects[static_cast<std::size_t>(rc.object)];
+                emit(c, r, od.object->object_id, rc.part, rc.best_t, d,
+                     od.parts[static_cast<std::size_t>(rc.part)].part_to_frame * rc.normal_part);
+              }
             }
         }
     }

@@ -54,12 +54,10 @@ struct Tessellation {
 // faces: rectangular grids; cylinders/cones/couplers: side grid + caps).
 Tessellation tessellate(const std::vector<ShapePart>& parts, double target_patch_size_m);
 // The patch containing `point_body_m` on part `part` (the point is on or very
-// near that part's surface); a plate's face follows the side of the point.
-std::int32_t patch_at(const Tessellation& t, const std::vector<ShapePart>& parts, std::int32_t part,
-                      const Vec3& point_body_m);
-// Like patch_at, but picks the face of a two-sided plate from the seen side's
-// outward normal (body frame). A plate's patches are its +z face grid
-// followed by its -z face grid.
+// near that part's surface), the face of a two-sided plate picked by the
+// seen side's outward normal (body frame; a hit's, which the ray caster
+// gives: the side of a point on the plate is rounding). A plate's patches
+// are its +z face grid followed by its -z face grid.
 std::int32_t patch_at_facing(const Tessellation& t, const std::vector<ShapePart>& parts, std::int32_t part,
                              const Vec3& point_body_m, const Vec3& normal_body);
 
@@ -119,16 +117,18 @@ class RayCaster {
   // The lean form for a frame's sample grid: ray (c, r) of width x height
   // goes along direction(c, r), a pinhole projection (the rays of a
   // rectangle of samples lie in the cone of its corner rays), and its nearest
-  // surface goes to emit(c, r, object_id, part, range_m, direction) (object_id
-  // -1: the sky, with a zero direction, as sky tiles compute none); no point
-  // or normal is computed. Cast in tiles of 8 x 8 samples: a
+  // surface goes to emit(c, r, object_id, part, range_m, direction,
+  // normal_frame) (object_id -1: the sky, with a zero direction and normal, as
+  // sky tiles compute none): normal_frame is the hit's outward unit normal,
+  // observer frame, the one cast() gives (the intersection computes it). Cast in tiles of 8 x 8 samples: a
   // tile whose bounding cone meets no part's bounding sphere is sky, one
   // whose nearby parts are all of one object is intersected with them
   // directly, the others go through Embree; the hits are those of cast().
   // Both callbacks are called from the worker threads, each sample once.
   void cast_grid(std::int64_t width, std::int64_t height,
                  const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
-                 const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, double, const Vec3&)>& emit,
+                 const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, double, const Vec3&,
+                                          const Vec3&)>& emit,
                  unsigned threads = 0, const RayQuery& query = {}) const;
   // True if any surface lies along `direction` closer than range_m.
   bool occluded(const Vec3& direction, double range_m, const RayQuery& query = {}) const;

@@ -270,13 +270,4 @@ std::int32_t patch_at_facing(const Tessellation& t, const std::vector<ShapePart>
                        r.transpose() * normal_body);
 }
 
-std::int32_t patch_at(const Tessellation& t, const std::vector<ShapePart>& parts, std::int32_t part,
-                      const Vec3& point_body_m) {
-  if (part < 0 || static_cast<std::size_t>(part) >= parts.size()) return -1;
-  const ShapePart& sp = parts[static_cast<std::size_t>(part)];
-  const Vec3 p = sp.orientation.toRotationMatrix().transpose() * (point_body_m - sp.offset_m);
-  // The plate's face follows the side of the point (z < 0: back face).
-  return patch_in_part(t, part, sp.geom, p, Vec3(0, 0, p.z() < 0 ? -1.0 : 1.0));
-}
-
 }  // namespace eoir::geometry

@@ -12,7 +12,8 @@ using geometry::Vec3;
 // The radiance a hit sees (the sky's background light where it meets nothing).
 double radiance_of(const scene::World& world, const geometry::Hit& hit) {
   if (hit.object_id < 0) return world.sky.background_radiance_W_cm2_sr;
-  return world.objects[static_cast<std::size_t>(hit.object_id)]->radiance_at(hit.part, hit.point_body_m);
+  const scene::WorldObject& o = *world.objects[static_cast<std::size_t>(hit.object_id)];
+  return o.radiance_at(hit.part, hit.point_body_m, o.direction_to_body(hit.normal_frame));
 }
 
 // Eqs. 59-71 of a point target of irradiance E_tgt against the background

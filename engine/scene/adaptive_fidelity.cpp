@@ -128,7 +128,7 @@ std::vector<ProbeSample> probe_field(const World& world, std::int64_t& stride, s
     s.part = h.part;
     if (h.object_id < 0) continue;
     const WorldObject& o = *world.objects[static_cast<std::size_t>(h.object_id)];
-    const Vec3 normal = o.normal_at(h.part, h.point_body_m);
+    const Vec3 normal = o.direction_to_body(h.normal_frame);
     s.radiance = o.effective_radiance(h.part, h.point_body_m, normal);
     s.point_body_m = h.point_body_m;
     s.normal_body = normal;

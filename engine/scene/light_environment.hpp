@@ -24,6 +24,7 @@ struct ObjectLight {
   double radius_m = 0.0;              // volumetric mean radius of its true shape
   double bounding_radius_m = 0.0;
   bool area_source = false;           // its tessellation can serve eq. 8 (resolved objects)
+  Vec3 to_sun = Vec3::UnitX();        // unit, from the source toward the Sun
 };
 
 // The spectra of an eq. 7 source (WorldObject::light_spectra, made on first use).
@@ -33,10 +34,12 @@ struct LightSpectra {
   std::vector<double> reflected;
   // Overall emittance times B(T_eff): multiply by dOmega.
   std::vector<double> emitted;
+  bool reflects = false;  // some reflected value is not 0 (not eclipsed, not black)
 };
 
 // The phase function of a Lambertian sphere, eq. 7: (sin psi + (pi - psi)
-// cos psi) / pi, psi the Sun-source-observer angle.
-double lambertian_sphere_phase(double psi_rad);
+// cos psi) / pi, psi the Sun-source-observer angle, from cos psi (clamped
+// to [-1, 1]).
+double lambertian_sphere_phase(double cos_psi);
 
 }  // namespace eoir::scene

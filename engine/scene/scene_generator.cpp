@@ -50,7 +50,8 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
   const geometry::RayQuery extended{geometry::ray_mask_extended, -1};
   world.caster.cast_grid(
       w, h, direction,
-      [&](std::int64_t c, std::int64_t r, std::int32_t object, std::int32_t part, double range_m, const Vec3& d) {
+      [&](std::int64_t c, std::int64_t r, std::int32_t object, std::int32_t part, double range_m, const Vec3& d,
+          const Vec3& normal_frame) {
         const auto i = static_cast<std::size_t>(r * w + c);
         out.hits[i] = SampleHit{object, part};
         if (object < 0) {
@@ -63,7 +64,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
           return;
         }
         const Vec3 point_body = o.placed.body_to_frame.transpose() * (range_m * d - o.placed.position_m);
-        out.image.radiance_W_cm2_sr[i] = o.radiance_at(part, point_body);
+        out.image.radiance_W_cm2_sr[i] = o.radiance_at(part, point_body, o.direction_to_body(normal_frame));
       },
       threads, extended);
   out.rays = count;
@@ -117,9 +118,12 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
               double sum = 0;
               for (std::size_t m = 0; m < sub; ++m) {
                 const geometry::Hit& hit = sub_hits[static_cast<std::size_t>(k) * sub + m];
-                sum += hit.object_id < 0 ? sky_radiance
-                                         : world.objects[static_cast<std::size_t>(hit.object_id)]->radiance_at(
-                                               hit.part, hit.point_body_m);
+                if (hit.object_id < 0) {
+                  sum += sky_radiance;
+                  continue;
+                }
+                const WorldObject& o = *world.objects[static_cast<std::size_t>(hit.object_id)];
+                sum += o.radiance_at(hit.part, hit.point_body_m, o.direction_to_body(hit.normal_frame));
               }
               out.image.radiance_W_cm2_sr[edges[first + static_cast<std::size_t>(k)]] = sum / static_cast<double>(sub);
             }

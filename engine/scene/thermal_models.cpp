@@ -18,11 +18,15 @@ using constants::rad_per_deg;
 
 constexpr double kHoursPerDay = 24.0;
 
-void require_range(double value, double lo, double hi, std::string_view field) {
+[[noreturn]] void throw_out_of_range(double value, double lo, double hi, std::string_view field) {
   require_finite(value, field);
-  if (value < lo || value > hi)
-    throw Error(Status::out_of_range, std::string(field) + ": " + std::to_string(value) + " outside [" +
-                                          std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  throw Error(Status::out_of_range, std::string(field) + ": " + std::to_string(value) + " outside [" +
+                                        std::to_string(lo) + ", " + std::to_string(hi) + "]");
+}
+
+// A compare unless it fails (NaN fails it too).
+inline void require_range(double value, double lo, double hi, std::string_view field) {
+  if (!(value >= lo && value <= hi)) throw_out_of_range(value, lo, hi, field);
 }
 
 // x wrapped into [0, period).
@@ -139,6 +143,86 @@ SunriseSunset sunrise_sunset(double latitude_deg, double declination_deg, double
 
 // ---- 1. Earth land and water ------------------------------------------------
 
+namespace {
+
+// F(x) = 1 - exp(-x) - r x is concave with F(0) = 0, F'(0) = 1 - r > 0, so
+// its positive root x* lies where F falls (F' < 0). Newton's step F / F'
+// from x; expm1 keeps 1 - exp(-x) exact at small x.
+double night_decay_newton_step(double x, double r) {
+  const double e_minus_1 = std::expm1(-x);
+  return (-e_minus_1 - r * x) / (1.0 + e_minus_1 - r);
+}
+
+// The root by Newton from x0 = 1/r (F(x0) = -exp(-1/r) < 0, right of x*:
+// the steps fall monotonically, the tangent of a concave F lying above it)
+// until they stop changing x.
+double night_decay_root_from_the_right(double r) {
+  double x = 1.0 / r;
+  for (int i = 0; i < 200; ++i) {
+    const double step = night_decay_newton_step(x, r);
+    x -= step;
+    if (!(step > 1e-16 * x)) break;
+  }
+  return x;
+}
+
+// y(r) = r x*(r) on r in [0, 1] (smooth: 1 - exp(-1/r) + ... as r -> 0,
+// 2 (1 - r) + ... as r -> 1), cubic Hermite on kIntervals intervals with the
+// implicit derivative dx/dr = x / (exp(-x) - r): a start within ~1e-12 of
+// the root, so that one Newton step leaves it exact.
+class NightDecayStart {
+ public:
+  static constexpr int kIntervals = 2048;
+  NightDecayStart() {
+    for (int k = 0; k <= kIntervals; ++k) {
+      const double r = static_cast<double>(k) / kIntervals;
+      if (k == 0) {
+        y_[0] = 1.0;
+        dy_dr_[0] = 0.0;
+      } else if (k == kIntervals) {
+        y_[k] = 0.0;
+        dy_dr_[k] = -2.0;
+      } else {
+        const double x = night_decay_root_from_the_right(r);
+        y_[k] = r * x;
+        dy_dr_[k] = x + r * x / ((1.0 - r) + std::expm1(-x));  // exp(-x) - r
+      }
+    }
+  }
+  double x0(double r) const {
+    const double u = std::clamp(r, 0.0, 1.0) * kIntervals;
+    const int k = std::min(static_cast<int>(u), kIntervals - 1);
+    const double t = u - k, h = 1.0 / kIntervals;
+    const double t2 = t * t, t3 = t2 * t;
+    const double y = (2 * t3 - 3 * t2 + 1) * y_[k] + (t3 - 2 * t2 + t) * h * dy_dr_[k] +
+                     (-2 * t3 + 3 * t2) * y_[k + 1] + (t3 - t2) * h * dy_dr_[k + 1];
+    return y / r;
+  }
+
+ private:
+  double y_[kIntervals + 1], dy_dr_[kIntervals + 1];
+};
+
+}  // namespace
+
+double night_decay_root(double r) {
+  if (!(r > 0.0 && r < 1.0))
+    throw Error(Status::out_of_range, "night_decay_root r: " + std::to_string(r) + " outside (0, 1)");
+  static const NightDecayStart start;
+  double x = start.x0(r);
+  // Quadratic convergence: the error after a step is ~ M step^2, M =
+  // |F''/2F'| = exp(-x) / 2|F'|, and M x* <= 1 for every r in (0, 1) (0.4 at
+  // r = 0.4, -> 1 as r -> 1), so a step below 1e-8 x leaves an error below
+  // 1e-16 x: it is the last (one step from the table's start).
+  for (int i = 0; i < 100; ++i) {
+    const double step = night_decay_newton_step(x, r);
+    x -= step;
+    if (!(std::fabs(step) > 1e-8 * x)) break;
+  }
+  return x;
+}
+
+
 DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
                            const DiurnalShape& shape)
     : DiurnalCycle(t_min_K, t_max_K, latitude_deg, declination_deg, shape, DayOnly{}) {
@@ -182,24 +266,8 @@ void DiurnalCycle::solve_night() {
     decay_h_ = std::numeric_limits<double>::infinity();
     return;
   }
-  // With x = n/k and r = q/n in (0, 1): F(x) = 1 - exp(-x) - r x = 0. F is
-  // concave with F(0) = 0, F'(0) > 0, so its positive root x* lies where F
-  // falls; from x0 = 1/r (F(x0) = -exp(-1/r) < 0, right of x*) Newton's
-  // steps decrease monotonically to x* (the tangent of a concave function lies
-  // above it): 2-3 steps for the r in (0.1, 0.4) of a 4-24 h day.
-  // Convergence is quadratic: the error after a step is ~ M step^2, M =
-  // |F''/2F'| = exp(-x) / 2|F'|, and M x* <= 1 for every r in (0, 1) (0.4 at
-  // r = 0.4, -> 1 as r -> 1), so a step below 1e-8 x leaves an error below
-  // 1e-16 x: it is the last.
-  const double r = q_h / night_h;
-  double x = 1.0 / r;
-  for (int i = 0; i < 100; ++i) {
-    const double e_minus_1 = std::expm1(-x);  // 1 - exp(-x) without cancellation at small x
-    const double step = (-e_minus_1 - r * x) / (1.0 + e_minus_1 - r);  // F / F', F' < 0 right of x*
-    x -= step;
-    if (!(step > 1e-8 * x)) break;
-  }
-  decay_h_ = night_h / x;
+  // With x = n/k and r = q/n in (0, 1): 1 - exp(-x) = r x.
+  decay_h_ = night_h / night_decay_root(q_h / night_h);
   asymptote_K_ = sunset_K_ - decay_h_ * sunset_slope_K_h_;
 }
 

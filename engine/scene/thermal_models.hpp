@@ -126,6 +126,10 @@ struct DiurnalShape {
   double horizon_elevation_deg = kSunriseElevation_deg;
 };
 
+// The positive root x of 1 - exp(-x) = r x for r in (0, 1): n/k of the
+// night decay (DiurnalCycle), to rounding. Throws out_of_range outside (0, 1).
+double night_decay_root(double r);
+
 class DiurnalCycle {
  public:
   // Throws out_of_range for non-finite arguments, t_min_K > t_max_K or a

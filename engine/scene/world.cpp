@@ -259,12 +259,18 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     }
     const double cos_i = I.dot(n);
     if (cos_i <= 0) continue;
-    const double visible = geometry::solar_disk_visible_fraction(p, src.position_m, src.radius_m, occulters_[k + 1]);
+    const std::vector<geometry::Occulter>& occulters = occulters_[k + 1];
+    const double visible = occulters.empty() ? 1.0  // (d > radius: nothing hides any of it)
+                                             : geometry::solar_disk_visible_fraction(p, src.position_m, src.radius_m,
+                                                                                     occulters);
     if (visible <= 0) continue;
-    const Vec3 to_sun = (w.sun.position_m - src.position_m).normalized();
-    const double phase = lambertian_sphere_phase(std::acos(std::clamp(-to_sun.dot(I), -1.0, 1.0)));
     const double g = omega * visible * cos_i * brdf.value(I, toward, n);
     const LightSpectra& spectra = w.objects[static_cast<std::size_t>(src.object)]->light_spectra();
+    if (!spectra.reflects) {  // eclipsed or black: no phase to weigh
+      for (std::size_t i = 0; i < count; ++i) out[i] += g * spectra.emitted[i];
+      continue;
+    }
+    const double phase = lambertian_sphere_phase(-src.to_sun.dot(I));
     for (std::size_t i = 0; i < count; ++i) out[i] += g * (spectra.reflected[i] * phase + spectra.emitted[i]);
   }
 }
@@ -302,8 +308,10 @@ const LightSpectra& WorldObject::light_spectra() const {
     const double fraction = sun_fraction(placed.position_m);
     const double sun_omega = universe::sun_projected_solid_angle_sr((w.sun.position_m - placed.position_m).norm());
     light_spectra_.reflected.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n; ++i) {
       light_spectra_.reflected[i] = w.sun.radiance[i] * sun_omega * fraction * srf[i] * 2.0 / (3.0 * constants::pi);
+      light_spectra_.reflects = light_spectra_.reflects || light_spectra_.reflected[i] != 0.0;
+    }
   });
   return light_spectra_;
 }
@@ -376,24 +384,24 @@ double WorldObject::patch_radiance(std::int32_t patch) const {
   return L;
 }
 
-void WorldObject::shading_point(std::int32_t part, const Vec3& point_body_m, Vec3& shade_point_body,
-                                Vec3& normal_body) const {
+void WorldObject::shading_point(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
+                                Vec3& shade_point_body, Vec3& normal_body) const {
   if (world_->view.fidelity.scene_mode != SceneMode::coarse) {
     shade_point_body = point_body_m;
-    normal_body = normal_at(part, point_body_m);
+    normal_body = hit_normal_body;
     return;
   }
-  const std::int32_t k = geometry::patch_at(tessellation(), placed.parts, part, point_body_m);
+  const std::int32_t k = geometry::patch_at_facing(tessellation(), placed.parts, part, point_body_m, hit_normal_body);
   const geometry::Patch& p = tessellation().patches[static_cast<std::size_t>(k)];
   shade_point_body = p.centre_body_m;
   normal_body = p.normal_body;
 }
 
-double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m) const {
+double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body) const {
   if (surface->plain()) return surface->part_radiance(part);
   if (world_->view.fidelity.scene_mode != SceneMode::coarse)
-    return effective_radiance(part, point_body_m, normal_at(part, point_body_m), true);
-  return patch_radiance(geometry::patch_at(tessellation(), placed.parts, part, point_body_m));
+    return effective_radiance(part, point_body_m, hit_normal_body, true);
+  return patch_radiance(geometry::patch_at_facing(tessellation(), placed.parts, part, point_body_m, hit_normal_body));
 }
 
 double WorldObject::projected_area_m2() const {
@@ -443,7 +451,7 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
     const double omega = constants::pi * volumetric_radius_m * volumetric_radius_m / r2;
     const Vec3 to_sun = (w.sun.position_m - placed.position_m).normalized();
     const Vec3 to_observer = -placed.position_m / range_m;
-    const double phase = lambertian_sphere_phase(std::acos(std::clamp(to_sun.dot(to_observer), -1.0, 1.0)));
+    const double phase = lambertian_sphere_phase(to_sun.dot(to_observer));
     for (std::size_t i = 0; i < E.size(); ++i) E[i] = (self.reflected[i] * phase + self.emitted[i]) * omega;
     return E;
   }
@@ -460,8 +468,9 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
   return E;
 }
 
-double lambertian_sphere_phase(double psi) {
-  return (std::sin(psi) + (constants::pi - psi) * std::cos(psi)) / constants::pi;
+double lambertian_sphere_phase(double cos_psi) {
+  const double c = std::clamp(cos_psi, -1.0, 1.0);
+  return (std::sqrt((1.0 - c) * (1.0 + c)) + (constants::pi - std::acos(c)) * c) / constants::pi;
 }
 
 const WorldObject* World::find(const std::string& name) const {
@@ -638,6 +647,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     light.radius_m = w.volumetric_radius_m;
     light.bounding_radius_m = w.bounding_radius_m;
     light.area_source = true;
+    light.to_sun = (world->sun.position_m - light.position_m).normalized();
     w.light_ = static_cast<std::int32_t>(world->lights.size());
     world->lights.push_back(std::move(light));
   }

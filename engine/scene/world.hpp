@@ -94,6 +94,8 @@ class WorldObject {
   // Outward unit normal (body frame) of `part` at a surface point.
   Vec3 normal_at(std::int32_t part, const Vec3& point_body_m) const;
   Vec3 to_frame(const Vec3& point_body_m) const { return placed.position_m + placed.body_to_frame * point_body_m; }
+  // A direction (a hit's normal_frame) from the observer frame to the body frame.
+  Vec3 direction_to_body(const Vec3& direction_frame) const { return placed.body_to_frame.transpose() * direction_frame; }
   // Unit vector from the object toward the observer, body frame.
   Vec3 toward_observer_body() const;
 
@@ -107,14 +109,17 @@ class WorldObject {
   // L(T) table when `interpolated`.
   double effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
                             bool interpolated = false) const;
-  // The effective radiance a sample ending at point_body_m on `part` sees, as
-  // the scene mode says (spec 4.2): a part's value for plain surfaces; the
-  // value at the centre of the point's patch in coarse mode (computed once per
+  // The effective radiance a sample ending at point_body_m on `part`, with
+  // the outward normal hit_normal_body there (the ray caster's), sees, as the
+  // scene mode says (spec 4.2): a part's value for plain surfaces; the value
+  // at the centre of the point's patch in coarse mode (computed once per
   // patch); the point's own in smooth mode.
-  double radiance_at(std::int32_t part, const Vec3& point_body_m) const;
+  double radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body) const;
   // The point and normal at which that radiance is evaluated (the patch
-  // centre in coarse mode, the point itself in smooth mode).
-  void shading_point(std::int32_t part, const Vec3& point_body_m, Vec3& shade_point_body, Vec3& normal_body) const;
+  // centre and its normal in coarse mode, the point itself and the hit's
+  // normal in smooth mode).
+  void shading_point(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body, Vec3& shade_point_body,
+                     Vec3& normal_body) const;
   // The radiance of patch k at its centre toward the observer (cached).
   double patch_radiance(std::int32_t patch) const;
   // Projected area A*_T facing the observer (eq. 58, m^2): exact for a single

@@ -26,7 +26,7 @@ json read_json(const std::string& path) {
 
 RasterLevel::~RasterLevel() {
   if (!rows_) return;
-  for (std::int64_t i = 0; i < height_; ++i) delete rows_[static_cast<std::size_t>(i)].load();
+  for (std::int64_t i = 0; i < height_; ++i) delete[] rows_[static_cast<std::size_t>(i)].load();
 }
 
 std::unique_ptr<RasterLevel> RasterLevel::load(const std::string& sidecar) {
@@ -70,15 +70,16 @@ std::unique_ptr<RasterLevel> RasterLevel::load(const std::string& sidecar) {
   } else if (size != static_cast<std::uint64_t>(r->width_ * r->height_)) {
     corrupt(r->data_path_, "size is not width x height bytes");
   }
-  r->rows_ = std::make_unique<std::atomic<const std::vector<std::uint8_t>*>[]>(static_cast<std::size_t>(r->height_));
+  r->rows_ = std::make_unique<std::atomic<const std::uint8_t*>[]>(static_cast<std::size_t>(r->height_));
   for (std::int64_t i = 0; i < r->height_; ++i) r->rows_[static_cast<std::size_t>(i)].store(nullptr);
   return r;
 }
 
-const std::vector<std::uint8_t>& RasterLevel::row(std::int64_t i) const {
-  std::atomic<const std::vector<std::uint8_t>*>& slot = rows_[static_cast<std::size_t>(i)];
-  if (const auto* cached = slot.load(std::memory_order_acquire)) return *cached;
-  auto decoded = std::make_unique<std::vector<std::uint8_t>>(static_cast<std::size_t>(width_), 0);
+const std::uint8_t* RasterLevel::row(std::int64_t i) const {
+  std::atomic<const std::uint8_t*>& slot = rows_[static_cast<std::size_t>(i)];
+  if (const std::uint8_t* cached = slot.load(std::memory_order_acquire)) return cached;
+  const auto width = static_cast<std::size_t>(width_);
+  std::unique_ptr<std::uint8_t[]> decoded(new std::uint8_t[width]());
   std::ifstream f(data_path_, std::ios::binary);
   if (rle_) {
     const auto begin = offsets_[static_cast<std::size_t>(i)], end = offsets_[static_cast<std::size_t>(i + 1)];
@@ -86,18 +87,18 @@ const std::vector<std::uint8_t>& RasterLevel::row(std::int64_t i) const {
     f.seekg(static_cast<std::streamoff>(begin));
     f.read(reinterpret_cast<char*>(runs.data()), static_cast<std::streamsize>(runs.size()));
     std::size_t x = 0;
-    for (std::size_t k = 0; k + 2 < runs.size() && x < decoded->size(); k += 3) {
-      const std::size_t n = std::min<std::size_t>(runs[k + 1] | (runs[k + 2] << 8), decoded->size() - x);
-      std::fill_n(decoded->begin() + static_cast<std::ptrdiff_t>(x), n, runs[k]);
+    for (std::size_t k = 0; k + 2 < runs.size() && x < width; k += 3) {
+      const std::size_t n = std::min<std::size_t>(runs[k + 1] | (runs[k + 2] << 8), width - x);
+      std::fill_n(decoded.get() + x, n, runs[k]);
       x += n;
     }
   } else {
     f.seekg(static_cast<std::streamoff>(i * width_));
-    f.read(reinterpret_cast<char*>(decoded->data()), static_cast<std::streamsize>(width_));
+    f.read(reinterpret_cast<char*>(decoded.get()), static_cast<std::streamsize>(width_));
   }
-  const std::vector<std::uint8_t>* expected = nullptr;
-  if (slot.compare_exchange_strong(expected, decoded.get(), std::memory_order_acq_rel)) return *decoded.release();
-  return *expected;  // another thread decoded it first
+  const std::uint8_t* expected = nullptr;
+  if (slot.compare_exchange_strong(expected, decoded.get(), std::memory_order_acq_rel)) return decoded.release();
+  return expected;  // another thread decoded it first
 }
 
 std::uint8_t RasterLevel::at(double latitude_deg, double longitude_deg) const {
@@ -110,7 +111,7 @@ std::uint8_t RasterLevel::at(double latitude_deg, double longitude_deg) const {
   if (lon < 0) lon += 360.0;
   auto j = static_cast<std::int64_t>(std::floor(lon * per_degree));
   j = std::clamp<std::int64_t>(j, 0, width_ - 1);
-  return row(i)[static_cast<std::size_t>(j)];
+  return row(i)[j];
 }
 
 std::shared_ptr<const SurfaceMap> SurfaceMap::load(const std::vector<std::string>& sidecars) {

@@ -28,14 +28,14 @@ class RasterLevel {
 
  private:
   RasterLevel() = default;
-  const std::vector<std::uint8_t>& row(std::int64_t i) const;
+  const std::uint8_t* row(std::int64_t i) const;  // width_ cells
   std::string data_path_;
   bool rle_ = false;
   std::int64_t width_ = 0, height_ = 0, cells_per_degree_ = 0;
   double lon_west_deg_ = -180, lat_north_deg_ = 90, cell_deg_ = 1;
   double value_scale_ = 1, value_offset_ = 0;
   std::vector<std::uint64_t> offsets_;  // rle: height + 1 row offsets
-  mutable std::unique_ptr<std::atomic<const std::vector<std::uint8_t>*>[]> rows_;
+  mutable std::unique_ptr<std::atomic<const std::uint8_t*>[]> rows_;  // new[]'d when decoded
 };
 
 class SurfaceMap {

@@ -279,3 +279,68 @@ TEST(World, EmissionBoundHoldsOverTheEarth) {
       EXPECT_GT(bound, 1e-3 * brightest);  // 8-12 um: the emission is the signal, never left out
   }
 }
+
+// A two-sided plate is shaded by the face the ray sees (the hit's normal),
+// in smooth and in coarse mode, whichever of its faces (+z or -z) that is: a
+// plate 100 m off, turned 20 deg from the Sun, seen with the Sun behind the
+// sensor shows its sunlit face at every sample (all alike: a uniformly lit
+// Lambertian face), and seen against the Sun its dark face at every sample
+// (its emission alone). The side of a hit point on the plate is rounding, so
+// a face taken from it would flicker between the two from sample to sample.
+TEST(World, PlateShowsTheFaceTheRaySees) {
+  for (const char* mode : {"smooth", "coarse"})
+    for (const bool sun_behind_sensor : {true, false})
+      for (const bool flipped : {false, true}) {
+        auto e = std::make_unique<Engine>();
+        e->set_time(eoir::EngineTime::from(eoir::utc_from_iso("2010-03-30T02:25:00Z")));
+        e->add_object(ObjectKind::satellite, "Host");
+        e->set_property("Host", "shape", Value(std::string("none")));
+        const Eigen::Vector3d host(7000e3, 0, 0);
+        e->push_state("Host", e->time(), 0, host.data(), zero, identity);
+        e->add_sensor("Sensor", "Host");
+        for (const char* p : {"horizontal_pixels", "vertical_pixels"})
+          e->set_property("Sensor", p, Value(std::int64_t{32}));
+        for (const char* p : {"horizontal_fov_deg", "vertical_fov_deg"}) e->set_property("Sensor", p, Value(4.0));
+        e->set_property("Sensor", "band_low_um", Value(0.45));
+        e->set_property("Sensor", "band_high_um", Value(0.75));
+        e->set_property("Sensor", "noise_enabled", Value(false));
+        e->set_property("Sensor", "scene_mode", Value(std::string(mode)));
+        const Eigen::Vector3d to_sun = (e->world("Sensor")->sun.position_m).normalized();
+        const Eigen::Vector3d ahead = sun_behind_sensor ? Eigen::Vector3d(-to_sun) : to_sun;
+        const Eigen::Quaterniond look = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), ahead);
+        const double look_q[4] = {look.w(), look.x(), look.y(), look.z()};
+        e->push_state("Sensor", e->time(), 0, zero, zero, look_q);
+        e->add_object(ObjectKind::satellite, "Plate");
+        e->set_property("Plate", "shape", Value(std::string("plate")));
+        e->set_property("Plate", "dimensions_m", Value(std::vector<double>{2.0, 2.0}));
+        e->set_property("Plate", "reflectance", Value(0.5));
+        const Eigen::Vector3d normal =
+            Eigen::AngleAxisd(20.0 * M_PI / 180.0, to_sun.unitOrthogonal()) * (flipped ? -to_sun : to_sun);
+        const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), normal);
+        const double plate_q[4] = {q.w(), q.x(), q.y(), q.z()};
+        const Eigen::Vector3d plate = host + 100.0 * ahead;
+        e->push_state("Plate", e->time(), 0, plate.data(), zero, plate_q);
+        const eoir::Frame& f = e->render("Sensor");
+        const std::int32_t id = f.world->find("Plate")->id;
+        const auto w = static_cast<std::size_t>(f.grid().width());
+        double lo = INFINITY, hi = 0;
+        std::size_t n = 0;
+        for (std::size_t i = w; i + w < f.scene.hits.size(); ++i) {
+          // Interior samples (edge samples take the mean of sub-samples, some of the sky).
+          bool interior = true;
+          for (std::size_t j : {i, i - 1, i + 1, i - w, i + w}) interior = interior && f.scene.hits[j].object_id == id;
+          if (!interior) continue;
+          lo = std::min(lo, f.scene.image.radiance_W_cm2_sr[i]);
+          hi = std::max(hi, f.scene.image.radiance_W_cm2_sr[i]);
+          ++n;
+        }
+        const std::string what = std::string(mode) + (sun_behind_sensor ? " lit" : " dark") + (flipped ? " -z" : " +z");
+        ASSERT_GT(n, 100u) << what;
+        EXPECT_GT(lo, 0.0) << what;
+        EXPECT_LE(hi, lo * (1 + 1e-9)) << what;
+        if (sun_behind_sensor)
+          EXPECT_GT(lo, 1e-3) << what;  // sunlight: ~0.5 W cm^-2 sr^-1 x 0.5 x cos 20 deg
+        else
+          EXPECT_LT(hi, 1e-15) << what;  // emission of ~300 K in 0.45-0.75 um
+      }
+}

@@ -154,5 +154,5 @@ TEST(Tessellation, CompositeWithOffsetsAndOrientation) {
   for (const auto& sp : parts) expected += g::shape_surface_area_m2(sp.geom);
   EXPECT_NEAR(total / expected, 1.0, 1e-9);
   EXPECT_EQ(t.first_patch[2], t.first_patch[3]);  // none: no patches
-  EXPECT_EQ(g::patch_at(t, parts, 2, Vec3::Zero()), -1);
+  EXPECT_EQ(g::patch_at_facing(t, parts, 2, Vec3::Zero(), Vec3::UnitZ()), -1);
 }

@@ -187,6 +187,33 @@ TEST(ThermalEarth, NightDecaySolvedToRoundingAndOnlyAtNight) {
   EXPECT_GE(solved, 20);  // most of the 30 cycles have an exponential night
 }
 
+// The night decay's x = n/k, the positive root of 1 - exp(-x) = r x, against
+// bisection in long double (F > 0 left of the root, < 0 right of it) from
+// r = 1e-4 (x ~ 1e4) to 1 - 1e-6 (x ~ 2e-6), to a few units of rounding of
+// F in double: |dx/x| <= eps / |F'(x) x| -> eps / (1 - r) as r -> 1 (F' ->
+// r - 1 there; the r of the defaults' days, 0.1-0.4, is far from it).
+TEST(ThermalEarth, NightDecayRootEqualsBisection) {
+  auto bisect = [](long double r) {
+    long double lo = 1e-12L, hi = 2.0L / r;  // F(lo) > 0 for r < 1, F(2/r) < 0
+    for (int i = 0; i < 200; ++i) {
+      const long double mid = 0.5L * (lo + hi);
+      (-std::expm1(-mid) - r * mid > 0 ? lo : hi) = mid;
+    }
+    return 0.5L * (lo + hi);
+  };
+  double worst = 0;
+  for (int i = 0; i <= 4000; ++i) {
+    const double r = i == 0 ? 1e-4 : i == 4000 ? 1.0 - 1e-6 : i / 4000.0 + 1e-7 * std::sin(i);
+    const double x = night_decay_root(r);
+    const double reference = static_cast<double>(bisect(r));
+    worst = std::max(worst, std::fabs(x - reference) / reference * (1.0 - r));
+  }
+  EXPECT_LT(worst, 1e-15);
+  EXPECT_THROW(night_decay_root(0.0), eoir::Error);
+  EXPECT_THROW(night_decay_root(1.0), eoir::Error);
+  EXPECT_THROW(night_decay_root(NAN), eoir::Error);
+}
+
 TEST(ThermalEarth, InterpolatesBetweenBandsAndMonths) {
   const auto& land = climatology().land;
   // 40 N halfway between mid-July and mid-August: the cycle of the bilinear extremes.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "core/constants.hpp"
@@ -208,6 +209,30 @@ Brdf::Brdf(const BrdfParameters& parameters) : parameters_(parameters) {
   // All flux diffuse (k0 = 1 or flat lobes): exactly 1/pi, whatever the
   // rounding of the weights.
   diffuse_per_sr_ = lobes_.empty() ? kInvPi : diffuse_fraction * kInvPi;
+  // N.L value() <= diffuse + sum over lobes of max N.L weight / H(N.L)
+  // (e^(kappa (cos - 1)) <= 1): per interval of H's table, its upper N.L over
+  // the least H of its cubic (at the ends and stationary points).
+  max_projected_value_per_sr_ = diffuse_per_sr_;
+  for (const Lobe& lobe : lobes_) {
+    double most = 0;
+    for (std::size_t i = 0; i < lobe.cubic.size(); ++i) {
+      const auto& c = lobe.cubic[i];
+      const auto at = [&c](double t) { return c[0] + t * (c[1] + t * (c[2] + t * c[3])); };
+      double least = std::min(at(0.0), at(1.0));
+      // H' = c1 + 2 c2 t + 3 c3 t^2 = 0 inside (0, 1).
+      const double a = 3.0 * c[3], b = 2.0 * c[2], d = c[1];
+      if (a != 0.0 && b * b - 4.0 * a * d >= 0.0) {
+        for (const double t : {(-b + std::sqrt(b * b - 4.0 * a * d)) / (2.0 * a),
+                               (-b - std::sqrt(b * b - 4.0 * a * d)) / (2.0 * a)})
+          if (t > 0.0 && t < 1.0) least = std::min(least, at(t));
+      } else if (a == 0.0 && b != 0.0 && -d / b > 0.0 && -d / b < 1.0) {
+        least = std::min(least, at(-d / b));
+      }
+      const double upper_cos = static_cast<double>(i + 1) / lobe.intervals_per_unit_cos;
+      most = std::max(most, least > 0.0 ? upper_cos * lobe.weight / least : std::numeric_limits<double>::infinity());
+    }
+    max_projected_value_per_sr_ += most;
+  }
 }
 
 double Brdf::Lobe::normalization_H(double cos_incidence) const noexcept {

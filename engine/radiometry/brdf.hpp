@@ -89,6 +89,9 @@ class Brdf {
   const BrdfParameters& parameters() const { return parameters_; }
   // True when the BRDF is exactly 1/pi: k0 = 1, or every weighted lobe flat.
   bool lambertian() const { return lobes_.empty(); }
+  // At least N.L value() for every geometry (1/sr; what a source's
+  // irradiance at normal incidence is multiplied by); 1/pi when lambertian().
+  double max_projected_value_per_sr() const { return max_projected_value_per_sr_; }
 
  private:
   // One directional lobe: weight * e^{kappa (cos - 1)} / H(kappa, N.L), with
@@ -104,6 +107,7 @@ class Brdf {
 
   BrdfParameters parameters_;
   double diffuse_per_sr_ = 0.0;  // k0/pi plus flat lobes
+  double max_projected_value_per_sr_ = 0.0;
   std::vector<Lobe> lobes_;      // the non-flat lobes with weight > 0
 };
 

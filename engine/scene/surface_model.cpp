@@ -74,8 +74,21 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
   for (const PartSurface& s : parts_) hottest_K = std::max(hottest_K, s.temperature_K);
   if (thermal_.subsolar) hottest_K = std::max({hottest_K, thermal_.subsolar_K, thermal_.night_K}) + table_dT_;
   if (geography_.climatology) hottest_K = std::max(hottest_K, geography_.climatology_now.hottest_K());
+  // The coldest: the climatology's day (every point of a central body with
+  // one), eq. 12 falls to 0 K at the terminator (the airless night stays at
+  // or above its minimum), else the coldest part.
+  double coldest_K = std::numeric_limits<double>::infinity();
+  for (const PartSurface& s : parts_) coldest_K = std::min(coldest_K, s.temperature_K);
+  if (thermal_.subsolar) coldest_K = thermal_.airless_night ? thermal_.night_K : 0.0;
+  if (geography_.climatology) coldest_K = geography_.climatology_now.coldest_K();
+  emission_floor_ = std::numeric_limits<double>::infinity();
   const auto bound = [&](const SurfaceSpectrum* s) {
-    if (s) emission_bound_ = std::max(emission_bound_, s->emission_radiance(hottest_K));
+    if (!s) return;
+    emission_bound_ = std::max(emission_bound_, s->emission_radiance(hottest_K));
+    emission_floor_ = std::min(emission_floor_, coldest_K > 0 ? s->emission_radiance(coldest_K) : 0.0);
+    if (!s->reflects()) return;
+    const double max_srf = *std::max_element(s->srf().begin(), s->srf().end());
+    reflection_bound_per_sr_ = std::max(reflection_bound_per_sr_, max_srf * s->brdf().max_projected_value_per_sr());
   };
   for (const PartSurface& s : parts_) bound(s.spectrum);
   for (const auto* s : geography_.class_spectra) bound(s);

@@ -185,6 +185,9 @@ class ClimatologyInstant {
   // No temperature_K of this instant exceeds it: the day's greatest t_max
   // (the diurnal cycle stays within t_min..t_max).
   double hottest_K() const { return std::max(land_.hottest_K(), water_.hottest_K()); }
+  // No temperature_K of this instant is below it: the day's least t_min (the
+  // cycle's minimum, at sunrise).
+  double coldest_K() const { return std::min(land_.coldest_K(), water_.coldest_K()); }
 
  private:
   universe::ClimatologyDay land_, water_;

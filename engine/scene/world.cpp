@@ -16,9 +16,10 @@ namespace eoir::scene {
 namespace {
 using universe::ObjectKind;
 
-// Relative size below which a sample's self-emission is left out beside its
-// reflected light (WorldObject::effective_radiance).
-constexpr double kNegligibleEmission = 1e-10;
+// Relative size below which a term of a sample's radiance is left out: its
+// self-emission beside its reflected light (WorldObject::effective_radiance),
+// an eq. 7 source's light beside its self-emission (build_world).
+constexpr double kNegligible = 1e-10;
 
 // True if a sphere (centre in sensor body axes, radius) lies wholly outside
 // the pyramid of the sample grid (field of view plus guard band).
@@ -242,7 +243,7 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
   // Every other object: a Lambertian sphere (eq. 7) or its tessellation (eq. 8).
   for (std::size_t k = 0; k < w.lights.size(); ++k) {
     const ObjectLight& src = w.lights[k];
-    if (src.object == id) continue;
+    if (src.object == id || negligible_light_[k]) continue;
     const Vec3 to_src = src.position_m - p;
     const double d = to_src.norm();
     if (!(d > src.radius_m)) continue;
@@ -364,10 +365,10 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
     for (std::size_t i = 0; i < E.size(); ++i) E[i] *= s.srf()[i];
     reflected = world_->view.spectral.integrate(E);
   }
-  // Self-emission that cannot reach kNegligibleEmission of the reflected
+  // Self-emission that cannot reach kNegligible of the reflected
   // light (a visible band by day: B(0.75 um, 380 K) ~ 1e-22 of the Sun's) is
   // left out: it would change the sum by less than that, relative.
-  if (reflected > surface->emission_bound() / kNegligibleEmission) return reflected;
+  if (reflected > surface->emission_bound() / kNegligible) return reflected;
   return (interpolated ? surface->emission_radiance_interpolated(point) : surface->emission_radiance(point)) +
          reflected;
 }
@@ -654,6 +655,31 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   for (const auto& w : world->objects)
     for (const ObjectLight& light : world->lights)
       w->occulters_.push_back(candidates(*w, light.position_m, light.radius_m, light.object));
+  // A source whose eq. 7 light cannot reach kNegligible of a receiver's
+  // coldest self-emission anywhere on it is left out there (a 1 m satellite
+  // 700 km above the Earth in 8-12 um: ~1e-11). Its bound: the greatest
+  // dOmega = pi (R / d)^2 (d from the receiver's bounding sphere), times
+  // SRF x BRDF x cos(incidence) at most, times the band integral of its
+  // reflected (Phase <= 1) plus emitted spectra; only where eq. 7, not eq. 8,
+  // serves it.
+  for (const auto& w : world->objects) {
+    w->negligible_light_.assign(world->lights.size(), 0);
+    const double floor = w->surface->emission_floor(), reflection = w->surface->reflection_bound_per_sr();
+    if (!(floor > 0) || !std::isfinite(reflection) || !w->surface->reflects()) continue;
+    for (std::size_t j = 0; j < world->lights.size(); ++j) {
+      const ObjectLight& light = world->lights[j];
+      if (light.object == w->id) continue;
+      const double d = (light.position_m - w->placed.position_m).norm() - w->bounding_radius_m;
+      if (!(d > light.radius_m)) continue;
+      const double omega = constants::pi * (light.radius_m / d) * (light.radius_m / d);
+      if (light.area_source && omega > f.area_source_solid_angle_sr) continue;
+      const LightSpectra& s = world->objects[static_cast<std::size_t>(light.object)]->light_spectra();
+      std::vector<double> both(s.reflected.size());
+      for (std::size_t i = 0; i < both.size(); ++i) both[i] = s.reflected[i] + s.emitted[i];
+      const double bound = omega * reflection * world->view.spectral.integrate(both);
+      w->negligible_light_[j] = bound < kNegligible * floor;
+    }
+  }
 
   std::vector<const geometry::PlacedObject*> cast_against;
   for (const auto& w : world->objects) cast_against.push_back(&w->placed);

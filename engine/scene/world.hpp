@@ -165,6 +165,7 @@ class WorldObject {
   const World* world_ = nullptr;
   std::int32_t light_ = -1;  // index in World::lights, -1 if not a source
   std::vector<std::vector<geometry::Occulter>> occulters_;  // per light (0 the Sun, 1 + k lights[k]): may shade it
+  std::vector<char> negligible_light_;  // per lights[k]: its light here is below kNegligible of the self-emission
   mutable std::once_flag tessellated_;
   mutable geometry::Tessellation tessellation_;
   mutable std::unique_ptr<std::atomic<double>[]> patch_cache_;  // NaN until computed

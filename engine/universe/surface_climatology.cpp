@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -199,6 +200,12 @@ DailyExtremes ClimatologyTable::at(double latitude_deg, double day_of_year) cons
 double ClimatologyDay::hottest_K() const {
   double t = 0.0;
   for (const DailyExtremes& b : bands_) t = std::max(t, b.t_max_K);
+  return t;
+}
+
+double ClimatologyDay::coldest_K() const {
+  double t = std::numeric_limits<double>::infinity();
+  for (const DailyExtremes& b : bands_) t = std::min(t, b.t_min_K);
   return t;
 }
 

@@ -53,8 +53,9 @@ class ClimatologyDay {
   // Linear in latitude between band centres, the end bands held beyond
   // them; throws out_of_range for a non-finite latitude or one outside [-90, 90].
   DailyExtremes at(double latitude_deg) const;
-  // The greatest t_max_K of any band (at() never exceeds it).
+  // The greatest t_max_K and the least t_min_K of any band (at() stays within them).
   double hottest_K() const;
+  double coldest_K() const;
 
  private:
   friend class ClimatologyTable;

@@ -344,3 +344,47 @@ TEST(World, PlateShowsTheFaceTheRaySees) {
           EXPECT_LT(hi, 1e-15) << what;  // emission of ~300 K in 0.45-0.75 um
       }
 }
+
+// Eq. 7 light is left out only where it is below 1e-10 of the self-emission:
+// a 1 m, 300 K black sphere h above the surface of a 100 km, 250 K gray
+// sphere (SRF 0.3) in 8-12 um lights the point beneath it with (R / h)^2 x
+// 0.3 x L(300 K) (eq. 7 straight overhead: dOmega = pi (R / h)^2, BRDF 1/pi).
+// With and without the source in the universe: the difference at that point
+// is that (where it is kept), or the source was left out and that is below
+// 1e-10 of the point's radiance.
+TEST(World, NegligibleLightIsBelowItsThreshold) {
+  const double source_radius_m = 1.0, receiver_radius_m = 100e3;
+  const Eigen::Vector3d receiver(20000e3, 0, 0), up = Eigen::Vector3d::UnitX();
+  auto radiance_beneath = [&](double h_m, bool with_source, double* source_L) {
+    auto e = geo_engine();
+    e->add_object(ObjectKind::satellite, "Receiver");
+    e->set_property("Receiver", "dimensions_m", Value(std::vector<double>{receiver_radius_m}));
+    e->set_property("Receiver", "temperature_K", Value(250.0));
+    e->set_property("Receiver", "reflectance", Value(0.3));
+    e->push_state("Receiver", e->time(), 0, receiver.data(), zero, identity);
+    if (with_source) {
+      const Eigen::Vector3d p = receiver + (receiver_radius_m + h_m) * up;
+      add_sphere(*e, "Source", source_radius_m, p.data());
+      e->set_property("Source", "temperature_K", Value(300.0));
+    }
+    const auto world = e->world("Sensor");
+    if (source_L) *source_L = world->find("Source")->surface->part_radiance(0);
+    const eoir::scene::WorldObject& r = *world->find("Receiver");
+    return r.effective_radiance(0, receiver_radius_m * up, up);
+  };
+  int kept = 0, left_out = 0;
+  for (double h_m : {1e3, 3e4, 3e5, 3e6}) {
+    double source_L = 0;
+    const double with = radiance_beneath(h_m, true, &source_L), without = radiance_beneath(h_m, false, nullptr);
+    const double expected = (source_radius_m / h_m) * (source_radius_m / h_m) * 0.3 * source_L;
+    if (with == without) {
+      ++left_out;
+      EXPECT_LT(expected, 1e-10 * without) << h_m;
+    } else {
+      ++kept;
+      EXPECT_NEAR(with - without, expected, 1e-6 * expected) << h_m;
+    }
+  }
+  EXPECT_EQ(kept, 2);  // 1 and 30 km
+  EXPECT_EQ(left_out, 2);
+}

@@ -249,6 +249,43 @@ TEST(Brdf, FiniteEverywhere) {
   }
 }
 
+// max_projected_value_per_sr() bounds N.L value() everywhere and is near its
+// peak: the mirror and backscatter directions (where the lobes peak) at
+// incidences from grazing to normal, and random pairs; 1/pi for a Lambertian BRDF.
+TEST(Brdf, MaxProjectedValueBoundsEveryGeometry) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const Vector3d N = Vector3d::UnitZ();
+  for (const r::BrdfParameters& p :
+       {r::BrdfParameters{1.0, 0.0, 0.0, 0.0}, r::BrdfParameters{0.3, 0.05, 30.0, 2.0},
+        r::BrdfParameters{0.9, 0.7, 1.0, 3.0}, r::BrdfParameters{0.0, 0.0, 1000.0, 0.0},
+        r::BrdfParameters{0.0, 1.0, 0.0, 1000.0}, r::BrdfParameters{0.1, 0.05, 60.0, 5.0}}) {
+    const r::Brdf brdf(p);
+    const double bound = brdf.max_projected_value_per_sr();
+    ASSERT_TRUE(std::isfinite(bound));
+    if (brdf.lambertian()) {
+      EXPECT_EQ(bound, 1.0 / kPi);
+    }
+    double peak = 0;
+    for (int i = 0; i <= 2000; ++i) {
+      const double incidence = 0.5 * kPi * (1.0 - std::pow(i / 2000.0, 3)) * (1 - 1e-9);  // dense near grazing
+      const Vector3d l = direction(incidence, 0.3);
+      const Vector3d mirror(-l.x(), -l.y(), l.z());
+      for (const Vector3d& v : {mirror, l}) {
+        const double projected = l.z() * brdf.value(l, v, N);
+        ASSERT_LE(projected, bound) << p.k0 << " " << p.alpha << " " << p.beta << " at " << incidence;
+        peak = std::max(peak, projected);
+      }
+    }
+    for (int i = 0; i < 20000; ++i) {
+      const Vector3d l = direction(std::acos(u(rng)), 2.0 * kPi * u(rng));
+      const Vector3d v = direction(std::acos(u(rng)), 2.0 * kPi * u(rng));
+      ASSERT_LE(l.z() * brdf.value(l, v, N), bound);
+    }
+    EXPECT_GT(peak, 0.8 * bound) << p.k0 << " " << p.alpha << " " << p.beta;
+  }
+}
+
 TEST(Brdf, ValidateRefusesOutOfRangeNamingTheField) {
   const double nan = std::nan(""), inf = HUGE_VAL;
   struct Case {

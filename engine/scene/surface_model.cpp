@@ -10,24 +10,28 @@
 
 namespace eoir::scene {
 
-void Geography::latitude_longitude_deg(const Vec3& p, double& latitude_deg, double& longitude_deg) const {
-  const double rho = std::hypot(p.x(), p.y());
-  longitude_deg = std::atan2(p.y(), p.x()) * constants::deg_per_rad;
-  if (!geodetic) {
-    latitude_deg = std::atan2(p.z(), rho) * constants::deg_per_rad;
-    return;
-  }
+void Geography::locate(const Vec3& p, SurfacePoint& point) const {
+  const double rho = std::sqrt(p.x() * p.x() + p.y() * p.y());
+  point.longitude_deg = std::atan2(p.y(), p.x()) * constants::deg_per_rad;
+  // The latitude as atan2(u, v), its sine and cosine u / |(u, v)|, v / |(u, v)|.
+  const auto set_latitude = [&point](double u, double v) {
+    point.latitude_deg = std::atan2(u, v) * constants::deg_per_rad;
+    const double r = std::sqrt(u * u + v * v);
+    point.sin_latitude = r > 0 ? u / r : 0.0;
+    point.cos_latitude = r > 0 ? v / r : 1.0;
+  };
+  if (!geodetic) return set_latitude(p.z(), rho);
   // On the spheroid (a ray's hit) the geodetic latitude is the normal's
   // elevation, tan(lat) = (a/c)^2 z / rho; off it (a patch centre) WGS84's
   // geodetic inverse (GeographicLib).
   const double a = equatorial_radius_m, c = polar_radius_m;
   const double on_surface = (rho / a) * (rho / a) + (p.z() / c) * (p.z() / c) - 1.0;
-  if (std::fabs(on_surface) <= 1e-12) {
-    latitude_deg = std::atan2(a * a * p.z(), c * c * rho) * constants::deg_per_rad;
-    return;
-  }
+  if (std::fabs(on_surface) <= 1e-12) return set_latitude(a * a * p.z(), c * c * rho);
   double h = 0;
-  GeographicLib::Geocentric(a, (a - c) / a).Reverse(p.x(), p.y(), p.z(), latitude_deg, longitude_deg, h);
+  GeographicLib::Geocentric(a, (a - c) / a).Reverse(p.x(), p.y(), p.z(), point.latitude_deg, point.longitude_deg, h);
+  const double lat = point.latitude_deg * constants::rad_per_deg;
+  point.sin_latitude = std::sin(lat);
+  point.cos_latitude = std::cos(lat);
 }
 
 SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal, std::vector<double> self_radiance,
@@ -99,7 +103,7 @@ SurfacePoint SurfaceModel::at(const SurfaceSite& site) const {
   SurfacePoint point{site, parts_[index(site.part)].spectrum};
   const Geography& g = geography_;
   if (g.bitmap() || (g.climatology && g.land_mask))
-    g.latitude_longitude_deg(site.point_body_m, point.latitude_deg, point.longitude_deg);
+    g.locate(site.point_body_m, point);
   if (g.land_cover) {
     const std::uint8_t c = g.land_cover->at(point.latitude_deg, point.longitude_deg);
     if (c < g.class_spectra.size() && g.class_spectra[c]) point.spectrum = g.class_spectra[c];
@@ -116,7 +120,8 @@ double SurfaceModel::temperature_K(const SurfacePoint& point) const {
   if (!g.climatology || !g.land_mask) return thermal_.at(point.site.normal_body, part.temperature_K);
   const auto kind = g.land_mask->at(point.latitude_deg, point.longitude_deg) ? universe::SurfaceKind::land
                                                                              : universe::SurfaceKind::water;
-  return g.climatology_now.temperature_K(kind, point.latitude_deg, point.longitude_deg);
+  return g.climatology_now.temperature_K(kind, point.latitude_deg, point.sin_latitude, point.cos_latitude,
+                                         point.longitude_deg);
 }
 
 void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& out) const {

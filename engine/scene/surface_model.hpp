@@ -41,6 +41,7 @@ struct SurfacePoint {
   SurfaceSite site;
   const SurfaceSpectrum* spectrum = nullptr;
   double latitude_deg = 0.0, longitude_deg = 0.0;  // central bodies with maps or a climatology
+  double sin_latitude = 0.0, cos_latitude = 1.0;
 };
 
 // A central body's coordinates and the maps read at a point.
@@ -57,7 +58,8 @@ struct Geography {
   const universe::RasterLevel* land_mask = nullptr;
   const universe::SurfaceClimatology* climatology = nullptr;
   ClimatologyInstant climatology_now;  // the tables and the Sun at the frame's time
-  void latitude_longitude_deg(const Vec3& point_body_m, double& latitude_deg, double& longitude_deg) const;
+  // The latitude (geodetic on the Earth), its sine and cosine, and the longitude of a point.
+  void locate(const Vec3& point_body_m, SurfacePoint& point) const;
   bool bitmap() const { return land_cover || albedo; }
 };
 

@@ -112,33 +112,43 @@ double local_solar_time_h(const EngineTime& time, double longitude_deg) {
   return local_solar_time_h(c.utc_hours, longitude_deg, c.day_of_year);
 }
 
-SunriseSunset sunrise_sunset(double latitude_deg, double declination_deg, double horizon_elevation_deg) {
+SunPathAngles SunPathAngles::from_deg(double latitude_deg, double declination_deg, double horizon_elevation_deg) {
   require_range(latitude_deg, -90.0, 90.0, "latitude_deg");
   require_range(declination_deg, -90.0, 90.0, "declination_deg");
   require_range(horizon_elevation_deg, -90.0, 90.0, "horizon_elevation_deg");
-  // The declination and horizon are the same for every point of a frame:
-  // their sines are kept from this thread's last call.
-  thread_local double last_declination_deg = NAN, sin_dec = 0, cos_dec = 1;
-  thread_local double last_horizon_deg = NAN, sin_e0 = 0;
-  if (!(declination_deg == last_declination_deg)) {
-    const double dec = declination_deg * rad_per_deg;
-    sin_dec = std::sin(dec);
-    cos_dec = std::cos(dec);
-    last_declination_deg = declination_deg;
-  }
-  if (!(horizon_elevation_deg == last_horizon_deg)) {
-    sin_e0 = std::sin(horizon_elevation_deg * rad_per_deg);
-    last_horizon_deg = horizon_elevation_deg;
-  }
-  const double lat = latitude_deg * rad_per_deg;
-  const double a = std::sin(lat) * sin_dec, b = std::cos(lat) * cos_dec;
+  const double lat = latitude_deg * rad_per_deg, dec = declination_deg * rad_per_deg;
+  return {std::sin(lat), std::cos(lat), std::sin(dec), std::cos(dec), std::sin(horizon_elevation_deg * rad_per_deg)};
+}
+
+namespace {
+
+// Half the Sun's arc above the horizon: cos h0 = (sin e0 - sin(lat) sin(decl))
+// / (cos(lat) cos(decl)); h0 in (0, pi) rad and its sine, or a polar day or night.
+struct HalfDay {
+  enum Kind { arc, polar_day, polar_night } kind = arc;
+  double h0_rad = 0.0, sin_h0 = 0.0;
+};
+HalfDay half_day(const SunPathAngles& s) {
   // Elevation over the day: sin e = a + b cos h.
-  if (b <= 1e-12 || (sin_e0 - a) / b <= -1.0)
-    return a + b > sin_e0 ? SunriseSunset{0.0, 24.0} : SunriseSunset{12.0, 12.0};
-  const double c = (sin_e0 - a) / b;
-  if (c >= 1.0) return {12.0, 12.0};
-  const double h0_h = std::acos(c) * deg_per_rad / 15.0;
+  const double a = s.sin_latitude * s.sin_declination, b = s.cos_latitude * s.cos_declination;
+  if (b <= 1e-12 || (s.sin_horizon - a) / b <= -1.0)
+    return {a + b > s.sin_horizon ? HalfDay::polar_day : HalfDay::polar_night, 0.0, 0.0};
+  const double c = (s.sin_horizon - a) / b;
+  if (c >= 1.0) return {HalfDay::polar_night, 0.0, 0.0};
+  return {HalfDay::arc, std::acos(c), std::sqrt((1.0 - c) * (1.0 + c))};
+}
+
+SunriseSunset sunrise_sunset(const HalfDay& d) {
+  if (d.kind == HalfDay::polar_day) return {0.0, 24.0};
+  if (d.kind == HalfDay::polar_night) return {12.0, 12.0};
+  const double h0_h = d.h0_rad * deg_per_rad / 15.0;
   return {12.0 - h0_h, 12.0 + h0_h};
+}
+
+}  // namespace
+
+SunriseSunset sunrise_sunset(double latitude_deg, double declination_deg, double horizon_elevation_deg) {
+  return sunrise_sunset(half_day(SunPathAngles::from_deg(latitude_deg, declination_deg, horizon_elevation_deg)));
 }
 
 // ---- 1. Earth land and water ------------------------------------------------
@@ -225,12 +235,12 @@ double night_decay_root(double r) {
 
 DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
                            const DiurnalShape& shape)
-    : DiurnalCycle(t_min_K, t_max_K, latitude_deg, declination_deg, shape, DayOnly{}) {
+    : DiurnalCycle(t_min_K, t_max_K,
+                   SunPathAngles::from_deg(latitude_deg, declination_deg, shape.horizon_elevation_deg), shape) {
   solve_night();
 }
 
-DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
-                           const DiurnalShape& shape, DayOnly)
+DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, const SunPathAngles& sun, const DiurnalShape& shape)
     : t_min_K_(t_min_K), t_max_K_(t_max_K) {
   require_finite(t_min_K, "t_min_K");
   require_finite(t_max_K, "t_max_K");
@@ -240,11 +250,14 @@ DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, 
   require_range(shape.max_lag_h, 0.0, 3.0, "max_lag_h");
   require_range(shape.min_day_length_h, 1e-3, 12.0, "min_day_length_h");
 
-  const double day_h = std::clamp(sunrise_sunset(latitude_deg, declination_deg, shape.horizon_elevation_deg).length_h(),
-                                  shape.min_day_length_h, kHoursPerDay);
+  const HalfDay half = half_day(sun);
+  const double length_h = sunrise_sunset(half).length_h();
+  const double day_h = std::clamp(length_h, shape.min_day_length_h, kHoursPerDay);
   sunrise_h_ = 12.0 - 0.5 * day_h;
   sunset_h_ = 12.0 + 0.5 * day_h;
-  const double lag_h = shape.max_lag_h * std::sin(pi * day_h / kHoursPerDay);
+  // sin(pi D / 24 h) = sin h0 for the Sun's own day (pi D / 24 h = h0).
+  const bool own_day = half.kind == HalfDay::arc && day_h == length_h;
+  const double lag_h = shape.max_lag_h * (own_day ? half.sin_h0 : std::sin(pi * day_h / kHoursPerDay));
   time_of_max_h_ = 12.0 + lag_h;
   half_period_h_ = 2.0 * (time_of_max_h_ - sunrise_h_);  // cos = 0 at sunrise: T(t_sr) = t_min
   const double range_K = t_max_K - t_min_K;
@@ -273,10 +286,15 @@ void DiurnalCycle::solve_night() {
 
 double DiurnalCycle::temperature_K(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
                                    double local_solar_time_h, const DiurnalShape& shape) {
-  DiurnalCycle cycle(t_min_K, t_max_K, latitude_deg, declination_deg, shape, DayOnly{});
-  const double u = cycle.from_sunrise_h(local_solar_time_h);
-  if (u > cycle.sunset_h_) cycle.solve_night();  // only a night-time point needs the decay
-  return cycle.temperature_at_K(u);
+  return DiurnalCycle(t_min_K, t_max_K, SunPathAngles::from_deg(latitude_deg, declination_deg, shape.horizon_elevation_deg),
+                      shape)
+      .temperature_solving_night_K(local_solar_time_h);
+}
+
+double DiurnalCycle::temperature_solving_night_K(double local_solar_time_h) {
+  const double u = from_sunrise_h(local_solar_time_h);
+  if (u > sunset_h_) solve_night();  // only a night-time point needs the decay
+  return temperature_at_K(u);
 }
 
 double DiurnalCycle::temperature_K(double local_solar_time_h) const {
@@ -312,24 +330,35 @@ double surface_temperature_K(const universe::SurfaceClimatology& climatology, un
 double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
                              double latitude_deg, double longitude_deg, const EngineTime& time,
                              const DiurnalShape& shape) {
-  const ClimatologyInstant now(climatology, calendar_instant(time));
-  return now.temperature_K(kind, latitude_deg, longitude_deg, shape);
+  const ClimatologyInstant now(climatology, calendar_instant(time), shape);
+  return now.temperature_K(kind, latitude_deg, longitude_deg);
 }
 
 ClimatologyInstant::ClimatologyInstant(const universe::SurfaceClimatology& climatology,
-                                       const CalendarInstant& calendar)
+                                       const CalendarInstant& calendar, const DiurnalShape& shape)
     : land_(climatology.land.day(calendar.day_of_year)),
       water_(climatology.water.day(calendar.day_of_year)),
       calendar_(calendar),
+      shape_(shape),
       declination_deg_(solar_declination_deg(calendar.day_of_year)),
-      equation_of_time_min_(equation_of_time_min(calendar.day_of_year)) {}
+      equation_of_time_min_(equation_of_time_min(calendar.day_of_year)),
+      sun_(SunPathAngles::from_deg(0.0, declination_deg_, shape.horizon_elevation_deg)) {}
 
-double ClimatologyInstant::temperature_K(universe::SurfaceKind kind, double latitude_deg, double longitude_deg,
-                                         const DiurnalShape& shape) const {
+double ClimatologyInstant::temperature_K(universe::SurfaceKind kind, double latitude_deg, double longitude_deg) const {
+  require_range(latitude_deg, -90.0, 90.0, "latitude_deg");
+  const double lat = latitude_deg * rad_per_deg;
+  return temperature_K(kind, latitude_deg, std::sin(lat), std::cos(lat), longitude_deg);
+}
+
+double ClimatologyInstant::temperature_K(universe::SurfaceKind kind, double latitude_deg, double sin_latitude,
+                                         double cos_latitude, double longitude_deg) const {
   const universe::DailyExtremes x = (kind == universe::SurfaceKind::land ? land_ : water_).at(latitude_deg);
-  return DiurnalCycle::temperature_K(
-      x.t_min_K, x.t_max_K, latitude_deg, declination_deg_,
-      local_solar_time_from_eot_h(calendar_.utc_hours, longitude_deg, equation_of_time_min_), shape);
+  SunPathAngles sun = sun_;
+  sun.sin_latitude = sin_latitude;
+  sun.cos_latitude = cos_latitude;
+  return DiurnalCycle(x.t_min_K, x.t_max_K, sun, shape_)
+      .temperature_solving_night_K(
+          local_solar_time_from_eot_h(calendar_.utc_hours, longitude_deg, equation_of_time_min_));
 }
 
 // ---- 2. Airless central bodies ----------------------------------------------

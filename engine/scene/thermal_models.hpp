@@ -118,6 +118,16 @@ struct SunriseSunset {
 SunriseSunset sunrise_sunset(double latitude_deg, double declination_deg,
                              double horizon_elevation_deg = kSunriseElevation_deg);
 
+// The Sun's daily path at a latitude as sines and cosines: the latitude's,
+// the declination's, and the sine of the sunrise elevation.
+struct SunPathAngles {
+  double sin_latitude = 0.0, cos_latitude = 1.0;
+  double sin_declination = 0.0, cos_declination = 1.0;
+  double sin_horizon = 0.0;
+  // From degrees (validated: latitude and declination in [-90, 90], the elevation too).
+  static SunPathAngles from_deg(double latitude_deg, double declination_deg, double horizon_elevation_deg);
+};
+
 // ---- 1. Earth land and water ------------------------------------------------
 
 struct DiurnalShape {
@@ -151,9 +161,11 @@ class DiurnalCycle {
   double sunset_K() const { return sunset_K_; }
 
  private:
-  struct DayOnly {};  // the day branch alone; solve_night() adds the night
-  DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
-               const DiurnalShape& shape, DayOnly);
+  friend class ClimatologyInstant;
+  // The day branch alone; solve_night() adds the night.
+  DiurnalCycle(double t_min_K, double t_max_K, const SunPathAngles& sun, const DiurnalShape& shape);
+  // temperature_K(local solar time) of a cycle with the day branch alone.
+  double temperature_solving_night_K(double local_solar_time_h);
   void solve_night();
   double from_sunrise_h(double local_solar_time_h) const;  // the local time in [t_sr, t_sr + 24) h
   double temperature_at_K(double from_sunrise_h) const;
@@ -174,14 +186,18 @@ double surface_temperature_K(const universe::SurfaceClimatology& climatology, un
                              double latitude_deg, double longitude_deg, const EngineTime& time,
                              const DiurnalShape& shape = {});
 // The climatology and the Sun at one instant, computed once for a frame:
-// both tables at the day of year, the declination and the equation of time.
+// both tables at the day of year, the declination (its sine and cosine), the
+// equation of time and the diurnal shape (its horizon's sine).
 class ClimatologyInstant {
  public:
   ClimatologyInstant() = default;
-  ClimatologyInstant(const universe::SurfaceClimatology& climatology, const CalendarInstant& calendar);
+  ClimatologyInstant(const universe::SurfaceClimatology& climatology, const CalendarInstant& calendar,
+                     const DiurnalShape& shape = {});
   // surface_temperature_K at a geodetic latitude/longitude (deg).
-  double temperature_K(universe::SurfaceKind kind, double latitude_deg, double longitude_deg,
-                       const DiurnalShape& shape = {}) const;
+  double temperature_K(universe::SurfaceKind kind, double latitude_deg, double longitude_deg) const;
+  // The same with the latitude's sine and cosine given (a surface point has them).
+  double temperature_K(universe::SurfaceKind kind, double latitude_deg, double sin_latitude, double cos_latitude,
+                       double longitude_deg) const;
   // No temperature_K of this instant exceeds it: the day's greatest t_max
   // (the diurnal cycle stays within t_min..t_max).
   double hottest_K() const { return std::max(land_.hottest_K(), water_.hottest_K()); }
@@ -192,7 +208,9 @@ class ClimatologyInstant {
  private:
   universe::ClimatologyDay land_, water_;
   CalendarInstant calendar_;
+  DiurnalShape shape_;
   double declination_deg_ = 0.0, equation_of_time_min_ = 0.0;
+  SunPathAngles sun_;  // the declination's and the horizon's (the latitude's per point)
 };
 
 // ---- 2. Airless central bodies ----------------------------------------------

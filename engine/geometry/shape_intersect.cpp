@@ -27,11 +27,12 @@ constexpr double kInsideTolerance = 1e-9;  // relative depth for "observer insid
 // Sphere / ellipsoid of revolution, ray already shifted near the centre.
 bool hit_spheroid(double a, double c, const Vec3& o, const Vec3& d, double t_min, double t_max, double& t,
                   Vec3& n) {
-  const Vec3 s(1.0 / a, 1.0 / a, 1.0 / c);
-  const Vec3 os = o.cwiseProduct(s);
-  const Vec3 ds = d.cwiseProduct(s);
+  const double inv_a = 1.0 / a, inv_c = 1.0 / c;
+  const Vec3 os(o.x() * inv_a, o.y() * inv_a, o.z() * inv_c);
+  const Vec3 ds(d.x() * inv_a, d.y() * inv_a, d.z() * inv_c);
   const double len = ds.norm();  // scaled parameter = t * len
-  const Vec3 dh = ds / len;
+  const double inv_len = 1.0 / len;
+  const Vec3 dh = ds * inv_len;
   const double b = os.dot(dh);
   const Vec3 l = os - b * dh;  // perpendicular from the centre (scaled units)
   const double ll = l.norm();
@@ -41,10 +42,11 @@ bool hit_spheroid(double a, double c, const Vec3& o, const Vec3& d, double t_min
   const double cc = (os.squaredNorm() - 1.0);
   double entry = q;  // scaled units
   if (q != 0.0) entry = std::min(q, cc / q);
-  const double tt = entry / len;
+  const double tt = entry * inv_len;
   if (!(tt > t_min && tt < t_max)) return false;
   const Vec3 p = o + tt * d;
-  n = Vec3(p.x() / (a * a), p.y() / (a * a), p.z() / (c * c)).normalized();
+  const Vec3 gradient(p.x() * (inv_a * inv_a), p.y() * (inv_a * inv_a), p.z() * (inv_c * inv_c));
+  n = gradient * (1.0 / gradient.norm());
   t = tt;
   return true;
 }

@@ -92,6 +92,7 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
     emission_floor_ = std::min(emission_floor_, coldest_K > 0 ? s->emission_radiance(coldest_K) : 0.0);
     if (!s->reflects()) return;
     const double max_srf = *std::max_element(s->srf().begin(), s->srf().end());
+    srf_bound_ = std::max(srf_bound_, max_srf);
     reflection_bound_per_sr_ = std::max(reflection_bound_per_sr_, max_srf * s->brdf().max_projected_value_per_sr());
   };
   for (const PartSurface& s : parts_) bound(s.spectrum);

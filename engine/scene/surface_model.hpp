@@ -100,8 +100,10 @@ class SurfaceModel {
   // and for a tabulated radiance, which reflects nothing).
   double emission_floor() const { return emission_floor_; }
   // At least SRF(lambda) x BRDF x cos(incidence) (1/sr) of any of its
-  // materials at any wavelength and geometry (0 if none reflects).
+  // materials at any wavelength and geometry, and at least SRF(lambda) (0
+  // if none reflects).
   double reflection_bound_per_sr() const { return reflection_bound_per_sr_; }
+  double srf_bound() const { return srf_bound_; }
   // plain(): the effective radiance of a whole part.
   double part_radiance(std::int32_t part) const { return part_radiance_[index(part)]; }
   const Geography& geography() const { return geography_; }
@@ -116,7 +118,7 @@ class SurfaceModel {
   bool reflects_ = false;
   std::vector<double> part_radiance_;
   double table_T0_ = 0, table_dT_ = 0;
-  double emission_bound_ = 0, emission_floor_ = 0, reflection_bound_per_sr_ = 0;
+  double emission_bound_ = 0, emission_floor_ = 0, reflection_bound_per_sr_ = 0, srf_bound_ = 0;
   std::vector<std::vector<double>> table_;  // per part, L at T0 + k dT
 };
 

@@ -659,9 +659,13 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   // coldest self-emission anywhere on it is left out there (a 1 m satellite
   // 700 km above the Earth in 8-12 um: ~1e-11). Its bound: the greatest
   // dOmega = pi (R / d)^2 (d from the receiver's bounding sphere), times
-  // SRF x BRDF x cos(incidence) at most, times the band integral of its
-  // reflected (Phase <= 1) plus emitted spectra; only where eq. 7, not eq. 8,
+  // SRF x BRDF x cos(incidence) at most, times at most its band radiance:
+  // E_sun SRF 2 / (3 pi) (Phase <= 1, the whole Sun) plus twice its
+  // emission bound (the band rule of light_spectra's sum may differ from
+  // emission_radiance's; light_spectra itself can cost a sum over 1e5
+  // patches, which a frame may never need). Only where eq. 7, not eq. 8,
   // serves it.
+  const double sun_band_radiance = world->view.spectral.integrate(world->sun.radiance);
   for (const auto& w : world->objects) {
     w->negligible_light_.assign(world->lights.size(), 0);
     const double floor = w->surface->emission_floor(), reflection = w->surface->reflection_bound_per_sr();
@@ -673,11 +677,11 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       if (!(d > light.radius_m)) continue;
       const double omega = constants::pi * (light.radius_m / d) * (light.radius_m / d);
       if (light.area_source && omega > f.area_source_solid_angle_sr) continue;
-      const LightSpectra& s = world->objects[static_cast<std::size_t>(light.object)]->light_spectra();
-      std::vector<double> both(s.reflected.size());
-      for (std::size_t i = 0; i < both.size(); ++i) both[i] = s.reflected[i] + s.emitted[i];
-      const double bound = omega * reflection * world->view.spectral.integrate(both);
-      w->negligible_light_[j] = bound < kNegligible * floor;
+      const SurfaceModel& source = *world->objects[static_cast<std::size_t>(light.object)]->surface;
+      const double sun_omega = universe::sun_projected_solid_angle_sr((world->sun.position_m - light.position_m).norm());
+      const double radiance =
+          source.srf_bound() * sun_band_radiance * sun_omega * 2.0 / (3.0 * constants::pi) + 2.0 * source.emission_bound();
+      w->negligible_light_[j] = omega * reflection * radiance < kNegligible * floor;
     }
   }
 

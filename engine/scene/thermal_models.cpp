@@ -232,7 +232,6 @@ double night_decay_root(double r) {
   return x;
 }
 
-
 DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
                            const DiurnalShape& shape)
     : DiurnalCycle(t_min_K, t_max_K,

@@ -450,9 +450,8 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
     // Eq. 7 toward the observer: [E_sun SRF 2/(3 pi) Phase(psi) + eps B(T)] dOmega.
     const LightSpectra& self = light_spectra();
     const double omega = constants::pi * volumetric_radius_m * volumetric_radius_m / r2;
-    const Vec3 to_sun = (w.sun.position_m - placed.position_m).normalized();
     const Vec3 to_observer = -placed.position_m / range_m;
-    const double phase = lambertian_sphere_phase(to_sun.dot(to_observer));
+    const double phase = lambertian_sphere_phase(w.lights[static_cast<std::size_t>(light_)].to_sun.dot(to_observer));
     for (std::size_t i = 0; i < E.size(); ++i) E[i] = (self.reflected[i] * phase + self.emitted[i]) * omega;
     return E;
   }

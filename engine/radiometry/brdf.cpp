@@ -220,10 +220,9 @@ Brdf::Brdf(const BrdfParameters& parameters) : parameters_(parameters) {
       const auto at = [&c](double t) { return c[0] + t * (c[1] + t * (c[2] + t * c[3])); };
       double least = std::min(at(0.0), at(1.0));
       // H' = c1 + 2 c2 t + 3 c3 t^2 = 0 inside (0, 1).
-      const double a = 3.0 * c[3], b = 2.0 * c[2], d = c[1];
-      if (a != 0.0 && b * b - 4.0 * a * d >= 0.0) {
-        for (const double t : {(-b + std::sqrt(b * b - 4.0 * a * d)) / (2.0 * a),
-                               (-b - std::sqrt(b * b - 4.0 * a * d)) / (2.0 * a)})
+      const double a = 3.0 * c[3], b = 2.0 * c[2], d = c[1], disc = b * b - 4.0 * a * d;
+      if (a != 0.0 && disc >= 0.0) {
+        for (const double t : {(-b + std::sqrt(disc)) / (2.0 * a), (-b - std::sqrt(disc)) / (2.0 * a)})
           if (t > 0.0 && t < 1.0) least = std::min(least, at(t));
       } else if (a == 0.0 && b != 0.0 && -d / b > 0.0 && -d / b < 1.0) {
         least = std::min(least, at(-d / b));

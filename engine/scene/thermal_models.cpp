@@ -339,9 +339,8 @@ ClimatologyInstant::ClimatologyInstant(const universe::SurfaceClimatology& clima
       water_(climatology.water.day(calendar.day_of_year)),
       calendar_(calendar),
       shape_(shape),
-      declination_deg_(solar_declination_deg(calendar.day_of_year)),
       equation_of_time_min_(equation_of_time_min(calendar.day_of_year)),
-      sun_(SunPathAngles::from_deg(0.0, declination_deg_, shape.horizon_elevation_deg)) {}
+      sun_(SunPathAngles::from_deg(0.0, solar_declination_deg(calendar.day_of_year), shape.horizon_elevation_deg)) {}
 
 double ClimatologyInstant::temperature_K(universe::SurfaceKind kind, double latitude_deg, double longitude_deg) const {
   require_range(latitude_deg, -90.0, 90.0, "latitude_deg");

@@ -209,7 +209,7 @@ class ClimatologyInstant {
   universe::ClimatologyDay land_, water_;
   CalendarInstant calendar_;
   DiurnalShape shape_;
-  double declination_deg_ = 0.0, equation_of_time_min_ = 0.0;
+  double equation_of_time_min_ = 0.0;
   SunPathAngles sun_;  // the declination's and the horizon's (the latitude's per point)
 };
 

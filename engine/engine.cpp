@@ -8,6 +8,7 @@
 #include "core/constants.hpp"
 #include "core/data_dir.hpp"
 #include "core/error.hpp"
+#include "metrics/atmospheric_path.hpp"
 #include "universe/composite.hpp"
 #include "sensor/display.hpp"
 #include "universe/object_motion.hpp"
@@ -181,6 +182,11 @@ metrics::ElementValue Engine::provider(const std::string& group, const std::stri
   if (g.needs_target) {
     if (target.empty())
       throw Error(Status::null_argument, "target: group '" + group + "' needs a target object");
+    if (metrics::is_atmospheric_path_element(element)) {
+      const auto w = world(sensor);
+      return metrics::atmospheric_path_element(
+          metrics::atmospheric_path(*w, metrics::find_target(*w, universe_, target)), element);
+    }
     return metrics::target_element(target_metrics(sensor, target), element);
   }
   const sensor::StaticMetrics& m = static_metrics(sensor);

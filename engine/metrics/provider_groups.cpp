@@ -1,11 +1,12 @@
 #include "metrics/provider_groups.hpp"
 
 #include "core/error.hpp"
+#include "metrics/atmospheric_path.hpp"
 
 namespace eoir::metrics {
 namespace {
 const GroupSpec& target_group() {
-  static const GroupSpec g{target_group_name, true,
+  static GroupSpec g{target_group_name, true,
                            {
                                {"Range to Target", ElementType::number, "km", ""},
                                {"Effective Target Irradiance", ElementType::number, "W/cm^2", ""},
@@ -21,6 +22,11 @@ const GroupSpec& target_group() {
                                {"Effective IFOV Footprint", ElementType::number, "m^2", ""},
                                {"Target Is Point Source", ElementType::boolean, "", ""},
                            }};
+  static const bool with_path = [] {  // the atmosphere between them (metrics/atmospheric_path.hpp)
+    for (const ElementSpec& e : atmospheric_path_elements()) g.elements.push_back(e);
+    return true;
+  }();
+  (void)with_path;
   return g;
 }
 }  // namespace

@@ -684,6 +684,22 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     }
   }
 
+  // The Earth's atmosphere, when its central body has it on.
+  for (std::size_t i = 0; i < world->objects.size(); ++i) {
+    const universe::Object& o = *sources[i];
+    if (o.kind != ObjectKind::central_body || o.central_body != universe::CentralBody::earth ||
+        o.atmosphere.model == universe::AtmosphereModel::none)
+      continue;
+    const WorldObject& earth = *world->objects[i];
+    WorldAtmosphere& a = world->atmosphere;
+    a.settings = o.atmosphere;
+    a.profile = atmosphere::AtmosphereProfile::make(o.atmosphere, library.data_dir);
+    a.earth.centre_m = earth.placed.position_m;
+    a.earth.pole = earth.placed.body_to_frame.col(2);
+    a.earth.equatorial_radius_m = earth.equatorial_radius_m;
+    a.earth.polar_radius_m = earth.polar_radius_m;
+  }
+
   std::vector<const geometry::PlacedObject*> cast_against;
   for (const auto& w : world->objects) cast_against.push_back(&w->placed);
   world->caster.build(cast_against);

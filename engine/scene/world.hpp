@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "atmosphere/profile.hpp"
+#include "atmosphere/shell_path.hpp"
 #include "core/fidelity.hpp"
 #include "core/time.hpp"
 #include "geometry/eclipse.hpp"
@@ -66,6 +68,16 @@ struct SunLight {
   double radius_m = 0.0;
   std::vector<double> radiance;    // L_tab as interval means on the view (W cm^-2 sr^-1 um^-1)
   std::int32_t object = -1;        // the Sun's world object, if it is in the world
+};
+
+// The Earth's atmosphere in the world (spec 4.3.1.1, DESIGN "The atmosphere
+// in the world"): its state, made when the Earth's `atmosphere` is on, and
+// the Earth's figure relative to the observer (J2000 axes) for the paths.
+struct WorldAtmosphere {
+  universe::AtmosphereSettings settings;
+  std::shared_ptr<const atmosphere::AtmosphereProfile> profile;  // null: vacuum
+  atmosphere::EarthFigure earth;
+  bool on() const { return profile != nullptr; }
 };
 
 class World;
@@ -191,6 +203,7 @@ class World {
   std::vector<std::unique_ptr<SurfaceSpectrum>> spectra;  // the materials in use, through the view
   geometry::RayCaster caster;  // every placed object; ray masks tell how each is imaged
   Sky sky;                     // background light and catalogue stars (a star field in the universe)
+  WorldAtmosphere atmosphere;  // the Earth's, when on
 
   const geometry::SampleGrid& grid() const { return view.grid; }
   const radiometry::SpectralView& spectral() const { return view.spectral; }

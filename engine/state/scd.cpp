@@ -9,6 +9,7 @@
 #include "core/read_file.hpp"
 #include "state/atomic_file.hpp"
 #include "universe/json_document.hpp"
+#include "universe/material.hpp"
 #include "universe/object_motion.hpp"
 #include "universe/object_properties.hpp"
 
@@ -156,6 +157,17 @@ json engine_to_json(const Engine& engine) {
                  {"days_since_j2000", t.days()},
                  {"fraction_of_day", t.fraction()},
                  {"utc", iso_from_utc(t.to(TimeScale::utc), 6)}};
+  // The user's materials and spectra before the objects that name them.
+  json materials = json::array();
+  for (const universe::Material& m : engine.user_materials()) materials.push_back(universe::material_to_json(m));
+  doc["materials"] = materials;
+  json spectra = json::array();
+  for (const universe::NamedSpectrum& s : engine.user_spectra())
+    spectra.push_back({{"name", s.name},
+                       {"source", s.source},
+                       {"wavelength_um", s.radiance_W_cm2_sr_um.wavelengths_um()},
+                       {"radiance_W_cm2_sr_um", s.radiance_W_cm2_sr_um.values()}});
+  doc["spectra"] = spectra;
   json objects = json::array();
   for (const Object& o : engine.universe().objects()) {
     json j{{"name", o.name}, {"kind", universe::kind_name(o.kind)}};
@@ -178,7 +190,7 @@ json engine_to_json(const Engine& engine) {
 }
 
 std::unique_ptr<Engine> engine_from_json(const json& doc, const EngineOptions& restoring) {
-  check_fields(doc, "scd", {"format", "version", "engine", "time", "objects"},
+  check_fields(doc, "scd", {"format", "version", "engine", "time", "materials", "spectra", "objects"},
                {"format", "version", "engine", "time", "objects"});
   check_format(doc, "eoir-scd", scd_format_version, "scd");
   const json& e = doc.at("engine");
@@ -202,6 +214,41 @@ std::unique_ptr<Engine> engine_from_json(const json& doc, const EngineOptions& r
                                               field<double>(t, "fraction_of_day", "scd.time")));
   } catch (const Error& err) {
     corrupt("scd.time", err.what());
+  }
+  if (doc.contains("materials")) {
+    const json& materials = doc.at("materials");
+    if (!materials.is_array()) corrupt("scd.materials", "expected an array");
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+      const std::string where = "scd.materials[" + std::to_string(i) + "]";
+      const universe::Material m = universe::material_from_json(materials[i], where);
+      try {
+        engine->add_material(m);
+      } catch (const Error& err) {
+        corrupt(where, err.what());
+      }
+    }
+  }
+  if (doc.contains("spectra")) {
+    const json& spectra = doc.at("spectra");
+    if (!spectra.is_array()) corrupt("scd.spectra", "expected an array");
+    for (std::size_t i = 0; i < spectra.size(); ++i) {
+      const std::string where = "scd.spectra[" + std::to_string(i) + "]";
+      const json& s = spectra[i];
+      check_fields(s, where, {"name", "source", "wavelength_um", "radiance_W_cm2_sr_um"},
+                   {"name", "wavelength_um", "radiance_W_cm2_sr_um"});
+      try {
+        universe::NamedSpectrum spectrum{field<std::string>(s, "name", where), s.value("source", std::string()),
+                                         TabulatedFunction(field<std::vector<double>>(s, "wavelength_um", where),
+                                                           field<std::vector<double>>(s, "radiance_W_cm2_sr_um", where),
+                                                           where + ".radiance_W_cm2_sr_um")};
+        engine->add_spectrum(spectrum);
+      } catch (const Error& err) {
+        if (err.status() == Status::corrupt_file) throw;
+        corrupt(where, err.what());
+      } catch (const json::exception&) {
+        corrupt(where + ".source", "expected a string");
+      }
+    }
   }
   const json& objects = doc.at("objects");
   if (!objects.is_array()) corrupt("scd.objects", "expected an array");

@@ -9,7 +9,8 @@
 
 namespace eoir::state {
 
-constexpr int scd_format_version = 1;
+// Version 2 adds the user's materials and spectra (version 1 files still load).
+constexpr int scd_format_version = 2;
 constexpr int sensor_format_version = 1;
 
 nlohmann::json engine_to_json(const Engine& engine);

@@ -68,10 +68,18 @@ Material material_from_json(const json& doc, const std::string& origin) {
     corrupt(origin + ": name", "expected a non-empty string");
   m.name = doc["name"].get<std::string>();
   if (m.name == gray_body_material) corrupt(origin + ": name", "gray_body is built in");
-  m.description = doc.value("description", std::string());
-  if (doc.contains("sources") && doc["sources"].is_array())
-    for (const auto& s : doc["sources"])
-      if (s.is_string()) m.sources.push_back(s.get<std::string>());
+  if (doc.contains("description")) {
+    if (!doc["description"].is_string()) corrupt(origin + ": description", "expected a string");
+    m.description = doc["description"].get<std::string>();
+  }
+  if (doc.contains("sources")) {
+    if (!doc["sources"].is_array()) corrupt(origin + ": sources", "expected an array of strings");
+    for (std::size_t i = 0; i < doc["sources"].size(); ++i) {
+      const json& s = doc["sources"][i];
+      if (!s.is_string()) corrupt(origin + ": sources[" + std::to_string(i) + "]", "expected a string");
+      m.sources.push_back(s.get<std::string>());
+    }
+  }
   if (m.sources.empty()) corrupt(origin + ": sources", "name where the data come from");
   if (!doc.contains("brdf") || !doc["brdf"].is_object()) corrupt(origin + ": brdf", "missing");
   const json& b = doc["brdf"];
@@ -106,6 +114,17 @@ Material load_material(const std::string& path) {
   // 16 MiB: a material on the common grid is about 10 kB.
   const std::string text = read_file(path, std::size_t{16} << 20, "material files");
   return material_from_json(parse_json_document(text, path), path);
+}
+
+json material_to_json(const Material& m) {
+  return json{{"format", "eoir-material"},
+              {"version", 1},
+              {"name", m.name},
+              {"description", m.description},
+              {"sources", m.sources},
+              {"brdf", {{"k0", m.brdf.k0}, {"k1", m.brdf.k1}, {"alpha", m.brdf.alpha}, {"beta", m.brdf.beta}}},
+              {"wavelength_um", m.reflectance.wavelengths_um()},
+              {"reflectance", m.reflectance.values()}};
 }
 
 MaterialLibrary::MaterialLibrary() {

@@ -43,6 +43,9 @@ constexpr const char* gray_body_material = "gray_body";
 Material material_from_json(const nlohmann::json& doc, const std::string& origin);
 // The same from a file (io for a missing file, corrupt_file for bad content).
 Material load_material(const std::string& path);
+// The document material_from_json reads back as the same material (saved
+// states carry the user's materials in it).
+nlohmann::json material_to_json(const Material& material);
 
 // The materials an engine knows: gray_body, the data folder's, the user's.
 class MaterialLibrary {

@@ -9,6 +9,7 @@
 
 #include "core/frames.hpp"
 #include "core/time.hpp"
+#include "universe/atmosphere_settings.hpp"
 #include "universe/central_bodies.hpp"
 #include "universe/sensor_parameters.hpp"
 #include "universe/shapes.hpp"
@@ -103,6 +104,7 @@ struct Object {
   CentralBody central_body = CentralBody::sun;  // central bodies only
   std::string parent;  // sensors only
   BodyProperties body;
+  AtmosphereSettings atmosphere;  // central bodies: only the Earth's may be on
   StarFieldProperties stars;
   SensorParameters sensor;
   PushedState state;

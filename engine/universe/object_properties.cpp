@@ -134,6 +134,56 @@ std::vector<Spec> body_properties(bool missile) {
   return t;
 }
 
+// The Earth's atmosphere (spec 4.3.1.1, 4.1.5.3 eq. 9): properties of every
+// central body, but only the Earth's may be switched on.
+std::vector<Spec> atmosphere_properties() {
+  std::vector<Spec> t;
+  Spec model = enum_property<Object, AtmosphereModel>(
+      "atmosphere",
+      "The atmosphere along every path the world traces (spec 4.3.1.1, eq. 9): none (vacuum, the default) or simple "
+      "(transmission, path radiance and scatter from the profile, absorbers and aerosol below); the Earth's only",
+      [](Object& o) -> auto& { return o.atmosphere.model; }, atmosphere_model_names());
+  const auto set_model = model.set;
+  model.set = [set_model](Object& o, const Value& v) {
+    Object probe = o;
+    set_model(probe, v);
+    if (probe.atmosphere.model != AtmosphereModel::none &&
+        !(o.kind == ObjectKind::central_body && o.central_body == CentralBody::earth))
+      throw Error(Status::not_allowed,
+                  "atmosphere: only the Earth's atmosphere is modeled (spec 4.3.1), not " + o.name + "'s");
+    set_model(o, v);
+  };
+  t.push_back(model);
+  t.push_back(enum_property<Object, AtmosphereProfileName>(
+      "atmosphere_profile",
+      "Temperature, pressure, H2O and O3 against altitude: us_standard_1976 (its equations, AFGL 1986 US-standard "
+      "absorbers), or the AFGL 1986 models tropical, midlatitude_summer, midlatitude_winter, subarctic_summer, "
+      "subarctic_winter (Anderson et al. 1986, AFGL-TR-86-0110)",
+      [](Object& o) -> auto& { return o.atmosphere.profile; }, atmosphere_profile_names()));
+  t.push_back(enum_property<Object, AerosolModel>(
+      "aerosol_model",
+      "Boundary-layer aerosol (Shettle and Fenn 1979): rural, urban, maritime, or none (molecules only)",
+      [](Object& o) -> auto& { return o.atmosphere.aerosol; }, aerosol_model_names()));
+  t.push_back(number_property<Object>(
+      "visibility_km", "km",
+      "Meteorological visibility: the 0.55 um extinction of the boundary-layer aerosol is 3.912 / visibility "
+      "less the molecules' (Koschmieder; 23 km, the default, is a clear day)",
+      [](Object& o) -> auto& { return o.atmosphere.visibility_km; }, Range{0.5, 300.0}));
+  t.push_back(bool_property<Object>(
+      "downwelling",
+      "The sky's diffuse light on surfaces (eq. 9's DownWelling: Rayleigh and aerosol scatter, and the sky's "
+      "thermal emission); off reproduces single-scatter references that carry the direct Sun only (ERRATA)",
+      [](Object& o) -> auto& { return o.atmosphere.downwelling; }));
+  t.push_back(number_property<Object>("water_vapor_scale", "-",
+                                      "Multiplies the profile's water-vapour density at every altitude (its column)",
+                                      [](Object& o) -> auto& { return o.atmosphere.water_vapor_scale; },
+                                      Range{0.0, 10.0}));
+  t.push_back(number_property<Object>("ozone_scale", "-",
+                                      "Multiplies the profile's ozone density at every altitude (its column)",
+                                      [](Object& o) -> auto& { return o.atmosphere.ozone_scale; }, Range{0.0, 10.0}));
+  return t;
+}
+
 std::vector<Spec> star_field_properties() {
   std::vector<Spec> t;
   t.push_back(number_property<Object>(
@@ -177,6 +227,22 @@ std::vector<Spec> sensor_object_properties() {
 }
 }  // namespace
 
+const std::vector<std::string>& atmosphere_model_names() {
+  static const std::vector<std::string> names{"none", "simple"};
+  return names;
+}
+
+const std::vector<std::string>& atmosphere_profile_names() {
+  static const std::vector<std::string> names{"us_standard_1976",   "tropical",         "midlatitude_summer",
+                                              "midlatitude_winter", "subarctic_summer", "subarctic_winter"};
+  return names;
+}
+
+const std::vector<std::string>& aerosol_model_names() {
+  static const std::vector<std::string> names{"rural", "urban", "maritime", "none"};
+  return names;
+}
+
 const std::vector<std::string>& thermal_model_names() {
   static const std::vector<std::string> names{"uniform", "subsolar", "eclipse", "climatology"};
   return names;
@@ -201,7 +267,13 @@ const std::vector<Spec>& properties_of(ObjectKind kind) {
   static const std::vector<Spec> missile = body_properties(true);
   static const std::vector<Spec> stars = star_field_properties();
   static const std::vector<Spec> sensors = sensor_object_properties();
+  static const std::vector<Spec> central = [] {
+    std::vector<Spec> t = body_properties(false);
+    for (Spec& s : atmosphere_properties()) t.push_back(std::move(s));
+    return t;
+  }();
   switch (kind) {
+    case ObjectKind::central_body: return central;
     case ObjectKind::star_field: return stars;
     case ObjectKind::missile: return missile;
     case ObjectKind::sensor: return sensors;

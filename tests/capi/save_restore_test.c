@@ -117,7 +117,8 @@ int main(void) {
   }
   OK(eoir_set_number(e, "Sensor1", "f_number", 7.0));
   FAILS(eoir_state_load(e, bad), EOIR_ERR_CORRUPT_FILE, "not valid JSON");
-  write_text(bad, "{\"format\":\"eoir-scd\",\"version\":2,\"engine\":{},\"time\":{},\"objects\":[]}");
+  /* (format version 2 added the user's materials and spectra: 3 is the newer one) */
+  write_text(bad, "{\"format\":\"eoir-scd\",\"version\":3,\"engine\":{},\"time\":{},\"objects\":[]}");
   FAILS(eoir_state_load(e, bad), EOIR_ERR_FILE_VERSION, "version");
   write_text(bad, "{\"format\":\"eoir-scd\",\"version\":1,\"engine\":{},\"time\":{},\"objects\":[],\"colour\":1}");
   FAILS(eoir_state_load(e, bad), EOIR_ERR_CORRUPT_FILE, "scd.colour");

@@ -13,6 +13,7 @@ header() {
     universe) echo universe/sensor_parameters.hpp ;;
     geometry) echo geometry/sample_grid.hpp ;;
     radiometry) echo radiometry/radiance_image.hpp ;;
+    atmosphere) echo atmosphere/us_standard_1976.hpp ;;
     scene) echo scene/thermal_field.hpp ;;
     sensor) echo sensor/spatial_grid.hpp ;;
     metrics) echo metrics/static_providers.hpp ;;
@@ -24,13 +25,14 @@ allowed() {  # may layer $1 include layer $2?
     universe:core|universe:universe) return 0 ;;
     geometry:core|geometry:universe|geometry:geometry) return 0 ;;
     radiometry:core|radiometry:universe|radiometry:geometry|radiometry:radiometry) return 0 ;;
-    scene:core|scene:universe|scene:geometry|scene:radiometry|scene:scene) return 0 ;;
+    atmosphere:core|atmosphere:universe|atmosphere:geometry|atmosphere:radiometry|atmosphere:atmosphere) return 0 ;;
+    scene:core|scene:universe|scene:geometry|scene:radiometry|scene:atmosphere|scene:scene) return 0 ;;
     sensor:core|sensor:universe|sensor:geometry|sensor:radiometry|sensor:sensor) return 0 ;;
     metrics:*) return 0 ;;
   esac
   return 1
 }
-layers="core universe geometry radiometry scene sensor metrics"
+layers="core universe geometry radiometry atmosphere scene sensor metrics"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 status=0

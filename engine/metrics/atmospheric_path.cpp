@@ -1,0 +1,106 @@
+#include "metrics/atmospheric_path.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "atmosphere/rayleigh.hpp"
+#include "atmosphere/refraction.hpp"
+#include "core/constants.hpp"
+#include "core/error.hpp"
+
+namespace eoir::metrics {
+namespace {
+using geometry::Vec3;
+
+// The ellipsoid's outward normal at a point (relative to its centre).
+Vec3 geodetic_normal(const atmosphere::EarthFigure& e, const Vec3& p) {
+  const double z = p.dot(e.pole);
+  const Vec3 equatorial = p - z * e.pole;
+  return (equatorial / (e.equatorial_radius_m * e.equatorial_radius_m) +
+          z * e.pole / (e.polar_radius_m * e.polar_radius_m))
+      .normalized();
+}
+}  // namespace
+
+AtmosphericPathMetrics atmospheric_path(const scene::World& world, const scene::WorldObject& target) {
+  AtmosphericPathMetrics m;
+  const scene::WorldAtmosphere& a = world.atmosphere;
+  if (!a.on()) return m;
+  m.atmosphere = true;
+  const atmosphere::AtmosphereProfile& profile = *a.profile;
+  const Vec3 observer = Vec3::Zero(), to = target.placed.position_m;
+  const double range = to.norm();
+  m.sensor_altitude_km = atmosphere::altitude_m(a.earth, observer) / 1e3;
+  m.target_altitude_km = atmosphere::altitude_m(a.earth, to) / 1e3;
+  if (range > 0)
+    m.elevation_deg = std::asin(std::clamp(geodetic_normal(a.earth, observer - a.earth.centre_m).dot(to / range), -1.0, 1.0)) *
+                      constants::deg_per_rad;
+  m.apparent_elevation_deg = m.elevation_deg;
+  atmosphere::PathColumns c;
+  bool ground = false;
+  const double top_km = profile.top_altitude_m() / 1e3;
+  if (range > 0 && m.sensor_altitude_km < top_km && m.target_altitude_km >= top_km) {
+    // The ray arrives from the apparent direction, raised by the refraction
+    // in the vertical plane.
+    const Vec3 up = geodetic_normal(a.earth, observer - a.earth.centre_m), u = to / range;
+    const atmosphere::Densities here = profile.at(m.sensor_altitude_km * 1e3);
+    const double e = m.elevation_deg * constants::rad_per_deg;
+    const double apparent = e + atmosphere::refraction_from_true_rad(e, here.pressure_Pa, here.temperature_K);
+    Vec3 horizontal = u - u.dot(up) * up;
+    horizontal = horizontal.norm() > 0 ? horizontal.normalized() : up.unitOrthogonal();
+    m.apparent_elevation_deg = apparent * constants::deg_per_rad;
+    c = atmosphere::refracted_path_to_space(profile, a.earth, observer,
+                                            std::cos(apparent) * horizontal + std::sin(apparent) * up, ground);
+  }
+  if (range > 0 && (!(m.sensor_altitude_km < top_km && m.target_altitude_km >= top_km) || ground))
+    c = atmosphere::path_between(profile, a.earth, observer, to);
+  const double sea_level = profile.vertical_columns_above(0.0).air_m2;
+  m.air_mass = sea_level > 0 ? c.air_m2 / sea_level : 0.0;
+  m.h2o_g_cm2 = c.h2o_m2 * atmosphere::kH2OMolarMass_kg_mol / atmosphere::kAvogadro_per_mol * 0.1;
+  m.o3_atm_cm = c.o3_m2 / atmosphere::kLoschmidt_m3 * 1e2;
+  m.aerosol_optical_depth_550 = c.aerosol_tau_550;
+  m.rayleigh_optical_depth_550 = c.air_m2 * atmosphere::rayleigh_cross_section_m2(0.55);
+  m.length_in_atmosphere_km = c.length_m / 1e3;
+  return m;
+}
+
+const std::vector<ElementSpec>& atmospheric_path_elements() {
+  static const std::vector<ElementSpec> elements{
+      {"Air Mass", ElementType::number, "", ""},
+      {"Water Vapor Column", ElementType::number, "g/cm^2", ""},
+      {"Ozone Column", ElementType::number, "atm-cm", ""},
+      {"Aerosol Optical Depth", ElementType::number, "", ""},
+      {"Rayleigh Optical Depth", ElementType::number, "", ""},
+      {"Path Length in Atmosphere", ElementType::number, "km", ""},
+      {"Target Elevation", ElementType::number, "deg", ""},
+      {"Apparent Target Elevation", ElementType::number, "deg", ""},
+      {"Sensor Altitude", ElementType::number, "km", ""},
+      {"Target Altitude", ElementType::number, "km", ""},
+      {"Atmosphere On", ElementType::boolean, "", ""},
+  };
+  return elements;
+}
+
+bool is_atmospheric_path_element(const std::string& element) {
+  for (const ElementSpec& e : atmospheric_path_elements())
+    if (element == e.name) return true;
+  return false;
+}
+
+ElementValue atmospheric_path_element(const AtmosphericPathMetrics& m, const std::string& e) {
+  auto number = [](double v) { return ElementValue{ElementType::number, v, nullptr}; };
+  if (e == "Air Mass") return number(m.air_mass);
+  if (e == "Water Vapor Column") return number(m.h2o_g_cm2);
+  if (e == "Ozone Column") return number(m.o3_atm_cm);
+  if (e == "Aerosol Optical Depth") return number(m.aerosol_optical_depth_550);
+  if (e == "Rayleigh Optical Depth") return number(m.rayleigh_optical_depth_550);
+  if (e == "Path Length in Atmosphere") return number(m.length_in_atmosphere_km);
+  if (e == "Target Elevation") return number(m.elevation_deg);
+  if (e == "Apparent Target Elevation") return number(m.apparent_elevation_deg);
+  if (e == "Sensor Altitude") return number(m.sensor_altitude_km);
+  if (e == "Target Altitude") return number(m.target_altitude_km);
+  if (e == "Atmosphere On") return ElementValue{ElementType::boolean, m.atmosphere ? 1.0 : 0.0, nullptr};
+  throw Error(Status::unknown_name, "element: unknown atmospheric path element '" + e + "'");
+}
+
+}  // namespace eoir::metrics

@@ -4,13 +4,14 @@
 #include <cmath>
 #include <sstream>
 
+#include "atmosphere/profile.hpp"
 #include "core/error.hpp"
 #include "core/read_file.hpp"
 
 namespace eoir::atmosphere {
 namespace {
 
-constexpr double kBoundaryTop_m = 2000.0;
+constexpr double kBoundaryTop_m = kBoundaryLayerTop_m;
 // The tabulated boundary-layer visibilities (km), in the file's column order.
 constexpr double kVisibilities_km[] = {50.0, 23.0, 10.0, 5.0, 2.0};
 const char* const kBoundaryColumns[] = {"boundary_50km", "boundary_23km", "boundary_10km", "boundary_5km",

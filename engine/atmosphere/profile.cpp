@@ -113,6 +113,7 @@ std::shared_ptr<const AtmosphereProfile> AtmosphereProfile::make(const universe:
     d.h2o_m3 = d.air_m3 * r.h2o_ppmv * 1e-6 * settings.water_vapor_scale;
     d.o3_m3 = d.air_m3 * r.o3_ppmv * 1e-6 * settings.ozone_scale;
     d.aerosol_550_per_m = aerosol.extinction_550_per_m(z);
+    d.boundary_aerosol_550_per_m = z <= kBoundaryLayerTop_m ? d.aerosol_550_per_m : 0.0;
     levels.push_back(l);
   }
   return std::make_shared<const AtmosphereProfile>(std::move(levels));
@@ -137,6 +138,7 @@ Densities AtmosphereProfile::at(double altitude_m) const {
   d.h2o_m3 = interpolate(a.h2o_m3, b.h2o_m3, f);
   d.o3_m3 = interpolate(a.o3_m3, b.o3_m3, f);
   d.aerosol_550_per_m = interpolate(a.aerosol_550_per_m, b.aerosol_550_per_m, f);
+  d.boundary_aerosol_550_per_m = altitude_m <= kBoundaryLayerTop_m ? d.aerosol_550_per_m : 0.0;
   d.pressure_Pa = interpolate(a.pressure_Pa, b.pressure_Pa, f);
   d.temperature_K = a.temperature_K + f * (b.temperature_K - a.temperature_K);
   return d;

@@ -17,6 +17,7 @@ namespace eoir::atmosphere {
 // (m^-3) and the aerosol's extinction coefficient at 0.55 um (m^-1).
 struct Densities {
   double air_m3 = 0, h2o_m3 = 0, o3_m3 = 0, aerosol_550_per_m = 0;
+  double boundary_aerosol_550_per_m = 0;  // the part of the boundary-layer model (0-2 km)
   double temperature_K = 0, pressure_Pa = 0;
 };
 
@@ -29,6 +30,10 @@ struct ProfileLevel {
 struct VerticalColumns {
   double air_m2 = 0, h2o_m2 = 0, o3_m2 = 0, aerosol_tau_550 = 0;
 };
+
+// The top of the boundary layer, whose aerosol is the model the settings
+// name; above it the tropospheric model (LOWTRAN 7).
+constexpr double kBoundaryLayerTop_m = 2000.0;
 
 // Conversions for reports and tests.
 constexpr double kH2OMolarMass_kg_mol = 18.01528e-3;

@@ -33,6 +33,7 @@ void add_node(const Densities& n, double w, PathSegment& seg, double& air_T, dou
   seg.h2o_m2 += w * n.h2o_m3;
   seg.o3_m2 += w * n.o3_m3;
   seg.aerosol_tau_550 += w * n.aerosol_550_per_m;
+  seg.boundary_aerosol_tau_550 += w * n.boundary_aerosol_550_per_m;
   air_T += w * n.air_m3 * n.temperature_K;
   air_p += w * n.air_m3 * n.pressure_Pa;
 }
@@ -49,6 +50,7 @@ void add_segment(PathSegment& seg, double air_T, double air_p, bool keep, PathCo
   out.h2o_m2 += seg.h2o_m2;
   out.o3_m2 += seg.o3_m2;
   out.aerosol_tau_550 += seg.aerosol_tau_550;
+  out.boundary_aerosol_tau_550 += seg.boundary_aerosol_tau_550;
   if (keep) out.segments.push_back(seg);
 }
 
@@ -199,6 +201,35 @@ PathColumns refracted_path_to_space(const AtmosphereProfile& profile, const Eart
   if (descends) climb(r0);  // down to the lowest point and back up to the start's height
   climb(top);
   return out;
+}
+
+double ray_traced_refraction_rad(const AtmosphereProfile& profile, const EarthFigure& earth, const Vec3& from_m,
+                                 const Vec3& apparent_direction) {
+  const double a = earth.equatorial_radius_m, top = a + profile.top_altitude_m();
+  const Vec3 x0 = from_m - earth.centre_m;
+  const double r0 = x0.norm();
+  const double mu0 = x0.dot(apparent_direction.normalized()) / r0;
+  if (!(r0 < top) || !(mu0 >= 0)) return 0.0;
+  const auto n_of = [&](double r) { return 1.0 + refractivity(profile.at(r - a).air_m3); };
+  const double c = n_of(r0) * r0 * std::sqrt(std::max(0.0, 1.0 - mu0 * mu0));
+  std::vector<double> cuts{r0, top};
+  for (const ProfileLevel& l : profile.levels())
+    if (a + l.altitude_m > r0 && a + l.altitude_m < top) cuts.push_back(a + l.altitude_m);
+  std::sort(cuts.begin(), cuts.end());
+  double bending = 0;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    // u = sqrt(r - r0) keeps the horizontal start regular.
+    const double ua = std::sqrt(cuts[i] - r0), ub = std::sqrt(cuts[i + 1] - r0);
+    const double half = 0.5 * (ub - ua), mid = 0.5 * (ua + ub);
+    for (int g = 0; g < 4; ++g) {
+      const double u = mid + half * kGaussNodes[g], r = r0 + u * u;
+      const double n = n_of(r), dn_dr = (n_of(r + 0.5) - n_of(r - 0.5));
+      const double nr = n * r, s = (nr - c) * (nr + c);
+      if (!(s > 0)) continue;
+      bending += kGaussWeights[g] * half * 2.0 * u * (c / std::sqrt(s)) / n * (-dn_dr);
+    }
+  }
+  return bending;
 }
 
 double altitude_m(const EarthFigure& earth, const Vec3& point_m) {

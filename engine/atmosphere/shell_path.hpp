@@ -36,6 +36,7 @@ struct PathSegment {
   std::size_t layer = 0;  // index of the layer's lower level
   double length_m = 0;
   double air_m2 = 0, h2o_m2 = 0, o3_m2 = 0, aerosol_tau_550 = 0;
+  double boundary_aerosol_tau_550 = 0;  // of which the boundary layer's
   double temperature_K = 0, pressure_Pa = 0;
 };
 
@@ -43,6 +44,7 @@ struct PathColumns {
   bool crosses = false;  // some of the path lies below the top level
   double length_m = 0;   // within the atmosphere
   double air_m2 = 0, h2o_m2 = 0, o3_m2 = 0, aerosol_tau_550 = 0;
+  double boundary_aerosol_tau_550 = 0;  // of which the boundary layer's
   double lowest_altitude_m = 0;  // the path's lowest point (of the part inside)
   std::vector<PathSegment> segments;  // from the first point on, when asked for
 };
@@ -65,6 +67,14 @@ PathColumns path_to_space(const AtmosphereProfile& profile, const EarthFigure& e
 // path_to_space's straight columns.
 PathColumns refracted_path_to_space(const AtmosphereProfile& profile, const EarthFigure& earth, const Vec3& from_m,
                                     const Vec3& apparent_direction, bool& ends_on_ground, bool keep_segments = false);
+
+// The total bending of a ray leaving a point inside the atmosphere upward
+// at an apparent direction, integrated through the shells (Smart's
+// integral: R = integral of tan(theta) / n |dn| along the ray): the
+// refraction a ray-traced atmosphere gives, which refraction.hpp's formula
+// is checked against.
+double ray_traced_refraction_rad(const AtmosphereProfile& profile, const EarthFigure& earth, const Vec3& from_m,
+                                 const Vec3& apparent_direction);
 
 // The refractivity n - 1 of air of number density air_m3 (visible light).
 double refractivity(double air_m3);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "atmosphere/aerosol_optics.hpp"
 #include "atmosphere/rayleigh.hpp"
 #include "atmosphere/refraction.hpp"
 #include "core/constants.hpp"
@@ -11,6 +12,9 @@
 namespace eoir::metrics {
 namespace {
 using geometry::Vec3;
+
+// The wavelength of the refraction reported (visible light).
+constexpr double kVisibleWavelength_um = 0.55;
 
 // The ellipsoid's outward normal at a point (relative to its centre).
 Vec3 geodetic_normal(const atmosphere::EarthFigure& e, const Vec3& p) {
@@ -44,8 +48,11 @@ AtmosphericPathMetrics atmospheric_path(const scene::World& world, const scene::
     // in the vertical plane.
     const Vec3 up = geodetic_normal(a.earth, observer - a.earth.centre_m), u = to / range;
     const atmosphere::Densities here = profile.at(m.sensor_altitude_km * 1e3);
+    const atmosphere::RefractionConstants refraction = atmosphere::refraction_constants(
+        here.pressure_Pa, here.temperature_K,
+        atmosphere::relative_humidity_pct(here.h2o_m3, here.temperature_K) / 100.0, kVisibleWavelength_um);
     const double e = m.elevation_deg * constants::rad_per_deg;
-    const double apparent = e + atmosphere::refraction_from_true_rad(e, here.pressure_Pa, here.temperature_K);
+    const double apparent = e + atmosphere::refraction_from_true_rad(refraction, e);
     Vec3 horizontal = u - u.dot(up) * up;
     horizontal = horizontal.norm() > 0 ? horizontal.normalized() : up.unitOrthogonal();
     m.apparent_elevation_deg = apparent * constants::deg_per_rad;

@@ -17,6 +17,7 @@ namespace {
 // model's top (100 km: 4e-6 of the air column lies above).
 struct AfglRow {
   double altitude_km, pressure_hPa, temperature_K, air_cm3, h2o_ppmv, o3_ppmv;
+  std::array<double, kMixedGases> mixed_ppmv;
 };
 
 std::vector<AfglRow> read_afgl(const std::string& path) {
@@ -48,7 +49,9 @@ std::vector<AfglRow> read_afgl(const std::string& path) {
       throw Error(Status::corrupt_file, path + ":" + std::to_string(n) + ": no column '" + name + "'");
     };
     rows.push_back(AfglRow{column("altitude_km"), column("pressure_hPa"), column("temperature_K"), column("air_cm3"),
-                           column("h2o_ppmv"), column("o3_ppmv")});
+                           column("h2o_ppmv"), column("o3_ppmv"),
+                           {column("co2_ppmv"), column("n2o_ppmv"), column("co_ppmv"), column("ch4_ppmv"),
+                            column("o2_ppmv")}});
     if (rows.size() > 1 && !(rows.back().altitude_km > rows[rows.size() - 2].altitude_km))
       throw Error(Status::corrupt_file, path + ":" + std::to_string(n) + ": altitude_km must increase");
   }
@@ -112,6 +115,7 @@ std::shared_ptr<const AtmosphereProfile> AtmosphereProfile::make(const universe:
     }
     d.h2o_m3 = d.air_m3 * r.h2o_ppmv * 1e-6 * settings.water_vapor_scale;
     d.o3_m3 = d.air_m3 * r.o3_ppmv * 1e-6 * settings.ozone_scale;
+    for (std::size_t g = 0; g < kMixedGases; ++g) d.mixed_m3[g] = d.air_m3 * r.mixed_ppmv[g] * 1e-6;
     d.aerosol_550_per_m = aerosol.extinction_550_per_m(z);
     d.boundary_aerosol_550_per_m = z <= kBoundaryLayerTop_m ? d.aerosol_550_per_m : 0.0;
     levels.push_back(l);
@@ -137,6 +141,7 @@ Densities AtmosphereProfile::at(double altitude_m) const {
   d.air_m3 = interpolate(a.air_m3, b.air_m3, f);
   d.h2o_m3 = interpolate(a.h2o_m3, b.h2o_m3, f);
   d.o3_m3 = interpolate(a.o3_m3, b.o3_m3, f);
+  for (std::size_t g = 0; g < kMixedGases; ++g) d.mixed_m3[g] = interpolate(a.mixed_m3[g], b.mixed_m3[g], f);
   d.aerosol_550_per_m = interpolate(a.aerosol_550_per_m, b.aerosol_550_per_m, f);
   d.boundary_aerosol_550_per_m = altitude_m <= kBoundaryLayerTop_m ? d.aerosol_550_per_m : 0.0;
   d.pressure_Pa = interpolate(a.pressure_Pa, b.pressure_Pa, f);

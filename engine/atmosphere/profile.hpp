@@ -5,6 +5,7 @@
 // exponential fall of a layer of constant scale height). Made once per
 // atmosphere setting (AtmosphereProfile::make) and shared by every path.
 #pragma once
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,10 +14,16 @@
 
 namespace eoir::atmosphere {
 
+// The gases of the AFGL profiles besides H2O and O3 (uniformly mixed, or
+// nearly), in the order of their columns.
+enum class MixedGas : std::size_t { co2 = 0, n2o = 1, co = 2, ch4 = 3, o2 = 4 };
+constexpr std::size_t kMixedGases = 5;
+
 // What one absorber or the aerosol amounts to at a point: number densities
 // (m^-3) and the aerosol's extinction coefficient at 0.55 um (m^-1).
 struct Densities {
   double air_m3 = 0, h2o_m3 = 0, o3_m3 = 0, aerosol_550_per_m = 0;
+  std::array<double, kMixedGases> mixed_m3{};
   double boundary_aerosol_550_per_m = 0;  // the part of the boundary-layer model (0-2 km)
   double temperature_K = 0, pressure_Pa = 0;
 };

@@ -34,6 +34,7 @@ void add_node(const Densities& n, double w, PathSegment& seg, double& air_T, dou
   seg.o3_m2 += w * n.o3_m3;
   seg.aerosol_tau_550 += w * n.aerosol_550_per_m;
   seg.boundary_aerosol_tau_550 += w * n.boundary_aerosol_550_per_m;
+  for (std::size_t g = 0; g < kMixedGases; ++g) seg.mixed_m2[g] += w * n.mixed_m3[g];
   air_T += w * n.air_m3 * n.temperature_K;
   air_p += w * n.air_m3 * n.pressure_Pa;
 }

@@ -30,13 +30,15 @@ struct EarthFigure {
   double equatorial_radius_m = 6378137.0, polar_radius_m = 6356752.314245;
 };
 
-// One piece of a path within one layer: its amounts and the air-weighted
+// One piece of a path within one layer (kept by default: the band models
+// need them): its amounts and the air-weighted
 // temperature and pressure (Curtis-Godson), for band models and emission.
 struct PathSegment {
   std::size_t layer = 0;  // index of the layer's lower level
   double length_m = 0;
   double air_m2 = 0, h2o_m2 = 0, o3_m2 = 0, aerosol_tau_550 = 0;
   double boundary_aerosol_tau_550 = 0;  // of which the boundary layer's
+  std::array<double, kMixedGases> mixed_m2{};
   double temperature_K = 0, pressure_Pa = 0;
 };
 
@@ -51,11 +53,11 @@ struct PathColumns {
 
 // Between two points.
 PathColumns path_between(const AtmosphereProfile& profile, const EarthFigure& earth, const Vec3& from_m,
-                         const Vec3& to_m, bool keep_segments = false);
+                         const Vec3& to_m, bool keep_segments = true);
 // From a point along a unit direction to space (nothing stops it: a caller
 // whose ray meets the ground ends it there with path_between).
 PathColumns path_to_space(const AtmosphereProfile& profile, const EarthFigure& earth, const Vec3& from_m,
-                          const Vec3& direction, bool keep_segments = false);
+                          const Vec3& direction, bool keep_segments = true);
 
 // From a point inside the atmosphere along an apparent direction (the one
 // the ray arrives from), following the ray's refraction in the shells
@@ -66,7 +68,7 @@ PathColumns path_to_space(const AtmosphereProfile& profile, const EarthFigure& e
 // the ground (`ends_on_ground`). Points above the atmosphere give
 // path_to_space's straight columns.
 PathColumns refracted_path_to_space(const AtmosphereProfile& profile, const EarthFigure& earth, const Vec3& from_m,
-                                    const Vec3& apparent_direction, bool& ends_on_ground, bool keep_segments = false);
+                                    const Vec3& apparent_direction, bool& ends_on_ground, bool keep_segments = true);
 
 // The total bending of a ray leaving a point inside the atmosphere upward
 // at an apparent direction, integrated through the shells (Smart's

@@ -1,0 +1,94 @@
+#include "atmosphere/path_optics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "atmosphere/molecular_absorption.hpp"
+#include "atmosphere/rayleigh.hpp"
+#include "core/error.hpp"
+
+namespace eoir::atmosphere {
+namespace {
+const char* aerosol_name(universe::AerosolModel m) {
+  switch (m) {
+    case universe::AerosolModel::urban: return "urban";
+    case universe::AerosolModel::maritime: return "maritime";
+    default: return "rural";
+  }
+}
+// LOWTRAN 7's humidity of the tropospheric aerosol above the boundary layer.
+constexpr double kBackgroundHumidity_pct = 70.0;
+}  // namespace
+
+PathOptics::PathOptics(std::shared_ptr<const AtmosphereProfile> profile, const universe::AtmosphereSettings& settings,
+                       const std::string& data_dir, const radiometry::SpectralBand& band)
+    : profile_(std::move(profile)), band_(band) {
+  const double dl = band.interval_um();
+  for (std::int64_t i = 0; i < band.intervals; ++i) {
+    first_.push_back(wavelength_um_.size());
+    const double lo = band.low_um + static_cast<double>(i) * dl, hi = lo + dl;
+    const double width_cm1 = 1e4 / lo - 1e4 / hi;
+    const int n = std::max(1, static_cast<int>(std::ceil(width_cm1 / kSubSampleSpacing_cm1)));
+    for (int s = 0; s < n; ++s) wavelength_um_.push_back(lo + (s + 0.5) / n * dl);
+  }
+  first_.push_back(wavelength_um_.size());
+  const Densities ground = profile_->levels().front().at;
+  const AerosolSpectra boundary =
+      AerosolSpectra::load(data_dir, aerosol_name(settings.aerosol), relative_humidity_pct(ground.h2o_m3, ground.temperature_K));
+  const AerosolSpectra background = AerosolSpectra::load(data_dir, "tropospheric", kBackgroundHumidity_pct);
+  for (const double l : wavelength_um_) {
+    rayleigh_m2_.push_back(rayleigh_cross_section_m2(l));
+    boundary_per_550_.push_back(boundary.at(l).extinction_per_550);
+    background_per_550_.push_back(background.at(l).extinction_per_550);
+  }
+  molecules_ = MolecularAbsorption::load(data_dir);
+}
+
+PathOptics::~PathOptics() = default;
+
+void PathOptics::sub_depths(const PathColumns& path, std::vector<double>& rayleigh, std::vector<double>& aerosol,
+                            std::vector<double>& absorption) const {
+  const std::size_t n = wavelength_um_.size();
+  rayleigh.resize(n);
+  aerosol.resize(n);
+  const double boundary = path.boundary_aerosol_tau_550, background = path.aerosol_tau_550 - boundary;
+  for (std::size_t k = 0; k < n; ++k) {
+    rayleigh[k] = rayleigh_m2_[k] * path.air_m2;
+    aerosol[k] = boundary * boundary_per_550_[k] + background * background_per_550_[k];
+  }
+  absorption.assign(n, 0.0);
+  if (path.crosses) molecules_->optical_depths(path, wavelength_um_, absorption);
+}
+
+void PathOptics::transmittance(const PathColumns& path, std::vector<double>& out) const {
+  out.assign(static_cast<std::size_t>(band_.intervals), 1.0);
+  if (!path.crosses) return;
+  std::vector<double> r, a, m;
+  sub_depths(path, r, a, m);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    double sum = 0;
+    for (std::size_t k = first_[i]; k < first_[i + 1]; ++k) sum += std::exp(-(r[k] + a[k] + m[k]));
+    out[i] = sum / static_cast<double>(first_[i + 1] - first_[i]);
+  }
+}
+
+OpticalDepths PathOptics::optical_depths(const PathColumns& path) const {
+  std::vector<double> r, a, m;
+  sub_depths(path, r, a, m);
+  OpticalDepths d;
+  const std::size_t n = static_cast<std::size_t>(band_.intervals);
+  d.rayleigh.assign(n, 0.0);
+  d.aerosol.assign(n, 0.0);
+  d.absorption.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double count = static_cast<double>(first_[i + 1] - first_[i]);
+    for (std::size_t k = first_[i]; k < first_[i + 1]; ++k) {
+      d.rayleigh[i] += r[k] / count;
+      d.aerosol[i] += a[k] / count;
+      d.absorption[i] += m[k] / count;
+    }
+  }
+  return d;
+}
+
+}  // namespace eoir::atmosphere

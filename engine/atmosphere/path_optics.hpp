@@ -1,0 +1,61 @@
+// A path's transmittance per spectral interval of a sensor's band (spec
+// 4.1.5.3 eq. 9's T_in and T_out; 4.3.1.1): Rayleigh scattering (Bodhaine et
+// al. 1999) of the path's air, the aerosol's extinction (its 0.55 um optical
+// depth times the Shettle and Fenn spectrum of the boundary-layer model below
+// 2 km and of the tropospheric model above, at the profile's ground
+// humidity and 70 %, as LOWTRAN 7 does), and the absorbers' (band models,
+// molecular_absorption.hpp). Made once per atmosphere and band; each interval
+// is the mean of its sub-samples' transmittances, spaced at most
+// kSubSampleSpacing_cm1 apart in wavenumber (the band models' 20 cm^-1
+// resolution: finer sampling adds nothing they resolve).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "atmosphere/aerosol_optics.hpp"
+#include "atmosphere/profile.hpp"
+#include "atmosphere/shell_path.hpp"
+#include "radiometry/band_integral.hpp"
+
+namespace eoir::atmosphere {
+
+class MolecularAbsorption;
+
+constexpr double kSubSampleSpacing_cm1 = 20.0;
+
+// What a path's transmittance is made of at each sub-sample.
+struct OpticalDepths {
+  std::vector<double> rayleigh, aerosol, absorption;  // per interval, the sub-samples' means
+};
+
+class PathOptics {
+ public:
+  PathOptics(std::shared_ptr<const AtmosphereProfile> profile, const universe::AtmosphereSettings& settings,
+             const std::string& data_dir, const radiometry::SpectralBand& band);
+  ~PathOptics();
+  const radiometry::SpectralBand& band() const { return band_; }
+  const AtmosphereProfile& profile() const { return *profile_; }
+  // The sub-sample wavelengths (um), interval by interval: interval i holds
+  // [first_[i], first_[i + 1]).
+  const std::vector<double>& sub_wavelengths_um() const { return wavelength_um_; }
+  std::size_t sub_samples() const { return wavelength_um_.size(); }
+  // Mean transmittance of each interval along the path (out: one per interval).
+  void transmittance(const PathColumns& path, std::vector<double>& out) const;
+  // The optical depths of each interval (means over its sub-samples).
+  OpticalDepths optical_depths(const PathColumns& path) const;
+
+ private:
+  // Optical depth at every sub-sample.
+  void sub_depths(const PathColumns& path, std::vector<double>& rayleigh, std::vector<double>& aerosol,
+                  std::vector<double>& absorption) const;
+  std::shared_ptr<const AtmosphereProfile> profile_;
+  radiometry::SpectralBand band_;
+  std::vector<std::size_t> first_;  // per interval, its first sub-sample; one more at the end
+  std::vector<double> wavelength_um_;
+  std::vector<double> rayleigh_m2_;          // cross section per air molecule
+  std::vector<double> boundary_per_550_, background_per_550_;  // aerosol extinction / extinction at 0.55 um
+  std::unique_ptr<const MolecularAbsorption> molecules_;
+};
+
+}  // namespace eoir::atmosphere

@@ -8,6 +8,7 @@
 #include "core/constants.hpp"
 #include "core/data_dir.hpp"
 #include "core/error.hpp"
+#include "core/frames.hpp"
 #include "metrics/atmospheric_path.hpp"
 #include "universe/composite.hpp"
 #include "sensor/display.hpp"
@@ -259,7 +260,10 @@ const Frame& Engine::render(const std::string& name) {
   // Per-frame truth: the target metrics of every object and star in the
   // field, evaluated on the same world.
   const geometry::SampleGrid& grid = w.grid();
+  const frames::Horizon horizon = frames::horizon_at(w.time, w.observer.position_m);
   const auto add_truth = [&](TruthEntry e, const Eigen::Vector3d& direction, double streak_c, double streak_r) {
+    e.topocentric = horizon.near_earth;
+    if (e.topocentric) frames::azimuth_elevation_deg(horizon.j2000_to_enu * direction, e.azimuth_deg, e.elevation_deg);
     e.ra_deg = std::atan2(direction.y(), direction.x()) * constants::deg_per_rad;
     if (e.ra_deg < 0) e.ra_deg += 360.0;
     e.dec_deg = std::asin(std::clamp(direction.normalized().z(), -1.0, 1.0)) * constants::deg_per_rad;

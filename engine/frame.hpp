@@ -47,6 +47,12 @@ struct TruthEntry {
   // Pixel coordinates at the start and the end of the integration (a point
   // source's streak; equal to the frame-time position for extended objects).
   double start_x = 0, start_y = 0, end_x = 0, end_y = 0;
+  // Topocentric direction (geometric, unrefracted) from a sensor within
+  // frames::horizon_max_height_m of the ellipsoid: azimuth from north through
+  // east, elevation above the geodetic horizon; 0 with topocentric false
+  // for sensors farther out.
+  bool topocentric = false;
+  double azimuth_deg = 0, elevation_deg = 0;
 };
 
 struct Frame {

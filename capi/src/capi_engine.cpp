@@ -4,6 +4,7 @@
 
 #include "capi_internal.hpp"
 #include "universe/object_motion.hpp"
+#include "universe/pointing.hpp"
 
 using namespace eoir;
 using eoir::capi::guarded;
@@ -92,7 +93,7 @@ EOIR_API eoir_status eoir_time_to_iso(const eoir_time* time, char* buffer, size_
 EOIR_API eoir_status eoir_object_add(eoir_engine engine, int32_t kind, const char* name) {
   return with_engine(engine, [&](Engine& e) {
     const std::string n = str(name, "name");
-    if (kind < EOIR_KIND_CENTRAL_BODY || kind > EOIR_KIND_MISSILE) {
+    if ((kind < EOIR_KIND_CENTRAL_BODY || kind > EOIR_KIND_MISSILE) && kind != EOIR_KIND_SITE) {
       if (kind == EOIR_KIND_SENSOR)
         throw Error(Status::out_of_range, "kind: add sensors with eoir_sensor_add (they need a parent)");
       throw Error(Status::out_of_range, "kind: unknown object kind " + std::to_string(kind));
@@ -171,10 +172,12 @@ EOIR_API eoir_status eoir_object_get_state(eoir_engine engine, const char* name,
     if (has_rate) {
       // The pushed angular velocity (the object's, or a sensor's own), in the
       // frame asked for (central bodies and objects without one: zero).
+      // A site's attitude is fixed in the Earth-fixed frame.
       const universe::Object* carrier = &o;
       if (o.kind == universe::ObjectKind::sensor && !o.state.valid) carrier = &e.universe().get(o.parent);
       frames::Vec3 w = carrier->state.valid ? carrier->state.angular_velocity_rad_s : frames::Vec3::Zero();
-      const bool pushed_j2000 = !carrier->state.valid || carrier->state.frame == universe::StateFrame::j2000;
+      const bool pushed_j2000 = carrier->state.valid ? carrier->state.frame == universe::StateFrame::j2000
+                                                     : carrier->kind != universe::ObjectKind::site;
       const bool want_j2000 = state->frame == EOIR_FRAME_J2000;
       // The Earth-fixed frame itself turns at the Earth's rate about its z.
       const frames::Vec3 earth_rate(0.0, 0.0, 7.292115e-5);
@@ -182,6 +185,34 @@ EOIR_API eoir_status eoir_object_get_state(eoir_engine engine, const char* name,
       if (!pushed_j2000 && want_j2000) w = frames::j2000_to_earth_fixed(e.time()).transpose() * (w + earth_rate);
       for (int i = 0; i < 3; ++i) state->angular_velocity[i] = w[i];
     }
+  });
+}
+
+namespace {
+// Pushes a sensor's attitude as computed by universe/pointing.hpp.
+void push_sensor_attitude(Engine& e, const std::string& sensor, const universe::PushedState& s) {
+  const double zero[3] = {0, 0, 0};
+  const double q[4] = {s.attitude.w(), s.attitude.x(), s.attitude.y(), s.attitude.z()};
+  const double w[3] = {s.angular_velocity_rad_s.x(), s.angular_velocity_rad_s.y(), s.angular_velocity_rad_s.z()};
+  e.push_state(sensor, s.epoch, s.frame == universe::StateFrame::j2000 ? EOIR_FRAME_J2000 : EOIR_FRAME_EARTH_FIXED,
+               zero, zero, q, w);
+}
+}  // namespace
+
+EOIR_API eoir_status eoir_sensor_point_azel(eoir_engine engine, const char* sensor, double azimuth_deg,
+                                            double elevation_deg) {
+  return with_engine(engine, [&](Engine& e) {
+    const universe::Object& s = e.universe().sensor(str(sensor, "sensor"));
+    push_sensor_attitude(e, s.name,
+                         universe::azimuth_elevation_pointing(e.universe(), s, e.time(), azimuth_deg, elevation_deg));
+  });
+}
+
+EOIR_API eoir_status eoir_sensor_point_at(eoir_engine engine, const char* sensor, const char* target) {
+  return with_engine(engine, [&](Engine& e) {
+    const universe::Object& s = e.universe().sensor(str(sensor, "sensor"));
+    const std::string t = str(target, "target");
+    push_sensor_attitude(e, s.name, universe::target_pointing(e.universe(), s, t, e.time()));
   });
 }
 }

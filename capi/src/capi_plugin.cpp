@@ -63,6 +63,8 @@ const eoir_api_v1 api_v1 = {
     eoir_spectrum_add,
     eoir_target_spectrum_get,
     eoir_frame_fidelity_get,
+    eoir_sensor_point_azel,
+    eoir_sensor_point_at,
 };
 }  // namespace
 

@@ -82,6 +82,9 @@ EOIR_API eoir_status eoir_truth_get(eoir_engine engine, const char* sensor, size
     out->start_pixel_y = row.start_y;
     out->end_pixel_x = row.end_x;
     out->end_pixel_y = row.end_y;
+    out->topocentric = row.topocentric ? 1 : 0;
+    out->azimuth_deg = row.azimuth_deg;
+    out->elevation_deg = row.elevation_deg;
     std::memcpy(caller, &full, std::min<size_t>(size, sizeof full));  // what the caller's version holds
   });
 }

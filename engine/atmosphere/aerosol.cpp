@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
+#include "atmosphere/data_table.hpp"
 #include "atmosphere/profile.hpp"
 #include "core/error.hpp"
-#include "core/read_file.hpp"
 
 namespace eoir::atmosphere {
 namespace {
@@ -17,46 +16,6 @@ constexpr double kVisibilities_km[] = {50.0, 23.0, 10.0, 5.0, 2.0};
 const char* const kBoundaryColumns[] = {"boundary_50km", "boundary_23km", "boundary_10km", "boundary_5km",
                                         "boundary_2km"};
 
-struct Table {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;  // NaN where a cell is empty
-  std::size_t column(const std::string& name, const std::string& path) const {
-    for (std::size_t i = 0; i < header.size(); ++i)
-      if (header[i] == name) return i;
-    throw Error(Status::corrupt_file, path + ": no column '" + name + "'");
-  }
-};
-
-Table read_table(const std::string& path) {
-  const std::string text = read_file(path, std::size_t{1} << 20, "aerosol profiles");
-  std::istringstream in(text);
-  Table t;
-  std::string line;
-  for (std::size_t n = 1; std::getline(in, line); ++n) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::istringstream cs(line);
-    for (std::string c; std::getline(cs, c, ',');) cells.push_back(c);
-    if (!line.empty() && line.back() == ',') cells.emplace_back();
-    if (t.header.empty()) {
-      t.header = cells;
-      continue;
-    }
-    std::vector<double> row(t.header.size(), std::nan(""));
-    for (std::size_t i = 0; i < cells.size() && i < row.size(); ++i) {
-      if (cells[i].empty()) continue;
-      char* end = nullptr;
-      row[i] = std::strtod(cells[i].c_str(), &end);
-      if (end == cells[i].c_str() || !std::isfinite(row[i]) || row[i] < 0)
-        throw Error(Status::corrupt_file, path + ":" + std::to_string(n) + ": " + t.header[i] + ": '" + cells[i] +
-                                              "' is not a number >= 0");
-    }
-    t.rows.push_back(std::move(row));
-  }
-  if (t.rows.size() < 2) throw Error(Status::corrupt_file, path + ": fewer than two rows");
-  return t;
-}
 }  // namespace
 
 AerosolProfile AerosolProfile::make(const universe::AtmosphereSettings& settings, const std::string& data_dir) {
@@ -67,13 +26,13 @@ AerosolProfile AerosolProfile::make(const universe::AtmosphereSettings& settings
     return p;
   }
   const std::string path = data_dir + "/atmosphere/aerosol_profile_lowtran7.csv";
-  const Table t = read_table(path);
-  const std::size_t z_col = t.column("altitude_km", path);
+  const DataTable t = read_data_table(path);
+  const std::size_t z_col = t.column("altitude_km");
   std::size_t b_cols[5];
-  for (int i = 0; i < 5; ++i) b_cols[i] = t.column(kBoundaryColumns[i], path);
-  const std::size_t tro = t.column("troposphere_spring_summer", path);
-  const std::size_t strat = t.column("stratosphere_background_spring_summer", path);
-  const std::size_t upper = t.column("upper_atmosphere", path);
+  for (int i = 0; i < 5; ++i) b_cols[i] = t.column(kBoundaryColumns[i], true);
+  const std::size_t tro = t.column("troposphere_spring_summer", true);
+  const std::size_t strat = t.column("stratosphere_background_spring_summer", true);
+  const std::size_t upper = t.column("upper_atmosphere", true);
   // The visibility's place among the tabulated ones, linear in 1 / V
   // (extrapolated past 2 and 50 km; the ground value then set exactly).
   const double inv = 1.0 / settings.visibility_km;
@@ -82,9 +41,11 @@ AerosolProfile AerosolProfile::make(const universe::AtmosphereSettings& settings
   const double f = (inv - 1.0 / kVisibilities_km[j]) / (1.0 / kVisibilities_km[j + 1] - 1.0 / kVisibilities_km[j]);
   const double ground_per_km = std::max(0.0, 3.912 / settings.visibility_km - kRayleighExtinction550_per_km);
   double tabulated_ground_per_km = 0;
-  for (const auto& row : t.rows) {
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const std::vector<double>& row = t.rows[r];
+    for (const double x : row)
+      if (x < 0) throw Error(Status::corrupt_file, path + ":" + std::to_string(t.line[r]) + ": a negative value");
     const double z_km = row[z_col];
-    if (std::isnan(z_km)) continue;
     double beta = std::nan("");
     if (z_km < kBoundaryTop_m / 1e3 && !std::isnan(row[b_cols[j]]) && !std::isnan(row[b_cols[j + 1]])) {
       beta = std::max(0.0, row[b_cols[j]] + f * (row[b_cols[j + 1]] - row[b_cols[j]]));

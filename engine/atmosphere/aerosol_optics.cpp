@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <sstream>
 
+#include "atmosphere/data_table.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
-#include "core/read_file.hpp"
 
 namespace eoir::atmosphere {
 namespace {
@@ -26,40 +25,25 @@ double relative_humidity_pct(double h2o_m3, double temperature_K) {
 
 AerosolSpectra AerosolSpectra::load(const std::string& data_dir, const std::string& model, double rh_pct) {
   const std::string path = data_dir + "/atmosphere/aerosol_shettle_fenn_1979.csv";
-  const std::string text = read_file(path, std::size_t{4} << 20, "aerosol tables");
+  const DataTable t = read_data_table(path);
+  const std::size_t rh_col = t.column("relative_humidity_pct"), wl = t.column("wavelength_um");
+  const std::size_t ext = t.column("extinction_km"), abs = t.column("absorption_km"), g = t.column("asymmetry");
   // table[h][k]: humidity h, wavelength k.
   std::array<std::vector<std::array<double, 4>>, 4> table;
-  std::istringstream in(text);
-  std::string line;
-  bool header = false;
-  for (std::size_t n = 1; std::getline(in, line); ++n) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;
-    if (!header) {
-      if (line != "model,relative_humidity_pct,wavelength_um,extinction_km,absorption_km,asymmetry")
-        throw Error(Status::corrupt_file, path + ":" + std::to_string(n) + ": unexpected header");
-      header = true;
-      continue;
-    }
-    std::istringstream cs(line);
-    std::string name, cell;
-    std::getline(cs, name, ',');
-    if (name != model) continue;
-    std::array<double, 5> v{};
-    for (double& x : v) {
-      if (!std::getline(cs, cell, ',')) throw Error(Status::corrupt_file, path + ":" + std::to_string(n) + ": too few columns");
-      char* end = nullptr;
-      x = std::strtod(cell.c_str(), &end);
-      if (end == cell.c_str() || !std::isfinite(x) || x < 0)
-        throw Error(Status::corrupt_file, path + ":" + std::to_string(n) + ": '" + cell + "' is not a number >= 0");
-    }
-    const auto h = std::find(kHumidities.begin(), kHumidities.end(), v[0]);
-    if (h == kHumidities.end()) throw Error(Status::corrupt_file, path + ":" + std::to_string(n) + ": humidity not 0/70/80/99");
-    if (v[1] <= kLastWavelength_um) table[static_cast<std::size_t>(h - kHumidities.begin())].push_back({v[1], v[2], v[3], v[4]});
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    if (t.key[r] != model) continue;
+    const std::vector<double>& v = t.rows[r];
+    const std::string where = path + ":" + std::to_string(t.line[r]);
+    for (const std::size_t c : {rh_col, wl, ext, abs, g})
+      if (v[c] < 0) throw Error(Status::corrupt_file, where + ": " + t.header[c] + ": negative");
+    const auto h = std::find(kHumidities.begin(), kHumidities.end(), v[rh_col]);
+    if (h == kHumidities.end()) throw Error(Status::corrupt_file, where + ": humidity not 0/70/80/99");
+    if (v[wl] <= kLastWavelength_um)
+      table[static_cast<std::size_t>(h - kHumidities.begin())].push_back({v[wl], v[ext], v[abs], v[g]});
   }
   if (table[0].empty()) throw Error(Status::unknown_name, path + ": no aerosol model '" + model + "'");
-  for (const auto& t : table)
-    if (t.size() != table[0].size()) throw Error(Status::corrupt_file, path + ": " + model + ": humidities differ in rows");
+  for (const auto& humidity : table)
+    if (humidity.size() != table[0].size()) throw Error(Status::corrupt_file, path + ": " + model + ": humidities differ in rows");
   // ln(coefficient) linear in ln(100 - RH) between the bracketing humidities.
   const double rh = std::clamp(rh_pct, 0.0, 99.0);
   std::size_t j = 0;

@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <sstream>
 
+#include "atmosphere/data_table.hpp"
 #include "core/error.hpp"
-#include "core/read_file.hpp"
 
 namespace eoir::atmosphere {
 namespace {
@@ -14,56 +13,6 @@ namespace {
 // LOWTRAN 7's reference state of the scaled amounts (STDMDL): P0, T0.
 constexpr double kP0_Pa = 101325.0, kT0_K = 273.15;
 constexpr double kLoschmidt_cm3 = kLoschmidt_m3 * 1e-6;
-
-// A table read from data/atmosphere/: the header's columns and the rows
-// (NaN where a cell is empty), the first column kept as text.
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::string> key;
-  std::vector<std::vector<double>> rows;
-};
-
-Csv read_csv(const std::string& path) {
-  const std::string text = read_file(path, std::size_t{8} << 20, "atmosphere tables");
-  std::istringstream in(text);
-  Csv t;
-  std::string line;
-  for (std::size_t n = 1; std::getline(in, line); ++n) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::istringstream cs(line);
-    for (std::string c; std::getline(cs, c, ',');) cells.push_back(c);
-    if (t.header.empty()) {
-      t.header = cells;
-      continue;
-    }
-    t.key.push_back(cells.empty() ? "" : cells[0]);
-    std::vector<double> row(t.header.size(), std::nan(""));
-    for (std::size_t i = 1; i < cells.size() && i < row.size(); ++i) {
-      if (cells[i].empty()) continue;
-      char* end = nullptr;
-      const double x = std::strtod(cells[i].c_str(), &end);
-      row[i] = end != cells[i].c_str() && *end == '\0' && std::isfinite(x) ? x : std::nan("");  // text: NaN
-    }
-    t.rows.push_back(std::move(row));
-  }
-  if (t.rows.empty()) throw Error(Status::corrupt_file, path + ": no rows");
-  return t;
-}
-
-// The index of a numeric column, every row of which holds a number
-// (empty_ok: or nothing).
-std::size_t column(const Csv& t, const std::string& name, const std::string& path, bool empty_ok = false) {
-  for (std::size_t i = 0; i < t.header.size(); ++i)
-    if (t.header[i] == name) {
-      for (std::size_t r = 0; r < t.rows.size() && !empty_ok; ++r)
-        if (std::isnan(t.rows[r][i]))
-          throw Error(Status::corrupt_file, path + ": row " + std::to_string(r + 1) + ": " + name + ": not a number");
-      return i;
-    }
-  throw Error(Status::corrupt_file, path + ": no column '" + name + "'");
-}
 
 // A function of wavenumber, linear between strictly increasing points, 0
 // outside them.
@@ -213,10 +162,10 @@ class LowtranBandModel final : public MolecularAbsorption {
 
   void load_bands(const std::string& dir) {
     const std::string ppath = dir + "/atmosphere/band_model_parameters_lowtran7.csv";
-    const Csv p = read_csv(ppath);
-    const std::size_t from = column(p, "from_cm1", ppath), to = column(p, "to_cm1", ppath);
-    const std::size_t band = column(p, "band_index", ppath), a = column(p, "a", ppath);
-    const std::size_t n = column(p, "n", ppath), m = column(p, "m", ppath);
+    const DataTable p = read_data_table(ppath);
+    const std::size_t from = p.column("from_cm1"), to = p.column("to_cm1");
+    const std::size_t band = p.column("band_index"), a = p.column("a");
+    const std::size_t n = p.column("n"), m = p.column("m");
     const std::map<std::string, std::pair<Amount, std::size_t>> known{
         {"H2O", {Amount::h2o, 0}},
         {"O3", {Amount::o3, 0}},
@@ -239,8 +188,8 @@ class LowtranBandModel final : public MolecularAbsorption {
       scaling_[b] = Scaling{k->second.first, k->second.second, p.rows[r][n], p.rows[r][m]};
     }
     const std::string cpath = dir + "/atmosphere/band_model_lowtran7.csv";
-    const Csv c = read_csv(cpath);
-    const std::size_t v = column(c, "wavenumber_cm1", cpath), coefficient = column(c, "coefficient", cpath);
+    const DataTable c = read_data_table(cpath);
+    const std::size_t v = c.column("wavenumber_cm1"), coefficient = c.column("coefficient");
     for (std::size_t r = 0; r < c.rows.size(); ++r) {
       auto it = std::find_if(absorbers_.begin(), absorbers_.end(), [&](const Absorber& x) { return x.name == c.key[r]; });
       if (it == absorbers_.end()) continue;
@@ -259,9 +208,9 @@ class LowtranBandModel final : public MolecularAbsorption {
 
   void load_continua(const std::string& dir) {
     const std::string hpath = dir + "/atmosphere/h2o_continuum_lowtran7.csv";
-    const Csv h = read_csv(hpath);
-    const std::size_t s296 = column(h, "self_296K", hpath), s260 = column(h, "self_260K", hpath);
-    const std::size_t f296 = column(h, "foreign_296K", hpath);
+    const DataTable h = read_data_table(hpath);
+    const std::size_t s296 = h.column("self_296K"), s260 = h.column("self_260K");
+    const std::size_t f296 = h.column("foreign_296K");
     for (std::size_t r = 0; r < h.rows.size(); ++r) {
       const double v = std::strtod(h.key[r].c_str(), nullptr);
       h2o_self_296_.add(v, h.rows[r][s296], hpath);
@@ -269,9 +218,9 @@ class LowtranBandModel final : public MolecularAbsorption {
       h2o_foreign_.add(v, h.rows[r][f296], hpath);
     }
     const std::string opath = dir + "/atmosphere/o3_uv_visible_lowtran7.csv";
-    const Csv o = read_csv(opath);
-    const std::size_t ov = column(o, "wavenumber_cm1", opath), c0 = column(o, "c0", opath, true);
-    const std::size_t c1 = column(o, "c1", opath, true), c2 = column(o, "c2", opath, true);
+    const DataTable o = read_data_table(opath);
+    const std::size_t ov = o.column("wavenumber_cm1"), c0 = o.column("c0", true);
+    const std::size_t c1 = o.column("c1", true), c2 = o.column("c2", true);
     for (std::size_t r = 0; r < o.rows.size(); ++r) {
       if (o.key[r] == "chappuis_c8") chappuis_.add(o.rows[r][ov], o.rows[r][c0], opath + ": chappuis_c8");
       if (o.key[r] == "hartley_huggins" && !std::isnan(o.rows[r][c0])) {  // (the last c1, c2 rows have no c0)
@@ -281,9 +230,9 @@ class LowtranBandModel final : public MolecularAbsorption {
       }
     }
     const std::string kpath = dir + "/atmosphere/continua_lowtran7.csv";
-    const Csv k = read_csv(kpath);
-    const std::size_t kv = column(k, "wavenumber_cm1", kpath), value = column(k, "value", kpath);
-    const std::size_t alpha = column(k, "alpha", kpath, true), beta = column(k, "beta", kpath, true);
+    const DataTable k = read_data_table(kpath);
+    const std::size_t kv = k.column("wavenumber_cm1"), value = k.column("value");
+    const std::size_t alpha = k.column("alpha", true), beta = k.column("beta", true);
     for (std::size_t r = 0; r < k.rows.size(); ++r) {
       if (k.key[r] == "n2") n2_.add(k.rows[r][kv], k.rows[r][value], kpath + ": n2");
       if (k.key[r].rfind("o2", 0) == 0) {

@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "atmosphere/aerosol.hpp"
+#include "atmosphere/data_table.hpp"
 #include "atmosphere/us_standard_1976.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
-#include "core/read_file.hpp"
 
 namespace eoir::atmosphere {
 namespace {
@@ -21,39 +20,21 @@ struct AfglRow {
 };
 
 std::vector<AfglRow> read_afgl(const std::string& path) {
-  const std::string text = read_file(path, std::size_t{1} << 20, "atmosphere profiles");
-  std::istringstream in(text);
-  std::string line;
-  std::vector<std::string> header;
+  const DataTable t = read_data_table(path);
+  const auto c = [&](const char* name) { return t.column(name); };
+  const std::size_t z = c("altitude_km"), p = c("pressure_hPa"), T = c("temperature_K"), air = c("air_cm3");
+  const std::size_t h2o = c("h2o_ppmv"), o3 = c("o3_ppmv");
+  const std::size_t mixed[kMixedGases] = {c("co2_ppmv"), c("n2o_ppmv"), c("co_ppmv"), c("ch4_ppmv"), c("o2_ppmv")};
   std::vector<AfglRow> rows;
-  for (std::size_t n = 1; std::getline(in, line); ++n) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::istringstream cs(line);
-    for (std::string c; std::getline(cs, c, ',');) cells.push_back(c);
-    if (header.empty()) {
-      header = cells;
-      continue;
-    }
-    const auto column = [&](const char* name) -> double {
-      for (std::size_t i = 0; i < header.size(); ++i)
-        if (header[i] == name) {
-          if (i >= cells.size()) break;
-          char* end = nullptr;
-          const double v = std::strtod(cells[i].c_str(), &end);
-          if (end == cells[i].c_str() || !std::isfinite(v) || v < 0)
-            throw Error(Status::corrupt_file, path + ":" + std::to_string(n) + ": " + name + ": '" + cells[i] +
-                                                  "' is not a number >= 0");
-          return v;
-        }
-      throw Error(Status::corrupt_file, path + ":" + std::to_string(n) + ": no column '" + name + "'");
-    };
-    rows.push_back(AfglRow{column("altitude_km"), column("pressure_hPa"), column("temperature_K"), column("air_cm3"),
-                           column("h2o_ppmv"), column("o3_ppmv"),
-                           {column("co2_ppmv"), column("n2o_ppmv"), column("co_ppmv"), column("ch4_ppmv"),
-                            column("o2_ppmv")}});
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const std::vector<double>& v = t.rows[r];
+    const std::string where = path + ":" + std::to_string(t.line[r]);
+    for (const double x : v)
+      if (x < 0) throw Error(Status::corrupt_file, where + ": a negative value");
+    rows.push_back(AfglRow{v[z], v[p], v[T], v[air], v[h2o], v[o3],
+                           {v[mixed[0]], v[mixed[1]], v[mixed[2]], v[mixed[3]], v[mixed[4]]}});
     if (rows.size() > 1 && !(rows.back().altitude_km > rows[rows.size() - 2].altitude_km))
-      throw Error(Status::corrupt_file, path + ":" + std::to_string(n) + ": altitude_km must increase");
+      throw Error(Status::corrupt_file, where + ": altitude_km must increase");
   }
   if (rows.size() < 2) throw Error(Status::corrupt_file, path + ": fewer than two levels");
   return rows;

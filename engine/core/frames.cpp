@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "core/constants.hpp"
+
 namespace eoir::frames {
 
 namespace {
@@ -71,5 +73,40 @@ Vec3 earth_fixed_to_geodetic(const Vec3& r_ef) {
   Vec3 g;
   GeographicLib::Geocentric::WGS84().Reverse(r_ef.x(), r_ef.y(), r_ef.z(), g.x(), g.y(), g.z());
   return g;
+}
+
+Mat3 horizon_to_earth_fixed(double lat_deg, double lon_deg) {
+  constexpr double rad = constants::rad_per_deg;
+  const double sf = std::sin(lat_deg * rad), cf = std::cos(lat_deg * rad);
+  const double sl = std::sin(lon_deg * rad), cl = std::cos(lon_deg * rad);
+  Mat3 m;
+  m.col(0) = Vec3(-sl, cl, 0.0);            // east
+  m.col(1) = Vec3(-sf * cl, -sf * sl, cf);  // north
+  m.col(2) = Vec3(cf * cl, cf * sl, sf);    // up: the geodetic normal
+  return m;
+}
+
+void azimuth_elevation_deg(const Vec3& d, double& azimuth_deg, double& elevation_deg) {
+  constexpr double deg = constants::deg_per_rad;
+  const double horizontal = std::hypot(d.x(), d.y());
+  elevation_deg = std::atan2(d.z(), horizontal) * deg;
+  azimuth_deg = horizontal > 0 ? std::atan2(d.x(), d.y()) * deg : 0.0;
+  if (azimuth_deg < 0) azimuth_deg += 360.0;
+  if (azimuth_deg >= 360.0) azimuth_deg -= 360.0;
+}
+
+Horizon horizon_at(const EngineTime& t, const Vec3& position_j2000) {
+  const Mat3 m = j2000_to_earth_fixed(t);
+  Horizon h;
+  h.geodetic = earth_fixed_to_geodetic(m * position_j2000);
+  h.near_earth = std::fabs(h.geodetic.z()) <= horizon_max_height_m;
+  h.j2000_to_enu = horizon_to_earth_fixed(h.geodetic.x(), h.geodetic.y()).transpose() * m;
+  return h;
+}
+
+Vec3 direction_enu(double azimuth_deg, double elevation_deg) {
+  constexpr double rad = constants::rad_per_deg;
+  const double ce = std::cos(elevation_deg * rad), se = std::sin(elevation_deg * rad);
+  return Vec3(ce * std::sin(azimuth_deg * rad), ce * std::cos(azimuth_deg * rad), se);
 }
 }  // namespace eoir::frames

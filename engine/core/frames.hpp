@@ -32,4 +32,29 @@ void j2000_to_earth_fixed(const EngineTime& t, const Vec3& r_j2000, const Vec3& 
 Vec3 geodetic_to_earth_fixed(double lat_deg, double lon_deg, double height_m);
 Vec3 earth_fixed_to_geodetic(const Vec3& r_ef);
 
+// The local horizon (topocentric) frame at a geodetic latitude and longitude:
+// columns east, north and up (the WGS84 ellipsoid's normal), in Earth-fixed
+// axes.
+Mat3 horizon_to_earth_fixed(double lat_deg, double lon_deg);
+// Topocentric azimuth (deg from north through east, [0, 360)) and elevation
+// (deg above the geodetic horizon, [-90, 90]) of a direction given in the
+// horizon frame's own axes (east, north, up); the azimuth is 0 straight up
+// or down.
+void azimuth_elevation_deg(const Vec3& direction_enu, double& azimuth_deg, double& elevation_deg);
+// The unit vector (east, north, up) of a topocentric azimuth and elevation.
+Vec3 direction_enu(double azimuth_deg, double elevation_deg);
+
+// Points within this height of the WGS84 ellipsoid (ground, aircraft) have a
+// local horizon: truth gives topocentric azimuth and elevation from them, and
+// tracking keeps their zenith up in the picture.
+constexpr double horizon_max_height_m = 1.0e5;
+
+// The local horizon of a geocentric J2000 position at time t.
+struct Horizon {
+  bool near_earth = false;               // |height| <= horizon_max_height_m
+  Vec3 geodetic = Vec3::Zero();          // lat deg, lon deg, height m
+  Mat3 j2000_to_enu = Mat3::Identity();  // rows: east, north, up in J2000 axes
+};
+Horizon horizon_at(const EngineTime& t, const Vec3& position_j2000);
+
 }  // namespace eoir::frames

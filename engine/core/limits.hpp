@@ -6,6 +6,7 @@
 namespace eoir::limits {
 constexpr std::size_t max_satellites = 16;
 constexpr std::size_t max_vehicles = 6;  // aircraft plus ground vehicles
+constexpr std::size_t max_sites = 16;    // ground sites carrying sensors (not vehicles)
 constexpr std::size_t max_missiles = 6;
 constexpr std::size_t max_missile_stages = 18;
 constexpr std::size_t max_sensors = 6;

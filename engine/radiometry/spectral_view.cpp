@@ -17,8 +17,20 @@ SpectralView SpectralView::make(double low_um, double high_um, std::int64_t inte
   return v;
 }
 
+SpectralView SpectralView::through(const SpectralView& view, std::vector<double> transmittance) {
+  SpectralView v = view;
+  v.integration = BandIntegration::grid;
+  v.transmittance = std::move(transmittance);
+  v.black_body = std::make_shared<const BandPlanckTable>(v.band, v.sample_wavelengths_um, v.transmittance);
+  return v;
+}
+
 double SpectralView::integrate(const std::vector<double>& spectral_values) const {
-  return integrate_spectral_samples(band, spectral_values);
+  if (transmittance.empty()) return integrate_spectral_samples(band, spectral_values);
+  thread_local std::vector<double> weighted;  // per-sample scratch: no allocation per call
+  weighted.resize(spectral_values.size());
+  for (std::size_t i = 0; i < weighted.size(); ++i) weighted[i] = spectral_values[i] * transmittance[i];
+  return integrate_spectral_samples(band, weighted);
 }
 
 void SpectralView::add_gray_body_spectrum(double temperature_K, double reflectance, std::vector<double>& out) const {

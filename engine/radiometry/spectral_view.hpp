@@ -19,11 +19,18 @@ struct SpectralView {
   // The black body's band radiance on the grid (grid integration), shared by
   // copies of the view and every gray body.
   std::shared_ptr<const BandPlanckTable> black_body;
+  // A path's transmittance per interval, weighting every band integral (eq.
+  // 9's T_out inside eq. 48); empty: none (vacuum).
+  std::vector<double> transmittance;
 
   // Validates the band (throws eoir::Error naming the field).
   static SpectralView make(double low_um, double high_um, std::int64_t intervals, BandIntegration integration,
                            SpectralQuadrature quadrature);
-  // Band integral (eq. 48) of a spectral vector sampled at sample_wavelengths_um.
+  // The same view seen through a path of transmittance T (one value per
+  // interval): grid integration (the exact Planck series has no weights).
+  static SpectralView through(const SpectralView& view, std::vector<double> transmittance);
+  // Band integral (eq. 48) of a spectral vector sampled at sample_wavelengths_um
+  // (weighted by the transmittance, if any).
   double integrate(const std::vector<double>& spectral_values) const;
   // eps B_lambda(T) of an opaque gray body of reflectance `reflectance`
   // (eq. 4's self-emission, emissivity 1 - SRF, spec 4.1.4.1): the spectral

@@ -97,9 +97,18 @@ void build_sky(World& w, const universe::Object& star_field, const universe::Lib
       s.streak_columns = c1 - c0;
       s.streak_rows = r1 - r0;
     }
-    // Spec 4.1.6.1: E = m0 B(T), band-integrated as the view integrates.
+    // Spec 4.1.6.1: E = m0 B(T), band-integrated as the view integrates;
+    // through the atmosphere's path toward the star (eq. 9's T_out).
     const double T = radiometry::temperature_from_b_v(star.b_v_mag);
-    s.irradiance_W_cm2 = radiometry::m0_sr(star.v_mag, T) * view.gray_body_radiance(T, 0.0);
+    const std::vector<double> through = w.atmosphere.to_space(Vec3::Zero(), d);
+    if (through.empty()) {
+      s.irradiance_W_cm2 = radiometry::m0_sr(star.v_mag, T) * view.gray_body_radiance(T, 0.0);
+    } else {
+      std::vector<double> e(view.sample_wavelengths_um.size(), 0.0);
+      view.add_gray_body_spectrum(T, 0.0, e);
+      for (std::size_t k = 0; k < e.size(); ++k) e[k] *= through[k];
+      s.irradiance_W_cm2 = radiometry::m0_sr(star.v_mag, T) * view.integrate(e);
+    }
     sky.stars.push_back(std::move(s));
   }
 }

@@ -20,7 +20,8 @@ SurfaceSpectrum::SurfaceSpectrum(const universe::Material& material, double gray
   reflects_ = std::any_of(srf_.begin(), srf_.end(), [](double r) { return r > 0.0; });
   if (!gray_ && view.integration == BandIntegration::grid) {
     std::vector<double> emissivity(srf_.size());
-    for (std::size_t i = 0; i < srf_.size(); ++i) emissivity[i] = 1.0 - srf_[i];
+    for (std::size_t i = 0; i < srf_.size(); ++i)
+      emissivity[i] = (1.0 - srf_[i]) * (view.transmittance.empty() ? 1.0 : view.transmittance[i]);
     emission_table_ = std::make_shared<const radiometry::BandPlanckTable>(view.band, view.sample_wavelengths_um,
                                                                           std::move(emissivity));
   }

@@ -36,7 +36,7 @@ class SurfaceSpectrum {
   bool reflects_ = false;
   std::vector<double> srf_;
   radiometry::Brdf brdf_;
-  // emission_radiance's table, weights 1 - SRF (grid integration, not gray).
+  // emission_radiance's table, weights (1 - SRF) times the view's transmittance (grid integration, not gray).
   std::shared_ptr<const radiometry::BandPlanckTable> emission_table_;
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <tuple>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -95,13 +96,15 @@ class WorldBuilder {
  public:
   WorldBuilder(World& world, const universe::Library& library) : world_(world), library_(library) {}
 
-  // The world's view of a material (shared by every part made of it).
-  const SurfaceSpectrum* spectrum(const std::string& material, double gray_reflectance, const std::string& field) {
+  // A material as a view sees it (shared by every part made of it and seen
+  // through the same view).
+  const SurfaceSpectrum* spectrum(const std::string& material, double gray_reflectance, const std::string& field,
+                                  const radiometry::SpectralView& view) {
     const universe::Material& m = library_.materials.get(material, field);
-    const auto key = std::make_pair(m.name, m.gray_body ? gray_reflectance : 0.0);
+    const auto key = std::make_tuple(m.name, m.gray_body ? gray_reflectance : 0.0, &view);
     auto it = index_.find(key);
     if (it != index_.end()) return world_.spectra[it->second].get();
-    world_.spectra.push_back(std::make_unique<SurfaceSpectrum>(m, gray_reflectance, world_.view.spectral));
+    world_.spectra.push_back(std::make_unique<SurfaceSpectrum>(m, gray_reflectance, view));
     index_[key] = world_.spectra.size() - 1;
     return world_.spectra.back().get();
   }
@@ -117,7 +120,7 @@ class WorldBuilder {
  private:
   World& world_;
   const universe::Library& library_;
-  std::map<std::pair<std::string, double>, std::size_t> index_;
+  std::map<std::tuple<std::string, double, const radiometry::SpectralView*>, std::size_t> index_;
 };
 
 // Places one object relative to the observer; nullptr for objects that image
@@ -232,7 +235,11 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
       const double f = sun_fraction(p);
       if (f > 0) {
         const double g = f * universe::sun_projected_solid_angle_sr(d) * cos_i * brdf.value(I, toward, n);
-        for (std::size_t i = 0; i < count; ++i) out[i] += g * w.sun.radiance[i];
+        if (sun_transmittance_.empty()) {
+          for (std::size_t i = 0; i < count; ++i) out[i] += g * w.sun.radiance[i];
+        } else {  // eq. 9's T_in
+          for (std::size_t i = 0; i < count; ++i) out[i] += g * w.sun.radiance[i] * sun_transmittance_[i];
+        }
       }
     }
   }
@@ -363,7 +370,7 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
     const SurfaceSpectrum& s = *point.spectrum;
     add_reflected_irradiance(p, placed.body_to_frame * normal_body, -p.normalized(), s.brdf(), false, E);
     for (std::size_t i = 0; i < E.size(); ++i) E[i] *= s.srf()[i];
-    reflected = world_->view.spectral.integrate(E);
+    reflected = view().integrate(E);
   }
   // Self-emission that cannot reach kNegligible of the reflected
   // light (a visible band by day: B(0.75 um, 380 K) ~ 1e-22 of the Sun's) is
@@ -416,6 +423,7 @@ double WorldObject::projected_area_m2() const {
 
 double WorldObject::point_irradiance_W_cm2() const {
   const double r2 = range_m * range_m;
+  // (the spectral vector is at the sensor already: T_out applied)
   if (!detailed_point_source) return world_->view.spectral.integrate(point_spectral_irradiance());
   if (placed.parts.size() == 1 && surface->plain()) return surface->part_radiance(0) * (projected_area_m2() / r2);
   return visible_patch_sum(tessellation(), [this](std::int32_t k) { return patch_radiance(k); }) / r2;
@@ -453,7 +461,7 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
     const Vec3 to_observer = -placed.position_m / range_m;
     const double phase = lambertian_sphere_phase(w.lights[static_cast<std::size_t>(light_)].to_sun.dot(to_observer));
     for (std::size_t i = 0; i < E.size(); ++i) E[i] = (self.reflected[i] * phase + self.emitted[i]) * omega;
-    return E;
+    return at_sensor(E);
   }
   const Vec3 v = toward_observer_body();
   const Vec3 toward = placed.body_to_frame * v;
@@ -465,7 +473,45 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
     const double omega = facing * patch.area_m2 / r2;
     for (std::size_t i = 0; i < E.size(); ++i) E[i] += L[i] * omega;
   }
-  return E;
+  return at_sensor(E);
+}
+
+std::vector<double> WorldObject::at_sensor(std::vector<double> spectrum) const {
+  const std::vector<double>& T = view().transmittance;
+  if (!T.empty())
+    for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] *= T[i];
+  return spectrum;
+}
+
+const radiometry::SpectralView& WorldObject::view() const {
+  return seen_through_ ? *seen_through_ : world_->view.spectral;
+}
+
+std::vector<double> WorldAtmosphere::to_observer(const Vec3& point_m) const {
+  std::vector<double> T;
+  if (!on()) return T;
+  const double range = point_m.norm();
+  atmosphere::PathColumns c;
+  bool ground = false;
+  if (observer_inside && range > 0 && atmosphere::altitude_m(earth, point_m) >= profile->top_altitude_m())
+    c = atmosphere::refracted_path_to_space(*profile, earth, Vec3::Zero(), point_m / range, ground);
+  if (!c.crosses || ground) c = atmosphere::path_between(*profile, earth, point_m, Vec3::Zero());
+  if (c.crosses) optics->transmittance(c, T);
+  return T;
+}
+
+std::vector<double> WorldAtmosphere::to_space(const Vec3& point_m, const Vec3& direction) const {
+  std::vector<double> T;
+  if (!on()) return T;
+  atmosphere::PathColumns c;
+  bool ground = false;
+  if (atmosphere::altitude_m(earth, point_m) < profile->top_altitude_m())
+    c = atmosphere::refracted_path_to_space(*profile, earth, point_m, direction, ground);
+  else
+    c = atmosphere::path_to_space(*profile, earth, point_m, direction);
+  if (ground) return std::vector<double>(static_cast<std::size_t>(optics->band().intervals), 0.0);
+  if (c.crosses) optics->transmittance(c, T);
+  return T;
 }
 
 double lambertian_sphere_phase(double cos_psi) {
@@ -546,6 +592,39 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     sources.push_back(&o);
   }
 
+  // The Earth's atmosphere, when its central body has it on (spec 4.3.1.1):
+  // each object's light reaches the sensor through it (T_out) and the Sun's
+  // reaches the object through it (T_in), at the object's centre. The
+  // Earth's own surface is seen as in vacuum still.
+  std::int32_t earth_id = -1;
+  for (std::size_t i = 0; i < world->objects.size(); ++i) {
+    const universe::Object& o = *sources[i];
+    if (o.kind != ObjectKind::central_body || o.central_body != universe::CentralBody::earth) continue;
+    earth_id = world->objects[i]->id;
+    if (o.atmosphere.model == universe::AtmosphereModel::none) continue;
+    const WorldObject& earth = *world->objects[i];
+    WorldAtmosphere& a = world->atmosphere;
+    a.settings = o.atmosphere;
+    a.profile = atmosphere::AtmosphereProfile::make(o.atmosphere, library.data_dir);
+    a.optics = std::make_shared<const atmosphere::PathOptics>(a.profile, o.atmosphere, library.data_dir, band);
+    a.earth.centre_m = earth.placed.position_m;
+    a.earth.pole = earth.placed.body_to_frame.col(2);
+    a.earth.equatorial_radius_m = earth.equatorial_radius_m;
+    a.earth.polar_radius_m = earth.polar_radius_m;
+    a.observer_inside = atmosphere::altitude_m(a.earth, Vec3::Zero()) < a.profile->top_altitude_m();
+  }
+  if (world->atmosphere.on())
+    for (const auto& wp : world->objects) {
+      WorldObject& w = *wp;
+      if (w.id == earth_id) continue;
+      std::vector<double> out = world->atmosphere.to_observer(w.placed.position_m);
+      if (!out.empty()) w.seen_through_ = std::make_unique<radiometry::SpectralView>(
+                            radiometry::SpectralView::through(world->view.spectral, std::move(out)));
+      if (w.id != world->sun.object)
+        w.sun_transmittance_ = world->atmosphere.to_space(
+            w.placed.position_m, (world->sun.position_m - w.placed.position_m).normalized());
+    }
+
   // 2. What may shade what: every other body, for the Sun and each source.
   std::vector<geometry::Occulter> occulters;
   for (const auto& w : world->objects) occulters.push_back(occulter_of(*w));
@@ -592,7 +671,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       double T = shape[p].temperature_K.value_or(o.body.temperature_K);
       if (eclipse) T = std::pow(te4 + fraction * (std::pow(T, 4.0) - te4), 0.25);
       parts.push_back(PartSurface{builder.spectrum(shape[p].material.value_or(o.body.material),
-                                                   shape[p].reflectance.value_or(o.body.reflectance), field),
+                                                   shape[p].reflectance.value_or(o.body.reflectance), field, w.view()),
                                   T});
     }
     Geography geography;
@@ -611,7 +690,8 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
             std::snprintf(prefix, sizeof prefix, "igbp_%02d_", c);
             for (const std::string& name : library.materials.names())
               if (name.rfind(prefix, 0) == 0)
-                geography.class_spectra[static_cast<std::size_t>(c)] = builder.spectrum(name, 0.0, o.name + ".bitmap");
+                geography.class_spectra[static_cast<std::size_t>(c)] =
+                    builder.spectrum(name, 0.0, o.name + ".bitmap", w.view());
           }
         }
         if (f.scene_mode == SceneMode::bitmap && maps->albedo) {
@@ -620,7 +700,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
           for (int v = 0; v < 256; ++v)
             geography.albedo_spectra.push_back(builder.spectrum(
                 universe::gray_body_material,
-                std::clamp(level.value_offset() + level.value_scale() * v, 0.0, 1.0), o.name + ".bitmap"));
+                std::clamp(level.value_offset() + level.value_scale() * v, 0.0, 1.0), o.name + ".bitmap", w.view()));
         }
         if (o.body.thermal_model == universe::ThermalModel::climatology && maps->land_mask) {
           geography.land_mask = &maps->land_mask->level_for(gsd_m, w.equatorial_radius_m);
@@ -633,7 +713,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     }
     w.surface = std::make_unique<SurfaceModel>(std::move(parts), thermal,
                                                builder.self_radiance(o.body.spectrum, o.name + ".spectrum"),
-                                               std::move(geography), world->view.spectral,
+                                               std::move(geography), w.view(),
                                                f.scene_mode == SceneMode::smooth ? f.temperature_table_size : 0);
   }
 
@@ -682,22 +762,6 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
           source.srf_bound() * sun_band_radiance * sun_omega * 2.0 / (3.0 * constants::pi) + 2.0 * source.emission_bound();
       w->negligible_light_[j] = omega * reflection * radiance < kNegligible * floor;
     }
-  }
-
-  // The Earth's atmosphere, when its central body has it on.
-  for (std::size_t i = 0; i < world->objects.size(); ++i) {
-    const universe::Object& o = *sources[i];
-    if (o.kind != ObjectKind::central_body || o.central_body != universe::CentralBody::earth ||
-        o.atmosphere.model == universe::AtmosphereModel::none)
-      continue;
-    const WorldObject& earth = *world->objects[i];
-    WorldAtmosphere& a = world->atmosphere;
-    a.settings = o.atmosphere;
-    a.profile = atmosphere::AtmosphereProfile::make(o.atmosphere, library.data_dir);
-    a.earth.centre_m = earth.placed.position_m;
-    a.earth.pole = earth.placed.body_to_frame.col(2);
-    a.earth.equatorial_radius_m = earth.equatorial_radius_m;
-    a.earth.polar_radius_m = earth.polar_radius_m;
   }
 
   std::vector<const geometry::PlacedObject*> cast_against;

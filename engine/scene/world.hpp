@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "atmosphere/path_optics.hpp"
 #include "atmosphere/profile.hpp"
 #include "atmosphere/shell_path.hpp"
 #include "core/fidelity.hpp"
@@ -76,8 +77,17 @@ struct SunLight {
 struct WorldAtmosphere {
   universe::AtmosphereSettings settings;
   std::shared_ptr<const atmosphere::AtmosphereProfile> profile;  // null: vacuum
+  std::shared_ptr<const atmosphere::PathOptics> optics;           // on the view's band
   atmosphere::EarthFigure earth;
+  bool observer_inside = false;  // the observer lies below the top of the atmosphere
   bool on() const { return profile != nullptr; }
+  // The transmittance per interval of the view from a point to the observer
+  // (the observer at the origin) and from a point toward space along a unit
+  // direction (toward the Sun, a star); empty where the path crosses no air.
+  // A path from an observer inside the atmosphere to space follows the
+  // refracted ray.
+  std::vector<double> to_observer(const Vec3& point_m) const;
+  std::vector<double> to_space(const Vec3& point_m, const Vec3& direction) const;
 };
 
 class World;
@@ -145,8 +155,11 @@ class WorldObject {
   // The detailed sum on a tessellation of another patch edge (uncached): how
   // the sum converges with the patch size (scene/adaptive_fidelity.hpp).
   double detailed_point_irradiance_W_cm2(double patch_edge_m) const;
-  // Its spectral vector (W cm^-2 um^-1).
+  // Its spectral vector at the sensor (W cm^-2 um^-1; T_out applied).
   std::vector<double> point_spectral_irradiance() const;
+  // A spectrum of this object's light as the sensor receives it (times the
+  // view's transmittance, if any).
+  std::vector<double> at_sensor(std::vector<double> spectrum) const;
 
   // This object as a source of eq. 7: its area-weighted SRF and emission
   // (per patch where the temperature varies, per part otherwise), made on
@@ -156,6 +169,12 @@ class WorldObject {
   // Visible fraction of the Sun's disc at a point of this object (umbra 0,
   // penumbra between, sunlight 1) against every other body.
   double sun_fraction(const Vec3& point_frame_m) const;
+
+  // The spectral view of this object's light at the sensor: the world's, or
+  // with the atmosphere on, the world's seen through the path from the
+  // object's centre to the sensor (eq. 9's T_out in every band integral of
+  // its surface: images, point sources, picks, target metrics).
+  const radiometry::SpectralView& view() const;
 
  private:
   friend class World;
@@ -175,6 +194,8 @@ class WorldObject {
   void add_reflected_irradiance(const Vec3& point_frame, const Vec3& normal_frame, const Vec3& toward,
                                 const radiometry::Brdf& brdf, bool sun_only, std::vector<double>& out) const;
   const World* world_ = nullptr;
+  std::unique_ptr<radiometry::SpectralView> seen_through_;  // the atmosphere's T_out, if its path crosses air
+  std::vector<double> sun_transmittance_;  // eq. 9's T_in of the Sun's light at the centre; empty: 1
   std::int32_t light_ = -1;  // index in World::lights, -1 if not a source
   std::vector<std::vector<geometry::Occulter>> occulters_;  // per light (0 the Sun, 1 + k lights[k]): may shade it
   std::vector<char> negligible_light_;  // per lights[k]: its light here is below kNegligible of the self-emission

@@ -125,7 +125,7 @@ frames::Vec3 vec_from(const json& j, const std::string& key, const std::string& 
 }
 
 ObjectKind kind_from(const std::string& s, const std::string& where) {
-  for (int k = 1; k <= 7; ++k)
+  for (int k = 1; k <= static_cast<int>(ObjectKind::site); ++k)
     if (s == universe::kind_name(static_cast<ObjectKind>(k))) return static_cast<ObjectKind>(k);
   corrupt(where, "unknown kind '" + s + "'");
 }

@@ -1,5 +1,6 @@
 // One object of the modeled universe (spec 3.1): central body, star field,
-// satellite, aircraft, ground vehicle, missile, or sensor (an SSG-SMP).
+// satellite, aircraft, ground vehicle, missile, sensor (an SSG-SMP), or site
+// (a place fixed on the Earth that carries sensors and images nothing).
 #pragma once
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -24,6 +25,7 @@ enum class ObjectKind : int {
   ground_vehicle = 5,
   missile = 6,
   sensor = 7,
+  site = 8,
 };
 const char* kind_name(ObjectKind kind);  // "satellite", ...
 
@@ -98,6 +100,15 @@ struct StarFieldProperties {
   double zodiacal_light_scale = 1.0;     // 1 = Leinert Table 19 (90 deg elongation in the ecliptic)
 };
 
+// A site: fixed on the Earth at a WGS84 geodetic position. Its body axes are
+// its local horizon (x east, y north, z up along the geodetic normal), so a
+// sensor on it that is not pointed looks at the zenith with north up.
+struct SiteProperties {
+  double latitude_deg = 0.0;
+  double longitude_deg = 0.0;
+  double height_m = 0.0;  // above the ellipsoid
+};
+
 struct Object {
   std::string name;
   ObjectKind kind = ObjectKind::satellite;
@@ -107,7 +118,8 @@ struct Object {
   AtmosphereSettings atmosphere;  // central bodies: only the Earth's may be on
   StarFieldProperties stars;
   SensorParameters sensor;
-  PushedState state;
+  SiteProperties site;
+  PushedState state;  // never valid for sites (their position is site)
   std::uint64_t revision = 0;  // bumped on every property change (sensor-model caches)
 };
 

@@ -19,8 +19,12 @@ constexpr double max_length_m = 1.0e12;
 // beyond the planets); velocities below the speed of light.
 constexpr double max_position_m = 1.0e14;
 constexpr double max_speed_m_s = 299792458.0;
-// Geodetic longitudes of pushed states, deg.
+// Geodetic longitudes of pushed states and sites, deg.
 constexpr double max_abs_longitude_deg = 360.0;
+// Heights of sites above the WGS84 ellipsoid: the deepest ocean floor
+// (-11 km) to the edge of space (100 km).
+constexpr double min_site_height_m = -1.1e4;
+constexpr double max_site_height_m = 1.0e5;
 // Pushed angular velocities, rad/s (a turn in 6 ms).
 constexpr double max_angular_rate_rad_s = 1.0e3;
 }  // namespace eoir::universe::object_bounds

@@ -14,6 +14,10 @@ void push_state(Object& object, const EngineTime& epoch, int frame, const double
                 const double velocity[3], const double q[4], const double angular_velocity[3]) {
   if (object.kind == ObjectKind::central_body || object.kind == ObjectKind::star_field)
     throw Error(Status::not_allowed, "state: '" + object.name + "' moves on its own ephemeris and takes no state");
+  if (object.kind == ObjectKind::site)
+    throw Error(Status::not_allowed, "state: site '" + object.name +
+                                         "' is fixed on the Earth at its latitude_deg, longitude_deg and height_m "
+                                         "properties and takes no state (point its sensors instead)");
   namespace b = object_bounds;
   const Range metres{-b::max_position_m, b::max_position_m};
   for (int i = 0; i < 3; ++i) {
@@ -83,6 +87,16 @@ Kinematics kinematics_at(const Universe& universe, const Object& object, const E
     return k;
   }
   if (object.kind == ObjectKind::star_field) return k;
+  if (object.kind == ObjectKind::site) {
+    // Fixed on the Earth; body axes east, north, up.
+    const SiteProperties& p = object.site;
+    const frames::Mat3 m = frames::j2000_to_earth_fixed(t);
+    const frames::Vec3 r = frames::geodetic_to_earth_fixed(p.latitude_deg, p.longitude_deg, p.height_m);
+    k.position_m = m.transpose() * r;
+    k.velocity_m_s = m.transpose() * frames::Vec3(0, 0, frames::earth_rotation_rad_per_s).cross(r);
+    k.attitude = Eigen::Quaterniond(m.transpose() * frames::horizon_to_earth_fixed(p.latitude_deg, p.longitude_deg));
+    return k;
+  }
   if (object.kind == ObjectKind::sensor) {
     const Object& parent = universe.get(object.parent, "parent");
     k = kinematics_at(universe, parent, t);

@@ -215,6 +215,22 @@ std::vector<Spec> star_field_properties() {
   return t;
 }
 
+// A site's place on the Earth (WGS84). Heights from the deepest ocean floor
+// to the edge of space (100 km); longitudes as pushed geodetic states take them.
+std::vector<Spec> site_properties() {
+  std::vector<Spec> t;
+  t.push_back(number_property<Object>("latitude_deg", "deg", "Geodetic latitude (WGS84) of the site",
+                                      [](Object& o) -> auto& { return o.site.latitude_deg; }, Range{-90, 90}));
+  t.push_back(number_property<Object>(
+      "longitude_deg", "deg", "Longitude of the site, east positive",
+      [](Object& o) -> auto& { return o.site.longitude_deg; },
+      Range{-object_bounds::max_abs_longitude_deg, object_bounds::max_abs_longitude_deg}));
+  t.push_back(number_property<Object>("height_m", "m", "Height of the site above the WGS84 ellipsoid",
+                                      [](Object& o) -> auto& { return o.site.height_m; },
+                                      Range{object_bounds::min_site_height_m, object_bounds::max_site_height_m}));
+  return t;
+}
+
 std::vector<Spec> sensor_object_properties() {
   std::vector<Spec> t;
   for (const auto& s : sensor_properties()) {
@@ -267,6 +283,7 @@ const std::vector<Spec>& properties_of(ObjectKind kind) {
   static const std::vector<Spec> missile = body_properties(true);
   static const std::vector<Spec> stars = star_field_properties();
   static const std::vector<Spec> sensors = sensor_object_properties();
+  static const std::vector<Spec> sites = site_properties();
   static const std::vector<Spec> central = [] {
     std::vector<Spec> t = body_properties(false);
     for (Spec& s : atmosphere_properties()) t.push_back(std::move(s));
@@ -277,6 +294,7 @@ const std::vector<Spec>& properties_of(ObjectKind kind) {
     case ObjectKind::star_field: return stars;
     case ObjectKind::missile: return missile;
     case ObjectKind::sensor: return sensors;
+    case ObjectKind::site: return sites;
     default: return body;
   }
 }
@@ -315,6 +333,7 @@ const char* kind_name(ObjectKind kind) {
     case ObjectKind::ground_vehicle: return "ground_vehicle";
     case ObjectKind::missile: return "missile";
     case ObjectKind::sensor: return "sensor";
+    case ObjectKind::site: return "site";
   }
   return "?";
 }

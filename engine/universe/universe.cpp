@@ -9,10 +9,10 @@
 
 namespace eoir::universe {
 namespace {
-void check_limit(std::size_t have, std::size_t limit, const char* what) {
+void check_limit(std::size_t have, std::size_t limit, const char* what, const char* source = " (spec 3.1)") {
   if (have >= limit)
-    throw Error(Status::limit_exceeded, std::string("kind: at most ") + std::to_string(limit) + " " + what +
-                                            " (spec 3.1); remove one first");
+    throw Error(Status::limit_exceeded, std::string("kind: at most ") + std::to_string(limit) + " " + what + source +
+                                            "; remove one first");
 }
 
 // Names travel into files (.scd, FITS, JSON): valid UTF-8 without control
@@ -90,6 +90,11 @@ Object& Universe::add(ObjectKind kind, const std::string& name, const std::strin
                   "aircraft plus ground vehicles");
       break;
     case ObjectKind::missile: check_limit(count(kind), limits::max_missiles, "missiles"); break;
+    case ObjectKind::site:
+      check_limit(count(kind), limits::max_sites, "sites", "");
+      o.body.shape = ShapeKind::none;  // images nothing
+      o.body.dimensions_m.clear();
+      break;
     case ObjectKind::sensor: {
       check_limit(count(kind), limits::max_sensors, "sensors (scene-generator/sensor-model pairs)");
       const Object& p = get(parent, "parent");

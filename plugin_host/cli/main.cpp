@@ -161,7 +161,7 @@ const std::vector<CommandSpec>& commands() {
        "usage: eoir properties KIND [--format table|json]\n"
        "\n"
        "Every property of a kind of object, with its type, unit, default, range and\n"
-       "meaning. KIND: sensor, satellite, aircraft, ground_vehicle, missile,\n"
+       "meaning. KIND: sensor, satellite, aircraft, ground_vehicle, missile, site,\n"
        "star_field, central_body (the Earth's defaults) or a central body's name\n"
        "(Sun, Moon...). Defaults are read from a fresh engine; ranges are the\n"
        "engine's (eoir_property_info): a value outside one is refused when set.\n",
@@ -796,11 +796,11 @@ int cmd_properties(const std::vector<std::string>& args, const Global& g) {
   const std::string format = o.get("--format").value_or("table");
   if (format != "table" && format != "json") throw UsageError("--format: '" + format + "' is not table or json");
   if (!o.scenario) throw UsageError("properties: missing KIND (sensor, satellite, aircraft, ground_vehicle, "
-                                    "missile, star_field, central_body or a central body's name)");
+                                    "missile, site, star_field, central_body or a central body's name)");
   const std::string kind = *o.scenario;
   static const std::vector<std::pair<std::string, int32_t>> kinds = {
       {"satellite", EOIR_KIND_SATELLITE}, {"aircraft", EOIR_KIND_AIRCRAFT},
-      {"ground_vehicle", EOIR_KIND_GROUND_VEHICLE}, {"missile", EOIR_KIND_MISSILE}};
+      {"ground_vehicle", EOIR_KIND_GROUND_VEHICLE}, {"missile", EOIR_KIND_MISSILE}, {"site", EOIR_KIND_SITE}};
   static const std::vector<std::string> bodies = {"Sun", "Mercury", "Venus", "Earth", "Mars", "Jupiter",
                                                   "Saturn", "Uranus", "Neptune", "Moon"};
   Engine engine(config_of(choice));
@@ -921,12 +921,12 @@ int cmd_load_state(const std::vector<std::string>& args, const Global& g) {
   std::vector<std::pair<std::string, std::string>> sensors;
   std::vector<std::string> sensor_names;
   static const char* const kind_names[] = {"?", "central body", "star field", "satellite", "aircraft",
-                                           "ground vehicle", "missile", "sensor"};
+                                           "ground vehicle", "missile", "sensor", "site"};
   for (std::size_t i = 0; i < n; ++i) {
     const char* name = nullptr;
     int32_t k = 0;
     engine.check(api.object_at(engine.handle(), i, &name, &k), "object_at");
-    std::cout << "  " << (name ? name : "") << " (" << kind_names[(k >= 1 && k <= 7) ? k : 0] << ")\n";
+    std::cout << "  " << (name ? name : "") << " (" << kind_names[(k >= 1 && k <= EOIR_KIND_SITE) ? k : 0] << ")\n";
     if (k == EOIR_KIND_SENSOR) {
       sensor_names.emplace_back(name ? name : "");
       sensors.emplace_back(sensor_names.back(), "its parent");

@@ -176,6 +176,8 @@ class RunContext {
     // C ABI 1.3 truth: kind, apparent RA/Dec, magnitudes, streak ends.
     const bool v13 = api.struct_size >= offsetof(eoir_api_v1, target_spectrum_get) + sizeof api.target_spectrum_get &&
                      api.target_spectrum_get != nullptr;
+    // C ABI 1.5 truth: topocentric azimuth and elevation.
+    const bool v15 = api.struct_size >= offsetof(eoir_api_v1, sensor_point_at) + sizeof api.sensor_point_at;
     const auto num = [](double x) { return std::isfinite(x) ? ojson(x) : ojson(nullptr); };
     ojson out = ojson::array();
     for (std::size_t k = 0; k < n; ++k) {
@@ -217,6 +219,11 @@ class RunContext {
       if (v13 && t.kind == EOIR_TRUTH_STAR) {
         o["v_mag"] = num(t.v_mag);
         o["b_v_mag"] = num(t.b_v_mag);
+      }
+      // Only from sensors within 100 km of the Earth's surface.
+      if (v15 && t.topocentric) {
+        o["azimuth_deg"] = num(t.azimuth_deg);
+        o["elevation_deg"] = num(t.elevation_deg);
       }
       // The streak (start and end of the integration) in FITS pixels.
       const double sx = v13 ? t.start_pixel_x : t.pixel_x, sy = v13 ? t.start_pixel_y : t.pixel_y;

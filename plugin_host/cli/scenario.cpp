@@ -96,7 +96,7 @@ void check_perigee(double perigee_m, const std::string& path) {
   }
 }
 
-Attitude parse_attitude(const json& j, const std::string& path) {
+Attitude parse_attitude(const json& j, const std::string& path, bool sensor) {
   need_object(j, path);
   Attitude a;
   const std::string type = get_string(j, path, "type");
@@ -116,7 +116,7 @@ Attitude parse_attitude(const json& j, const std::string& path) {
     a.type = Attitude::Type::fixed_inertial;
   } else if (type == "spinning_inertial") {
     only_keys(j, path, {"type", "quaternion", "axis_body", "rate_deg_s", "epoch"});
-    a = parse_attitude(json{{"type", "fixed_inertial"}, {"quaternion", need(j, path, "quaternion")}}, path);
+    a = parse_attitude(json{{"type", "fixed_inertial"}, {"quaternion", need(j, path, "quaternion")}}, path, sensor);
     a.type = Attitude::Type::spinning_inertial;
     a.axis_body = get_vec3(j, path, "axis_body");
     try {
@@ -134,8 +134,23 @@ Attitude parse_attitude(const json& j, const std::string& path) {
     only_keys(j, path, {"type", "target"});
     a.target = get_string(j, path, "target");
     a.type = Attitude::Type::target;
+  } else if (type == "azel" && sensor) {
+    only_keys(j, path, {"type", "azimuth_deg", "elevation_deg"});
+    a.azimuth_deg = get_number(j, path, "azimuth_deg");
+    a.elevation_deg = get_number(j, path, "elevation_deg");
+    if (std::fabs(a.azimuth_deg) > 360) fail(path + ".azimuth_deg", "must be in [-360, 360]");
+    if (std::fabs(a.elevation_deg) > 90) fail(path + ".elevation_deg", "must be in [-90, 90]");
+    a.type = Attitude::Type::azel;
+  } else if (type == "azel") {
+    fail(path + ".type", "'azel' points sensors only (a sensor's pointing)");
   } else {
-    fail(path + ".type", "'" + type + "' is not one of fixed_inertial, spinning_inertial, nadir, target");
+    const std::vector<std::string> types = sensor ? std::vector<std::string>{"fixed_inertial", "spinning_inertial",
+                                                                             "nadir", "target", "azel"}
+                                                  : std::vector<std::string>{"fixed_inertial", "spinning_inertial",
+                                                                             "nadir", "target"};
+    std::string list;
+    for (const auto& t : types) list += (list.empty() ? "" : ", ") + t;
+    fail(path + ".type", "'" + type + "' is not one of " + list + did_you_mean(type, types));
   }
   return a;
 }
@@ -331,10 +346,17 @@ Scenario parse_scenario(const json& doc, const std::string& file) {
       check_name(o.name, o.path + ".name");
       if (!names.insert(o.name).second) fail(o.path + ".name", "an object named '" + o.name + "' exists already");
       o.kind = get_string(objs[i], o.path, "kind");
-      if (o.kind != "satellite" && o.kind != "aircraft" && o.kind != "ground_vehicle" && o.kind != "missile")
-        fail(o.path + ".kind", "'" + o.kind + "' is not one of satellite, aircraft, ground_vehicle, missile");
+      static const std::vector<std::string> kinds{"satellite", "aircraft", "ground_vehicle", "missile", "site"};
+      if (!std::count(kinds.begin(), kinds.end(), o.kind))
+        fail(o.path + ".kind", "'" + o.kind + "' is not one of satellite, aircraft, ground_vehicle, missile, site" +
+                                   did_you_mean(o.kind, kinds));
       o.motion = parse_motion(need(objs[i], o.path, "motion"), o.path + ".motion");
-      if (objs[i].contains("attitude")) o.attitude = parse_attitude(objs[i]["attitude"], o.path + ".attitude");
+      if (o.kind == "site" && o.motion.kind != Motion::Kind::fixed_geodetic)
+        fail(o.path + ".motion.type", "a site is fixed on the Earth: its motion must be fixed_geodetic");
+      if (o.kind == "site" && objs[i].contains("attitude"))
+        fail(o.path + ".attitude", "a site's attitude is its local horizon (east, north, up); point its sensors "
+                                   "with their pointing instead");
+      if (objs[i].contains("attitude")) o.attitude = parse_attitude(objs[i]["attitude"], o.path + ".attitude", false);
       if (objs[i].contains("properties")) o.properties = need_object(objs[i]["properties"], o.path + ".properties");
       sc.objects.push_back(std::move(o));
     }
@@ -354,7 +376,7 @@ Scenario parse_scenario(const json& doc, const std::string& file) {
       if (!sc.find_object(s.parent) && !std::count(sc.central_bodies.begin(), sc.central_bodies.end(), s.parent) &&
           s.parent != "Sun")
         fail(s.path + ".parent", "unknown object '" + s.parent + "'");
-      if (sens[i].contains("pointing")) s.pointing = parse_attitude(sens[i]["pointing"], s.path + ".pointing");
+      if (sens[i].contains("pointing")) s.pointing = parse_attitude(sens[i]["pointing"], s.path + ".pointing", true);
       if (sens[i].contains("parameters"))
         s.parameters = need_object(sens[i]["parameters"], s.path + ".parameters");
       sc.sensors.push_back(std::move(s));

@@ -23,13 +23,17 @@ class ScenarioError : public std::runtime_error {
 };
 
 struct Attitude {
-  enum class Type { none, fixed_inertial, nadir, target, spinning_inertial };
+  // azel: sensors only, pointed by the engine (eoir_sensor_point_azel); a
+  // sensor on a site tracks its target through eoir_sensor_point_at.
+  enum class Type { none, fixed_inertial, nadir, target, spinning_inertial, azel };
   Type type = Type::none;
   Quat quaternion{1, 0, 0, 0};  // body -> J2000 (fixed_inertial; spinning_inertial at the epoch)
   std::string target;           // object name (target)
   Vec3 axis_body{0, 0, 1};      // spinning_inertial: the body axis it turns about
   double rate_deg_s = 0;        //   and how fast
   double epoch_s = 0;           //   when it has `quaternion` (default: the scenario's start)
+  double azimuth_deg = 0;       // azel: from north through east
+  double elevation_deg = 0;     //   above the geodetic horizon
 };
 
 // Where the host pushes an object's state from.
@@ -45,7 +49,7 @@ struct Motion {
 
 struct ObjectSpec {
   std::string name;
-  std::string kind;  // satellite, aircraft, ground_vehicle, missile
+  std::string kind;  // satellite, aircraft, ground_vehicle, missile, site (fixed_geodetic motion only)
   Motion motion;
   Attitude attitude;
   nlohmann::json properties = nlohmann::json::object();

@@ -1,6 +1,7 @@
 #include "session.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "iso_time.hpp"
@@ -13,7 +14,15 @@ int32_t kind_code(const std::string& kind) {
   if (kind == "satellite") return EOIR_KIND_SATELLITE;
   if (kind == "aircraft") return EOIR_KIND_AIRCRAFT;
   if (kind == "ground_vehicle") return EOIR_KIND_GROUND_VEHICLE;
+  if (kind == "site") return EOIR_KIND_SITE;
   return EOIR_KIND_MISSILE;
+}
+
+// The engine's pointing calls (C ABI 1.5), or an error naming `where`.
+void need_pointing(const eoir_api_v1& api, const std::string& where) {
+  if (api.struct_size < offsetof(eoir_api_v1, sensor_point_at) + sizeof api.sensor_point_at ||
+      api.sensor_point_azel == nullptr || api.sensor_point_at == nullptr)
+    throw EngineError(where + ": the engine library cannot point sensors (C ABI 1.5 needed)", EOIR_ERR_ABI_MISMATCH);
 }
 
 bool natural_j2000(const ObjectSpec& o) {
@@ -38,12 +47,25 @@ Session::Session(Engine& engine, const Scenario& sc) : engine_(engine), scenario
   for (const auto& b : sc.body_properties) apply_properties(b.name, b.properties, b.path + ".properties");
   for (const auto& o : sc.objects) {
     engine_.check(api.object_add(e, kind_code(o.kind), o.name.c_str()), o.path + ".name");
+    if (o.kind == "site") {
+      // A site is placed once, by its properties; it takes no states.
+      const Motion& m = o.motion;
+      engine_.check(api.set_number(e, o.name.c_str(), "latitude_deg", m.lat_deg), o.path + ".motion.lat_deg");
+      engine_.check(api.set_number(e, o.name.c_str(), "longitude_deg", m.lon_deg), o.path + ".motion.lon_deg");
+      engine_.check(api.set_number(e, o.name.c_str(), "height_m", m.alt_m), o.path + ".motion.alt_m");
+    }
     apply_properties(o.name, o.properties, o.path + ".properties");
   }
   for (const auto& s : sc.sensors) {
     engine_.check(api.sensor_add(e, s.name.c_str(), s.parent.c_str()), s.path);
     apply_properties(s.name, s.parameters, s.path + ".parameters");
+    if (s.pointing.type == Attitude::Type::azel || engine_pointed_target(s)) need_pointing(api, s.path + ".pointing");
   }
+}
+
+bool Session::engine_pointed_target(const SensorSpec& s) const {
+  const ObjectSpec* parent = scenario_.find_object(s.parent);
+  return s.pointing.type == Attitude::Type::target && parent && parent->kind == "site";
 }
 
 void Session::apply_properties(const std::string& object, const nlohmann::json& props, const std::string& path) {
@@ -148,6 +170,7 @@ Quat Session::attitude_j2000(const Attitude& a, const PosVel& self_now, const st
   try {
     switch (a.type) {
       case Attitude::Type::none:
+      case Attitude::Type::azel:  // pointed by the engine (set_time step 3)
         return {1, 0, 0, 0};
       case Attitude::Type::fixed_inertial:
         return a.quaternion;
@@ -197,6 +220,7 @@ void Session::set_time(double t) {
   //    it depends on another object; the others are revisited in step 2.
   std::vector<const ObjectSpec*> later;
   for (const auto& o : scenario_.objects) {
+    if (o.kind == "site") continue;  // fixed by its properties
     const PosVel st = motion_state(o, t);
     const bool j2000 = natural_j2000(o);
     if (j2000) host_j2000_[o.name] = st;
@@ -216,8 +240,21 @@ void Session::set_time(double t) {
          o->path + ".attitude", angular_velocity_j2000(o->attitude, self, o->path + ".attitude"));
   }
   // 3. Sensor pointing (position is the parent's; the engine ignores it).
+  //    By azimuth and elevation, and tracking from a site, the engine
+  //    computes the attitude and its rates itself.
   for (const auto& s : scenario_.sensors) {
     if (s.pointing.type == Attitude::Type::none) continue;
+    if (s.pointing.type == Attitude::Type::azel) {
+      engine_.check(api.sensor_point_azel(engine_.handle(), s.name.c_str(), s.pointing.azimuth_deg,
+                                          s.pointing.elevation_deg),
+                    s.path + ".pointing");
+      continue;
+    }
+    if (engine_pointed_target(s)) {
+      engine_.check(api.sensor_point_at(engine_.handle(), s.name.c_str(), s.pointing.target.c_str()),
+                    s.path + ".pointing.target");
+      continue;
+    }
     const PosVel parent = j2000_state(s.parent, s.path + ".parent");
     push(s.name, EOIR_FRAME_J2000, parent, attitude_j2000(s.pointing, parent, s.path + ".pointing"),
          s.path + ".pointing", angular_velocity_j2000(s.pointing, parent, s.path + ".pointing"));

@@ -24,6 +24,9 @@ class Session {
 
  private:
   void apply_properties(const std::string& object, const nlohmann::json& props, const std::string& path);
+  // Target pointing the engine does (eoir_sensor_point_at): from a site,
+  // with the zenith up in the picture.
+  bool engine_pointed_target(const SensorSpec& s) const;
   PosVel j2000_state(const std::string& name, const std::string& where);
   // The attitude (body -> J2000) at this step moved by dt_s seconds, the
   // states of self and a target extrapolated linearly.

@@ -92,6 +92,9 @@ int main(void) {
   CHECK_LAYOUT(eoir_truth, v_mag, 152);
   CHECK_LAYOUT(eoir_truth, start_pixel_x, 168);
   CHECK_LAYOUT(eoir_truth, end_pixel_y, 192);
+  CHECK_LAYOUT(eoir_truth, topocentric, 200); /* 1.5 */
+  CHECK_LAYOUT(eoir_truth, azimuth_deg, 208);
+  CHECK_LAYOUT(eoir_truth, elevation_deg, 216);
   CHECK_LAYOUT(eoir_api_v1, abi_major, 4);
   CHECK_LAYOUT(eoir_api_v1, version, 16);
   CHECK_LAYOUT(eoir_api_v1, engine_create, 40);
@@ -100,5 +103,8 @@ int main(void) {
   CHECK_LAYOUT(eoir_api_v1, pick_get, 328);
   CHECK_LAYOUT(eoir_api_v1, snr_constraint, 336);
   CHECK_LAYOUT(eoir_api_v1, truth_get, 352);
+  CHECK_LAYOUT(eoir_api_v1, frame_fidelity_get, 392); /* 1.4 */
+  CHECK_LAYOUT(eoir_api_v1, sensor_point_azel, 400);  /* 1.5 */
+  CHECK_LAYOUT(eoir_api_v1, sensor_point_at, 408);
   return CHECK_SUMMARY();
 }

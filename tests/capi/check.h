@@ -103,6 +103,20 @@ static inline void host_camera(eoir_engine e, const char* iso, int64_t pixels, d
   OK(eoir_set_bool(e, "Cam", "noise_enabled", 0));
 }
 
+/* The Earth-fixed position at distance L from the point (0 N, 0 E, height
+ * h) toward the north at elevation el_deg (atmosphere tests). */
+static inline eoir_status place_north(eoir_engine e, const char* name, double h, double L, double el_deg) {
+  const double el = el_deg * 3.14159265358979323846 / 180.0;
+  const eoir_state s = state_at(EOIR_FRAME_EARTH_FIXED, 6378137.0 + h + L * sin(el), 0.0, L * cos(el));
+  return eoir_object_set_state(e, name, NULL, &s);
+}
+
+/* Kasten and Young (1989), Applied Optics 28, 4735: the relative air mass
+ * at apparent zenith angle z (deg). */
+static inline double kasten_young(double z_deg) {
+  return 1.0 / (cos(z_deg * 3.14159265358979323846 / 180.0) + 0.50572 * pow(96.07995 - z_deg, -1.6364));
+}
+
 #define CHECK_SUMMARY()                                                                  \
   (printf("%d checks, %d failed\n", check_count, check_failures), check_failures ? 1 : 0)
 

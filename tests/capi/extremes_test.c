@@ -2,7 +2,8 @@
  * returns non-finite data with EOIR_OK (issue 11, item 8; DESIGN 5).
  *
  * Every numeric, integer and array property of every kind (sensor,
- * satellite, aircraft, ground vehicle, missile, the Earth, the star field),
+ * satellite, aircraft, ground vehicle, missile, the Earth, the star field,
+ * a site whose sensor tracks the target),
  * as eoir_property_info lists it, is set to extreme values: just outside each
  * bound of its range, NaN, +-Inf, +-1e308, +-DBL_MAX, +-5e-324 must be
  * refused with EOIR_ERR_OUT_OF_RANGE (or LIMIT_EXCEEDED, NOT_ALLOWED) and a
@@ -142,6 +143,7 @@ static void read_truth_and_pick(eoir_engine e, const char* label) {
       must_be_finite(t.range_m, "truth.range_m", label);
       must_be_finite(t.effective_irradiance + t.effective_radiance, "truth radiometry", label);
       must_be_finite(t.snr, "truth.snr", label);
+      must_be_finite(t.azimuth_deg + t.elevation_deg, "truth azimuth/elevation", label);
     }
   for (space = 0; space < 2; ++space) {
     static double wl[4096], l[4096];
@@ -329,8 +331,31 @@ static void sweep_property(eoir_engine e, const char* object, const eoir_propert
   }
 }
 
+/* Sensor1 on the site Site1 (10 N, 20 E) tracking the target 1000 km
+ * above it. */
+static eoir_engine site_scene(void) {
+  eoir_engine e = NULL;
+  eoir_state s = state_at(EOIR_FRAME_GEODETIC, 10.0, 20.0, 1000e3);
+  const double r = 10.0;
+  OK(eoir_engine_create(NULL, &e));
+  OK(eoir_object_add(e, EOIR_KIND_CENTRAL_BODY, "Earth"));
+  OK(eoir_object_add(e, EOIR_KIND_SITE, "Site1"));
+  OK(eoir_set_number(e, "Site1", "latitude_deg", 10.0));
+  OK(eoir_set_number(e, "Site1", "longitude_deg", 20.0));
+  OK(eoir_object_add(e, EOIR_KIND_SATELLITE, target));
+  OK(eoir_object_set_state(e, target, NULL, &s));
+  OK(eoir_set_array(e, target, "dimensions_m", &r, 1));
+  OK(eoir_sensor_add(e, "Sensor1", "Site1"));
+  OK(eoir_set_integer(e, "Sensor1", "horizontal_pixels", 8));
+  OK(eoir_set_integer(e, "Sensor1", "vertical_pixels", 8));
+  OK(eoir_set_number(e, "Sensor1", "horizontal_fov_deg", 2.0));
+  OK(eoir_set_number(e, "Sensor1", "vertical_fov_deg", 2.0));
+  OK(eoir_sensor_point_at(e, "Sensor1", target));
+  return e;
+}
+
 static void sweep(int32_t target_kind, const char* object, enum view view, int stars) {
-  eoir_engine e = scene(target_kind, view, stars);
+  eoir_engine e = object && strcmp(object, "Site1") == 0 ? site_scene() : scene(target_kind, view, stars);
   size_t i;
   eoir_property_info info;
   memset(&info, 0, sizeof info);
@@ -569,6 +594,7 @@ static void ground_vehicle(void) { sweep(EOIR_KIND_GROUND_VEHICLE, target, space
 static void missile(void) { sweep(EOIR_KIND_MISSILE, target, space, 0); }
 static void central_body(void) { sweep(EOIR_KIND_SATELLITE, "Earth", earth, 0); }
 static void star_field(void) { sweep(EOIR_KIND_SATELLITE, "Stars", space, 1); }
+static void site(void) { sweep(EOIR_KIND_SATELLITE, "Site1", space, 0); }
 
 int main(int argc, char** argv) {
   static const struct {
@@ -576,7 +602,8 @@ int main(int argc, char** argv) {
     void (*run)(void);
   } parts[] = {{"sensor", sensor},         {"satellite", satellite},       {"aircraft", aircraft},
                {"ground_vehicle", ground_vehicle}, {"missile", missile}, {"central_body", central_body},
-               {"star_field", star_field}, {"huge_counts", huge_counts}, {"spectra", spectra},
+               {"star_field", star_field}, {"site", site},             {"huge_counts", huge_counts},
+               {"spectra", spectra},
                {"states", states},         {"composites", composites},     {"times", times},
                {"names", names}};
   size_t i;

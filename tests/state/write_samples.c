@@ -21,6 +21,10 @@ int main(int argc, char** argv) {
   s.attitude[0] = 1;
   OK(eoir_object_set_state(e, "Aircraft1", NULL, &s));
   add_table3_sensor(e, "Satellite1", "Sensor1");
+  OK(eoir_object_add(e, EOIR_KIND_SITE, "Site1"));
+  OK(eoir_set_number(e, "Site1", "latitude_deg", -30.0));
+  OK(eoir_sensor_add(e, "Sensor2", "Site1"));
+  OK(eoir_sensor_point_azel(e, "Sensor2", 45.0, 30.0));
   OK(eoir_state_save(e, argv[1]));
   OK(eoir_sensor_save(e, "Sensor1", argv[2]));
   eoir_engine_destroy(e);

@@ -36,6 +36,7 @@ from ._lib import (EOIR_MAX_MISSILE_STAGES as MAX_MISSILE_STAGES,
                    EOIR_MAX_REFERENCE_PAIRS as MAX_REFERENCE_PAIRS,
                    EOIR_MAX_SATELLITES as MAX_SATELLITES,
                    EOIR_MAX_SENSORS as MAX_SENSORS,
+                   EOIR_MAX_SITES as MAX_SITES,
                    EOIR_MAX_VEHICLES as MAX_VEHICLES)
 
 __version__ = "{}.{}.{}".format(version_number // 10000, version_number // 100 % 100,
@@ -46,7 +47,7 @@ __all__ = [
     "provider_groups", "provider_elements", "time_from_iso", "time_to_iso",
     "KINDS", "FRAMES", "TIME_SCALES", "TYPES", "IMAGE_KINDS",
     "MAX_SATELLITES", "MAX_VEHICLES", "MAX_MISSILES", "MAX_MISSILE_STAGES",
-    "MAX_SENSORS", "MAX_REFERENCE_PAIRS", "MAX_NAME_LENGTH",
+    "MAX_SENSORS", "MAX_SITES", "MAX_REFERENCE_PAIRS", "MAX_NAME_LENGTH",
     "library_path", "errors",
     "EoirError", "ArgumentError", "NullArgumentError", "StructSizeError",
     "OutOfRangeError", "UnknownNameError", "TypeMismatchError",

@@ -48,6 +48,7 @@ EOIR_ERR_INTERNAL = -900
 
 EOIR_MAX_SATELLITES = 16
 EOIR_MAX_VEHICLES = 6
+EOIR_MAX_SITES = 16
 EOIR_MAX_MISSILES = 6
 EOIR_MAX_MISSILE_STAGES = 18
 EOIR_MAX_SENSORS = 6
@@ -66,6 +67,7 @@ EOIR_KIND_AIRCRAFT = 4
 EOIR_KIND_GROUND_VEHICLE = 5
 EOIR_KIND_MISSILE = 6
 EOIR_KIND_SENSOR = 7
+EOIR_KIND_SITE = 8  # 1.5
 
 EOIR_FRAME_J2000 = 0
 EOIR_FRAME_EARTH_FIXED = 1
@@ -180,7 +182,11 @@ class eoir_truth(Structure):
                 ("start_pixel_x", c_double),
                 ("start_pixel_y", c_double),
                 ("end_pixel_x", c_double),
-                ("end_pixel_y", c_double)]
+                ("end_pixel_y", c_double),
+                ("topocentric", c_int32),  # appended in 1.5
+                ("reserved_1_5", c_int32),
+                ("azimuth_deg", c_double),
+                ("elevation_deg", c_double)]
 
 
 eoir_log_fn = CFUNCTYPE(None, c_void_p, c_int32, c_char_p)
@@ -253,6 +259,8 @@ _SIGNATURES = {
     "eoir_spectrum_add": (eoir_status, [eoir_engine, _c_str, _c_dblp, _c_dblp, c_size_t]),
     "eoir_target_spectrum_get": (eoir_status, [eoir_engine, _c_str, _c_str, _c_dblp, _c_dblp, c_size_t, _c_sizep]),
     "eoir_frame_fidelity_get": (eoir_status, [eoir_engine, _c_str, c_char_p, c_size_t, _c_sizep]),
+    "eoir_sensor_point_azel": (eoir_status, [eoir_engine, _c_str, c_double, c_double]),
+    "eoir_sensor_point_at": (eoir_status, [eoir_engine, _c_str, _c_str]),
     "eoir_plugin_entry": (eoir_status, [c_uint32, POINTER(eoir_host_api), POINTER(c_void_p)]),
 }
 
@@ -318,7 +326,10 @@ class eoir_api_v1(Structure):
                 ("spectrum_add", _fn("eoir_spectrum_add")),
                 ("target_spectrum_get", _fn("eoir_target_spectrum_get")),
                 # appended in 1.4 (adaptive fidelity)
-                ("frame_fidelity_get", _fn("eoir_frame_fidelity_get"))]
+                ("frame_fidelity_get", _fn("eoir_frame_fidelity_get")),
+                # appended in 1.5 (pointing)
+                ("sensor_point_azel", _fn("eoir_sensor_point_azel")),
+                ("sensor_point_at", _fn("eoir_sensor_point_at"))]
 
 
 # ------------------------------------------------------------------- loading

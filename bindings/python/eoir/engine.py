@@ -43,6 +43,7 @@ KINDS = {
     "ground_vehicle": _lib.EOIR_KIND_GROUND_VEHICLE,
     "missile": _lib.EOIR_KIND_MISSILE,
     "sensor": _lib.EOIR_KIND_SENSOR,
+    "site": _lib.EOIR_KIND_SITE,
 }
 _KIND_NAMES = {v: k for k, v in KINDS.items()}
 
@@ -329,7 +330,10 @@ class Engine(_Closing):
     # ----------------------------------------------------------- objects
     def add_object(self, kind, name: str) -> None:
         """Add an object; kind is "central_body", "star_field", "satellite",
-        "aircraft", "ground_vehicle" or "missile" (or its eoir_object_kind)."""
+        "aircraft", "ground_vehicle", "missile" or "site" (or its
+        eoir_object_kind). A site stays on the Earth at its properties
+        latitude_deg, longitude_deg and height_m (WGS84), carries sensors,
+        images nothing and takes no state."""
         code = _lookup(KINDS, kind, "object kind")
         check(lib.eoir_object_add(self.handle, code, encode(name)))
 
@@ -391,6 +395,37 @@ class Engine(_Closing):
             "attitude": np.array(st.attitude[:], dtype=np.float64),
             "angular_velocity": np.array(st.angular_velocity[:], dtype=np.float64),
         }
+
+    def point_at(self, sensor: str, target: Optional[str] = None,
+                 azimuth_deg: Optional[float] = None, elevation_deg: Optional[float] = None) -> None:
+        """Point sensor at the engine time: give target, or azimuth_deg and
+        elevation_deg. Sets the sensor's own attitude (its position stays its
+        parent's) through eoir_sensor_point_at / eoir_sensor_point_azel.
+
+        target: body +z toward the object, with the angular velocity that
+        keeps it on the boresight during the integration (it stays still, the
+        stars streak); body +y toward the sensor's zenith within 100 km of
+        the Earth's surface, else toward the J2000 north pole. Call it again
+        after each set_time to keep tracking.
+
+        azimuth_deg (from north through east, within +-360) and
+        elevation_deg (above the geodetic horizon, [-90, 90]): the direction
+        on the local horizon of the sensor's place, body +y toward the
+        zenith side (up in the picture), held fixed to the Earth.
+
+        Raises OutOfRangeError naming azimuth_deg or elevation_deg (NaN
+        included), NotAllowedError for the star field, the sensor's parent or
+        a target at the sensor's place, NoStateError if the parent has no
+        state, ValueError if neither or both ways are given."""
+        if target is not None:
+            if azimuth_deg is not None or elevation_deg is not None:
+                raise ValueError("point_at: give target or azimuth_deg and elevation_deg, not both")
+            check(lib.eoir_sensor_point_at(self.handle, encode(sensor), encode(target)))
+            return
+        if azimuth_deg is None or elevation_deg is None:
+            raise ValueError("point_at: give target, or both azimuth_deg and elevation_deg")
+        check(lib.eoir_sensor_point_azel(self.handle, encode(sensor), float(azimuth_deg),
+                                         float(elevation_deg)))
 
     # -------------------------------------------------------- properties
     def properties(self, obj: str) -> List[Dict[str, object]]:
@@ -592,7 +627,10 @@ class Engine(_Closing):
         visible (bool), effective_irradiance (W/cm^2), effective_radiance
         (W/(cm^2 sr)), snr, ra_deg, dec_deg (the apparent direction, J2000
         axes), v_mag, b_v_mag (stars), start and end (pixel_x, pixel_y) at
-        the start and the end of the integration (a streak).
+        the start and the end of the integration (a streak), azimuth_deg and
+        elevation_deg (that direction on the sensor's local horizon: from
+        north through east, above the geodetic horizon, unrefracted; None
+        unless the sensor is within 100 km of the Earth's surface).
         Raises NoStateError if no frame was rendered."""
         s = encode(sensor)
         n = c_size_t()
@@ -619,6 +657,8 @@ class Engine(_Closing):
                 "b_v_mag": float(t.b_v_mag),
                 "start": (float(t.start_pixel_x), float(t.start_pixel_y)),
                 "end": (float(t.end_pixel_x), float(t.end_pixel_y)),
+                "azimuth_deg": float(t.azimuth_deg) if t.topocentric else None,
+                "elevation_deg": float(t.elevation_deg) if t.topocentric else None,
             })
         return out
 

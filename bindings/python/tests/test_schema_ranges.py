@@ -14,7 +14,7 @@ import pytest
 import eoir
 
 SCHEMAS = os.path.join(os.path.dirname(__file__), "..", "..", "..", "schemas")
-OBJECT_KINDS = ("satellite", "aircraft", "ground_vehicle", "missile")
+OBJECT_KINDS = ("satellite", "aircraft", "ground_vehicle", "missile", "site")
 # Names the schema lists as the data folder's, checked against the data by
 # data/materials/test_materials.py.
 OPEN_SETS = {"material"}

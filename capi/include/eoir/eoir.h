@@ -45,7 +45,7 @@ extern "C" {
 
 /* ------------------------------------------------------------------ version */
 #define EOIR_VERSION_MAJOR 1
-#define EOIR_VERSION_MINOR 4
+#define EOIR_VERSION_MINOR 5
 #define EOIR_VERSION_PATCH 0
 
 /* Returns EOIR_VERSION_MAJOR*10000 + MINOR*100 + PATCH of the loaded library. */
@@ -89,6 +89,7 @@ EOIR_API const char* eoir_status_name(eoir_status status);
 /* Spec 3.1; fixed when the engine is compiled. */
 #define EOIR_MAX_SATELLITES        16
 #define EOIR_MAX_VEHICLES           6 /* aircraft plus ground vehicles */
+#define EOIR_MAX_SITES             16 /* sites (1.5; not in spec 3.1), not vehicles */
 #define EOIR_MAX_MISSILES           6
 #define EOIR_MAX_MISSILE_STAGES    18
 #define EOIR_MAX_SENSORS            6 /* scene-generator/sensor-model pairs */
@@ -148,12 +149,16 @@ typedef enum eoir_object_kind {
   EOIR_KIND_AIRCRAFT = 4,
   EOIR_KIND_GROUND_VEHICLE = 5,
   EOIR_KIND_MISSILE = 6,
-  EOIR_KIND_SENSOR = 7          /* use eoir_sensor_add */
+  EOIR_KIND_SENSOR = 7,         /* use eoir_sensor_add */
+  EOIR_KIND_SITE = 8            /* 1.5: fixed on the Earth (properties latitude_deg, longitude_deg,
+                                   height_m on WGS84); carries sensors, images nothing, takes no
+                                   state; body axes east, north, up */
 } eoir_object_kind;
 
 /* Adds an object. Central bodies must be named Sun, Mercury, Venus, Earth,
  * Mars, Jupiter, Saturn, Uranus, Neptune or Moon; the star field "Stars".
- * Names are 1..63 bytes. Fails with EOIR_ERR_LIMIT_EXCEEDED past the limits. */
+ * Names are 1..63 bytes. Fails with EOIR_ERR_LIMIT_EXCEEDED past the limits
+ * (sites count against EOIR_MAX_SITES only). */
 EOIR_API eoir_status eoir_object_add(eoir_engine engine, int32_t kind, const char* name);
 /* Adds a scene-generator/sensor-model pair attached to a parent object (any
  * object but the star field). The sensor starts with the defaults of
@@ -187,14 +192,35 @@ typedef struct eoir_state {
  * the engine moves the object along its velocity (constant-velocity
  * extrapolation) and turns its attitude at the angular velocity (point
  * sources streak across the focal plane during the integration time as both
- * move). Central bodies move on their own (ERFA ephemerides) and refuse
- * states. Sensors take their parent's position; a sensor's attitude set here
+ * move). Central bodies move on their own (ERFA ephemerides) and sites stay
+ * at their geodetic position: both refuse states (EOIR_ERR_NOT_ALLOWED).
+ * Sensors take their parent's position; a sensor's attitude set here
  * overrides the parent's. */
 EOIR_API eoir_status eoir_object_set_state(eoir_engine engine, const char* name,
                                            const eoir_time* time, const eoir_state* state);
 /* State at the engine time in the requested frame (struct_size and frame set
  * by the caller). */
 EOIR_API eoir_status eoir_object_get_state(eoir_engine engine, const char* name, eoir_state* state_inout);
+
+/* Pointing (1.5): each sets the sensor's own attitude at the engine time as
+ * eoir_object_set_state would (its position stays its parent's).
+ *
+ * By topocentric azimuth (deg from north through east, within +-360) and
+ * elevation (deg above the geodetic horizon, [-90, 90]) at the sensor's
+ * WGS84 position: body +z along that direction, body +y toward the zenith
+ * side (up in the picture). The attitude is held in the Earth-fixed frame,
+ * so the view stays on that azimuth and elevation as the Earth turns (the
+ * stars streak). EOIR_ERR_OUT_OF_RANGE names azimuth_deg or elevation_deg. */
+EOIR_API eoir_status eoir_sensor_point_azel(eoir_engine engine, const char* sensor, double azimuth_deg,
+                                            double elevation_deg);
+/* At an object: body +z toward its geometric position, body +y toward the
+ * sensor's zenith within 100 km of the ellipsoid (else toward the J2000
+ * north pole), in J2000 with the angular velocity that keeps the target on
+ * the boresight (both objects' motion): the target stays still during the
+ * integration and the rest of the scene streaks. Call it again after the
+ * time changes to keep tracking. EOIR_ERR_NOT_ALLOWED for the star field,
+ * the sensor's parent or a target at the sensor's place. */
+EOIR_API eoir_status eoir_sensor_point_at(eoir_engine engine, const char* sensor, const char* target);
 
 /* --------------------------------------------------------------- properties */
 /* Objects and sensors carry named, typed properties. The names, types, units
@@ -444,6 +470,12 @@ typedef struct eoir_truth {
   double v_mag, b_v_mag;        /* stars: Johnson V and B-V; 0 for objects */
   double start_pixel_x, start_pixel_y;  /* position at the start and the end of the integration */
   double end_pixel_x, end_pixel_y;      /* (a point source's streak; the frame-time position otherwise) */
+  /* appended in 1.5; written only when struct_size covers them */
+  int32_t topocentric;          /* 1 if the sensor is within 100 km of the WGS84 ellipsoid: the next two hold */
+  int32_t reserved_1_5;
+  double azimuth_deg;           /* the direction of right_ascension_deg, declination_deg on the sensor's local */
+  double elevation_deg;         /* horizon: from north through east in [0, 360), above the geodetic horizon
+                                   (unrefracted); both 0 if topocentric is 0 */
 } eoir_truth;
 
 EOIR_API eoir_status eoir_truth_count(eoir_engine engine, const char* sensor, size_t* count_out);
@@ -525,6 +557,9 @@ typedef struct eoir_api_v1 {
   eoir_status (*target_spectrum_get)(eoir_engine, const char*, const char*, double*, double*, size_t, size_t*);
   /* appended in 1.4 (adaptive fidelity) */
   eoir_status (*frame_fidelity_get)(eoir_engine, const char*, char*, size_t, size_t*);
+  /* appended in 1.5 (pointing) */
+  eoir_status (*sensor_point_azel)(eoir_engine, const char*, double, double);
+  eoir_status (*sensor_point_at)(eoir_engine, const char*, const char*);
 } eoir_api_v1;
 
 /* The plugin's one entry point (resolved by name with dlsym). Returns, in

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/frames.hpp"
 #include "metrics/atmospheric_path.hpp"
+#include "scene/apparent_grid.hpp"
 #include "universe/composite.hpp"
 #include "sensor/display.hpp"
 #include "universe/object_motion.hpp"
@@ -275,13 +276,18 @@ const Frame& Engine::render(const std::string& name) {
     e.end_y = e.metrics.pixel_y + dy;
     frame->truth.push_back(std::move(e));
   };
+  const scene::ApparentGrid apparent(w);  // point sources' streaks as the image has them
   for (const auto& o : w.objects) {
     if (o->imaging == scene::Imaging::outside) continue;
     if (o->central_body && o->imaging != scene::Imaging::point_source) continue;
     TruthEntry e;
     e.object = o->name;
     e.metrics = metrics::target_metrics(w, model, *o);
-    if (e.metrics.in_field) add_truth(std::move(e), o->placed.position_m, o->streak_columns, o->streak_rows);
+    if (!e.metrics.in_field) continue;
+    e.air_mass = w.atmosphere.air_mass(w.atmosphere.path_to(o->placed.position_m));
+    scene::GridPlace place;
+    apparent.object(*o, place);
+    add_truth(std::move(e), o->placed.position_m, place.streak_columns, place.streak_rows);
   }
   for (const scene::WorldStar& s : w.sky.stars) {
     TruthEntry e;
@@ -290,6 +296,7 @@ const Frame& Engine::render(const std::string& name) {
     e.metrics = metrics::star_metrics(w, model, s);
     e.v_mag = s.v_mag;
     e.b_v_mag = s.b_v_mag;
+    e.air_mass = w.atmosphere.air_mass_toward(s.direction_j2000);
     add_truth(std::move(e), s.direction_j2000, s.streak_columns, s.streak_rows);
   }
   if (!w.sky.warning.empty() && w.sky.warning != last_sky_warning_ && options_.log)

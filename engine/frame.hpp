@@ -53,6 +53,10 @@ struct TruthEntry {
   // for sensors farther out.
   bool topocentric = false;
   double azimuth_deg = 0, elevation_deg = 0;
+  // Air along the line of sight in sea-level vertical columns (spec
+  // 6.2.5.4: 1 straight up from sea level): to the object, or toward space
+  // for a star; 0 while the Earth's atmosphere is off.
+  double air_mass = 0;
 };
 
 struct Frame {

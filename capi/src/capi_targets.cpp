@@ -85,6 +85,7 @@ EOIR_API eoir_status eoir_truth_get(eoir_engine engine, const char* sensor, size
     out->topocentric = row.topocentric ? 1 : 0;
     out->azimuth_deg = row.azimuth_deg;
     out->elevation_deg = row.elevation_deg;
+    out->air_mass = row.air_mass;
     std::memcpy(caller, &full, std::min<size_t>(size, sizeof full));  // what the caller's version holds
   });
 }

@@ -130,7 +130,9 @@ class LowtranBandModel final : public MolecularAbsorption {
     for (const auto& [band, nm] : scaling_) w.scaled[band] = 0.0;
     for (const PathSegment& s : path.segments) {
       if (!(s.length_m > 0) || !(s.air_m2 > 0)) continue;
-      const double pss = s.pressure_Pa / kP0_Pa, tss = kT0_K / s.temperature_K;
+      // (temperatures held at 1 K or more: the scalings divide by them)
+      const double temperature_K = std::max(s.temperature_K, 1.0);
+      const double pss = s.pressure_Pa / kP0_Pa, tss = kT0_K / temperature_K;
       const double lp = std::log(pss), lt = std::log(tss);
       const double h2o_g_cm2 = s.h2o_m2 * kH2OMolarMass_kg_mol / kAvogadro_per_mol * 0.1;
       const double o3_atm_cm = s.o3_m2 / kLoschmidt_m3 * 1e2;
@@ -145,14 +147,14 @@ class LowtranBandModel final : public MolecularAbsorption {
       const double h2o_cm2 = s.h2o_m2 * 1e-4, r0 = kT0_K / 296.0;
       const double self = h2o_cm2 * w_amagat / r0;
       w.self += self;
-      w.self_cold += std::clamp((296.0 - s.temperature_K) / 36.0, 0.0, 1.0) * self;
+      w.self_cold += std::clamp((296.0 - temperature_K) / 36.0, 0.0, 1.0) * self;
       w.foreign += h2o_cm2 * (air_amagat - w_amagat) / r0;
-      const double dt = s.temperature_K - kT0_K;
+      const double dt = temperature_K - kT0_K;
       w.o3_atm_cm += o3_atm_cm;
       w.o3_t1 += 0.269 * o3_atm_cm * dt;
       w.o3_t2 += 0.269 * o3_atm_cm * dt * dt;
       w.n2_km += 0.781 * pss * pss * std::pow(tss, 1.5) * s.length_m * 1e-3;
-      const double o2 = mixed_atm_cm[static_cast<std::size_t>(MixedGas::o2)] * pss, d220 = s.temperature_K - 220.0;
+      const double o2 = mixed_atm_cm[static_cast<std::size_t>(MixedGas::o2)] * pss, d220 = temperature_K - 220.0;
       w.o2 += o2;
       w.o2_t1 += o2 * d220;
       w.o2_t2 += o2 * d220 * d220;

@@ -5,6 +5,7 @@
 
 #include "atmosphere/molecular_absorption.hpp"
 #include "atmosphere/rayleigh.hpp"
+#include "radiometry/planck.hpp"
 #include "core/error.hpp"
 
 namespace eoir::atmosphere {
@@ -60,14 +61,48 @@ void PathOptics::sub_depths(const PathColumns& path, std::vector<double>& raylei
   if (path.crosses) molecules_->optical_depths(path, wavelength_um_, absorption);
 }
 
-void PathOptics::transmittance(const PathColumns& path, std::vector<double>& out) const {
-  out.assign(static_cast<std::size_t>(band_.intervals), 1.0);
+void PathOptics::sub_transmittance(const PathColumns& path, std::vector<double>& out) const {
+  out.assign(wavelength_um_.size(), 1.0);
   if (!path.crosses) return;
   std::vector<double> r, a, m;
   sub_depths(path, r, a, m);
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = std::exp(-(r[k] + a[k] + m[k]));
+}
+
+void PathOptics::transmittance(const PathColumns& path, std::vector<double>& out) const {
+  out.assign(static_cast<std::size_t>(band_.intervals), 1.0);
+  if (!path.crosses) return;
+  std::vector<double> t;
+  sub_transmittance(path, t);
   for (std::size_t i = 0; i < out.size(); ++i) {
     double sum = 0;
-    for (std::size_t k = first_[i]; k < first_[i + 1]; ++k) sum += std::exp(-(r[k] + a[k] + m[k]));
+    for (std::size_t k = first_[i]; k < first_[i + 1]; ++k) sum += t[k];
+    out[i] = sum / static_cast<double>(first_[i + 1] - first_[i]);
+  }
+}
+
+void PathOptics::path_radiance(const PathColumns& path, std::vector<double>& out) const {
+  out.assign(static_cast<std::size_t>(band_.intervals), 0.0);
+  if (!path.crosses) return;
+  std::vector<double> sub(wavelength_um_.size(), 0.0), near(wavelength_um_.size(), 1.0), far;
+  PathColumns prefix;
+  prefix.crosses = true;
+  for (const PathSegment& s : path.segments) {
+    prefix.segments.push_back(s);
+    prefix.length_m += s.length_m;
+    prefix.air_m2 += s.air_m2;
+    prefix.h2o_m2 += s.h2o_m2;
+    prefix.o3_m2 += s.o3_m2;
+    prefix.aerosol_tau_550 += s.aerosol_tau_550;
+    prefix.boundary_aerosol_tau_550 += s.boundary_aerosol_tau_550;
+    sub_transmittance(prefix, far);
+    for (std::size_t k = 0; k < sub.size(); ++k)
+      sub[k] += radiometry::planck_radiance(wavelength_um_[k], s.temperature_K) * std::max(0.0, near[k] - far[k]);
+    near.swap(far);
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    double sum = 0;
+    for (std::size_t k = first_[i]; k < first_[i + 1]; ++k) sum += sub[k];
     out[i] = sum / static_cast<double>(first_[i + 1] - first_[i]);
   }
 }

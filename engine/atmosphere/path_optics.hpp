@@ -44,8 +44,16 @@ class PathOptics {
   void transmittance(const PathColumns& path, std::vector<double>& out) const;
   // The optical depths of each interval (means over its sub-samples).
   OpticalDepths optical_depths(const PathColumns& path) const;
+  // The path's own thermal emission toward its first point (eq. 9's L_path,
+  // W cm^-2 sr^-1 um^-1 per interval): Schwarzschild's equation layer by
+  // layer, sum over segments of B(T_segment) (T(0, k) - T(0, k + 1)), T(0, k)
+  // the transmittance from the first point to the k-th segment's near end
+  // (so the segments must run from the observer outward).
+  void path_radiance(const PathColumns& path, std::vector<double>& out) const;
 
  private:
+  // Transmittance at every sub-sample.
+  void sub_transmittance(const PathColumns& path, std::vector<double>& out) const;
   // Optical depth at every sub-sample.
   void sub_depths(const PathColumns& path, std::vector<double>& rayleigh, std::vector<double>& aerosol,
                   std::vector<double>& absorption) const;

@@ -3,66 +3,31 @@
 #include <algorithm>
 #include <cmath>
 
-#include "atmosphere/aerosol_optics.hpp"
 #include "atmosphere/rayleigh.hpp"
-#include "atmosphere/refraction.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
 
 namespace eoir::metrics {
-namespace {
 using geometry::Vec3;
-
-// The wavelength of the refraction reported (visible light).
-constexpr double kVisibleWavelength_um = 0.55;
-
-// The ellipsoid's outward normal at a point (relative to its centre).
-Vec3 geodetic_normal(const atmosphere::EarthFigure& e, const Vec3& p) {
-  const double z = p.dot(e.pole);
-  const Vec3 equatorial = p - z * e.pole;
-  return (equatorial / (e.equatorial_radius_m * e.equatorial_radius_m) +
-          z * e.pole / (e.polar_radius_m * e.polar_radius_m))
-      .normalized();
-}
-}  // namespace
 
 AtmosphericPathMetrics atmospheric_path(const scene::World& world, const scene::WorldObject& target) {
   AtmosphericPathMetrics m;
   const scene::WorldAtmosphere& a = world.atmosphere;
   if (!a.on()) return m;
   m.atmosphere = true;
-  const atmosphere::AtmosphereProfile& profile = *a.profile;
   const Vec3 observer = Vec3::Zero(), to = target.placed.position_m;
   const double range = to.norm();
   m.sensor_altitude_km = atmosphere::altitude_m(a.earth, observer) / 1e3;
   m.target_altitude_km = atmosphere::altitude_m(a.earth, to) / 1e3;
-  if (range > 0)
-    m.elevation_deg = std::asin(std::clamp(geodetic_normal(a.earth, observer - a.earth.centre_m).dot(to / range), -1.0, 1.0)) *
-                      constants::deg_per_rad;
-  m.apparent_elevation_deg = m.elevation_deg;
-  atmosphere::PathColumns c;
-  bool ground = false;
-  const double top_km = profile.top_altitude_m() / 1e3;
-  if (range > 0 && m.sensor_altitude_km < top_km && m.target_altitude_km >= top_km) {
-    // The ray arrives from the apparent direction, raised by the refraction
-    // in the vertical plane.
-    const Vec3 up = geodetic_normal(a.earth, observer - a.earth.centre_m), u = to / range;
-    const atmosphere::Densities here = profile.at(m.sensor_altitude_km * 1e3);
-    const atmosphere::RefractionConstants refraction = atmosphere::refraction_constants(
-        here.pressure_Pa, here.temperature_K,
-        atmosphere::relative_humidity_pct(here.h2o_m3, here.temperature_K) / 100.0, kVisibleWavelength_um);
-    const double e = m.elevation_deg * constants::rad_per_deg;
-    const double apparent = e + atmosphere::refraction_from_true_rad(refraction, e);
-    Vec3 horizontal = u - u.dot(up) * up;
-    horizontal = horizontal.norm() > 0 ? horizontal.normalized() : up.unitOrthogonal();
-    m.apparent_elevation_deg = apparent * constants::deg_per_rad;
-    c = atmosphere::refracted_path_to_space(profile, a.earth, observer,
-                                            std::cos(apparent) * horizontal + std::sin(apparent) * up, ground);
+  if (range > 0) {
+    const auto elevation_deg = [&](const Vec3& u) {
+      return std::asin(std::clamp(a.zenith.dot(u), -1.0, 1.0)) * constants::deg_per_rad;
+    };
+    m.elevation_deg = elevation_deg(to / range);
+    m.apparent_elevation_deg = elevation_deg(a.apparent_direction(to / range));
   }
-  if (range > 0 && (!(m.sensor_altitude_km < top_km && m.target_altitude_km >= top_km) || ground))
-    c = atmosphere::path_between(profile, a.earth, observer, to);
-  const double sea_level = profile.vertical_columns_above(0.0).air_m2;
-  m.air_mass = sea_level > 0 ? c.air_m2 / sea_level : 0.0;
+  const atmosphere::PathColumns c = a.path_to(to);
+  m.air_mass = a.air_mass(c);
   m.h2o_g_cm2 = c.h2o_m2 * atmosphere::kH2OMolarMass_kg_mol / atmosphere::kAvogadro_per_mol * 0.1;
   m.o3_atm_cm = c.o3_m2 / atmosphere::kLoschmidt_m3 * 1e2;
   m.aerosol_optical_depth_550 = c.aerosol_tau_550;

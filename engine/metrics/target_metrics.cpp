@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "scene/apparent_grid.hpp"
 
 namespace eoir::metrics {
 namespace {
@@ -73,13 +74,13 @@ TargetMetrics target_metrics(const scene::World& world, const sensor::SensorMode
   r.target_solid_angle_sr = tp.projected_area_m2() / (range_m * range_m);         // eq. 58
   r.point_source = r.target_solid_angle_sr < m.effective_ifov_solid_angle_sr;       // 5.13.1, 5.13.3
 
-  // Where the target is in the field (its body origin).
-  const Eigen::Matrix3d to_body = world.observer.body_to_j2000.transpose();
+  // Where the target is in the field (its body origin; a point source where
+  // it appears, as the image has it: scene/apparent_grid.hpp).
   const geometry::SampleGrid& grid = world.grid();
-  double c = 0, row = 0;
-  if (grid.sample_of(to_body * tp.placed.position_m, c, row)) {
-    r.pixel_x = grid.pixel_x_of(c);
-    r.pixel_y = grid.pixel_y_of(row);
+  scene::GridPlace place;
+  if (scene::ApparentGrid(world).object(tp, place)) {
+    r.pixel_x = grid.pixel_x_of(place.column);
+    r.pixel_y = grid.pixel_y_of(place.row);
     r.in_field = r.pixel_x >= -0.5 && r.pixel_x <= p.horizontal_pixels - 0.5 && r.pixel_y >= -0.5 &&
                  r.pixel_y <= p.vertical_pixels - 0.5;
   }

@@ -39,7 +39,8 @@ Pick pick_sample(const World& world, const SceneImage& scene, std::int64_t c, st
   o.shading_point(hit.part, hit.point_body_m, normal_body, point_body, shading_normal);
   pick.temperature_K = o.surface->temperature_K(o.surface->at(SurfaceSite{hit.part, point_body, shading_normal}));
   pick.spectral_radiance_W_cm2_sr_um =
-      o.at_sensor(o.spectral_radiance(hit.part, point_body, shading_normal, -o.to_frame(point_body).normalized()));
+      o.at_sensor(o.spectral_radiance(hit.part, point_body, shading_normal, -o.to_frame(point_body).normalized()),
+                  point_body, shading_normal);
   if (o.central_body) {
     // Geodetic latitude/longitude on the body's ellipsoid (GeographicLib):
     // WGS84 on the Earth-fixed Earth; planetocentric on the others (IAU axes).

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/parallel_ranges.hpp"
+#include "scene/apparent_grid.hpp"
 
 namespace eoir::scene {
 
@@ -16,18 +17,19 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
   SceneImage out;
   const geometry::SampleGrid& grid = world.grid();
   out.image.grid = grid;
-  const Mat3 j2000_to_body = world.observer.body_to_j2000.transpose();
 
-  // Distant area sources (4.1.6.1) at their exact positions, where they lie
-  // inside the field of view and the line of sight to them is clear.
+  // Distant area sources (4.1.6.1) at their exact positions (where they
+  // appear: scene/apparent_grid.hpp), where they lie inside the field of view
+  // and the (geometric) line of sight to them is clear.
+  const ApparentGrid apparent(world);
   for (const auto& o : world.objects) {
     if (o->imaging != Imaging::point_source) continue;
-    double c = 0, r = 0;
-    if (!grid.sample_of(j2000_to_body * o->placed.position_m, c, r) || !grid.in_field(c, r, 1e-4)) continue;
+    GridPlace p;
+    if (!apparent.object(*o, p) || !grid.in_field(p.column, p.row, 1e-4)) continue;
     const geometry::RayQuery others{geometry::ray_mask_all, o->id};
     if (world.caster.occluded(o->placed.position_m / o->range_m, o->range_m, others)) continue;
-    out.image.point_sources.push_back(
-        radiometry::PointSource{o->id, -1, c, r, o->point_irradiance_W_cm2(), o->streak_columns, o->streak_rows});
+    out.image.point_sources.push_back(radiometry::PointSource{o->id, -1, p.column, p.row, o->point_irradiance_W_cm2(),
+                                                              p.streak_columns, p.streak_rows});
   }
   // Catalogue stars (spec 4.1.6.1), placed and culled with the world's sky.
   for (std::size_t k = 0; k < world.sky.stars.size(); ++k) {
@@ -59,8 +61,8 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
           return;
         }
         const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];
-        if (o.surface->plain()) {  // no surface point needed
-          out.image.radiance_W_cm2_sr[i] = o.surface->part_radiance(part);
+        if (o.plain()) {  // no surface point needed
+          out.image.radiance_W_cm2_sr[i] = o.plain_radiance(part);
           return;
         }
         const Vec3 point_body = o.placed.body_to_frame.transpose() * (range_m * d - o.placed.position_m);

@@ -7,6 +7,7 @@
 #include "core/constants.hpp"
 #include "radiometry/background_light.hpp"
 #include "radiometry/stellar_photometry.hpp"
+#include "scene/apparent_grid.hpp"
 #include "scene/world.hpp"
 
 namespace eoir::scene {
@@ -65,23 +66,25 @@ void build_sky(World& w, const universe::Object& star_field, const universe::Lib
       w.time, w.observer.position_m, w.observer.velocity_m_s, catalogue.epoch_julian_year());
 
   // Cull on the catalogue positions: the cone about the boresight holding the
-  // whole sample grid, widened by proper motion since the epoch.
+  // whole sample grid, widened by proper motion since the epoch and by the
+  // refraction of an observer inside the atmosphere.
   const geometry::SampleGrid& grid = w.grid();
+  const ApparentGrid apparent(w);
   const double half_diagonal = std::atan(std::hypot(grid.tan_x(0), grid.tan_y(0)));
   const double moved = catalogue.max_proper_motion_mas_yr() * std::fabs(context.proper_motion_years) * kMasToRad;
-  const double cos_limit = std::cos(std::min(constants::pi, half_diagonal + kCullMargin_rad + moved));
+  const double cos_limit =
+      std::cos(std::min(constants::pi, half_diagonal + kCullMargin_rad + moved + apparent.max_refraction_rad()));
   const Vec3 boresight = w.observer.body_to_j2000.col(2);
-  const Mat3 to_body = w.observer.body_to_j2000.transpose();
-  const Mat3 to_body_start = w.observer.body_to_j2000_start.transpose();
-  const Mat3 to_body_end = w.observer.body_to_j2000_end.transpose();
   const radiometry::SpectralView& view = w.view.spectral;
   const std::vector<Vec3>& units = catalogue.unit_vectors();
   for (const std::size_t i : selection.indices) {
     if (units[i].dot(boresight) < cos_limit) continue;
     const universe::CatalogStar& star = catalogue.stars()[i];
+    // d: the apparent place (geometric: occlusion, truth's RA/Dec); on the
+    // grid where it appears, refracted from inside the atmosphere.
     const Vec3 d = universe::apparent_direction(star, context);
-    double c = 0, r = 0;
-    if (!grid.sample_of(to_body * d, c, r) || !grid.in_field(c, r, 1e-4)) continue;
+    GridPlace place;
+    if (!apparent.star(d, place) || !grid.in_field(place.column, place.row, 1e-4)) continue;
     if (hidden(w, d)) continue;
     WorldStar s;
     s.catalogue_index = i;
@@ -89,14 +92,10 @@ void build_sky(World& w, const universe::Object& star_field, const universe::Lib
     s.v_mag = star.v_mag;
     s.b_v_mag = star.b_v_mag;
     s.direction_j2000 = d;
-    s.column = c;
-    s.row = r;
-    // The sensor's rotation during the integration moves the star on the grid.
-    double c0 = c, r0 = r, c1 = c, r1 = r;
-    if (grid.sample_of(to_body_start * d, c0, r0) && grid.sample_of(to_body_end * d, c1, r1)) {
-      s.streak_columns = c1 - c0;
-      s.streak_rows = r1 - r0;
-    }
+    s.column = place.column;
+    s.row = place.row;
+    s.streak_columns = place.streak_columns;
+    s.streak_rows = place.streak_rows;
     // Spec 4.1.6.1: E = m0 B(T), band-integrated as the view integrates;
     // through the atmosphere's path toward the star (eq. 9's T_out).
     const double T = radiometry::temperature_from_b_v(star.b_v_mag);

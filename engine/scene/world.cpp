@@ -6,6 +6,7 @@
 #include <limits>
 #include <tuple>
 
+#include "atmosphere/aerosol_optics.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "core/frames.hpp"
@@ -235,7 +236,11 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
       const double f = sun_fraction(p);
       if (f > 0) {
         const double g = f * universe::sun_projected_solid_angle_sr(d) * cos_i * brdf.value(I, toward, n);
-        if (sun_transmittance_.empty()) {
+        if (under_atmosphere_) {  // eq. 9's T_in at the point's Sun zenith angle
+          thread_local std::vector<double> T;
+          w.atmosphere.surface.sun_at(cos_i, T);
+          for (std::size_t i = 0; i < count; ++i) out[i] += g * w.sun.radiance[i] * T[i];
+        } else if (sun_transmittance_.empty()) {
           for (std::size_t i = 0; i < count; ++i) out[i] += g * w.sun.radiance[i];
         } else {  // eq. 9's T_in
           for (std::size_t i = 0; i < count; ++i) out[i] += g * w.sun.radiance[i] * sun_transmittance_[i];
@@ -360,8 +365,13 @@ std::vector<double> WorldObject::spectral_radiance(std::int32_t part, const Vec3
 
 double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
                                        bool interpolated) const {
-  if (surface->plain()) return surface->part_radiance(part);
+  if (plain()) return plain_radiance(part);
   const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
+  if (under_atmosphere_) {  // eq. 9 interval by interval: the path changes with the point
+    thread_local std::vector<double> L;
+    L = spectral_radiance(part, point_body_m, normal_body, -to_frame(point_body_m).normalized());
+    return world_->view.spectral.integrate(at_sensor(std::move(L), point_body_m, normal_body));
+  }
   double reflected = 0;
   if (surface->reflects(point)) {
     const Vec3 p = to_frame(point_body_m);
@@ -375,14 +385,14 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
   // Self-emission that cannot reach kNegligible of the reflected
   // light (a visible band by day: B(0.75 um, 380 K) ~ 1e-22 of the Sun's) is
   // left out: it would change the sum by less than that, relative.
-  if (reflected > surface->emission_bound() / kNegligible) return reflected;
+  if (reflected > surface->emission_bound() / kNegligible) return reflected + path_radiance_W_cm2_sr_;
   return (interpolated ? surface->emission_radiance_interpolated(point) : surface->emission_radiance(point)) +
-         reflected;
+         reflected + path_radiance_W_cm2_sr_;
 }
 
 double WorldObject::patch_radiance(std::int32_t patch) const {
   const geometry::Patch& p = tessellation().patches[static_cast<std::size_t>(patch)];
-  if (surface->plain()) return surface->part_radiance(p.part);
+  if (plain()) return plain_radiance(p.part);
   std::atomic<double>& cached = patch_cache_[static_cast<std::size_t>(patch)];
   double L = cached.load(std::memory_order_relaxed);
   if (std::isnan(L)) {  // two threads may both compute it: the same value
@@ -406,7 +416,7 @@ void WorldObject::shading_point(std::int32_t part, const Vec3& point_body_m, con
 }
 
 double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body) const {
-  if (surface->plain()) return surface->part_radiance(part);
+  if (plain()) return plain_radiance(part);
   if (world_->view.fidelity.scene_mode != SceneMode::coarse)
     return effective_radiance(part, point_body_m, hit_normal_body, true);
   return patch_radiance(geometry::patch_at_facing(tessellation(), placed.parts, part, point_body_m, hit_normal_body));
@@ -425,7 +435,7 @@ double WorldObject::point_irradiance_W_cm2() const {
   const double r2 = range_m * range_m;
   // (the spectral vector is at the sensor already: T_out applied)
   if (!detailed_point_source) return world_->view.spectral.integrate(point_spectral_irradiance());
-  if (placed.parts.size() == 1 && surface->plain()) return surface->part_radiance(0) * (projected_area_m2() / r2);
+  if (placed.parts.size() == 1 && plain()) return plain_radiance(0) * (projected_area_m2() / r2);
   return visible_patch_sum(tessellation(), [this](std::int32_t k) { return patch_radiance(k); }) / r2;
 }
 
@@ -460,8 +470,10 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
     const double omega = constants::pi * volumetric_radius_m * volumetric_radius_m / r2;
     const Vec3 to_observer = -placed.position_m / range_m;
     const double phase = lambertian_sphere_phase(w.lights[static_cast<std::size_t>(light_)].to_sun.dot(to_observer));
-    for (std::size_t i = 0; i < E.size(); ++i) E[i] = (self.reflected[i] * phase + self.emitted[i]) * omega;
-    return at_sensor(E);
+    for (std::size_t i = 0; i < E.size(); ++i) E[i] = (self.reflected[i] * phase + self.emitted[i]);
+    E = at_sensor(std::move(E));
+    for (double& e : E) e *= omega;
+    return E;
   }
   const Vec3 v = toward_observer_body();
   const Vec3 toward = placed.body_to_frame * v;
@@ -471,15 +483,26 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
     if (facing <= 0) continue;
     const std::vector<double> L = spectral_radiance(patch.part, patch.centre_body_m, patch.normal_body, toward);
     const double omega = facing * patch.area_m2 / r2;
-    for (std::size_t i = 0; i < E.size(); ++i) E[i] += L[i] * omega;
+    const std::vector<double> seen = at_sensor(L);
+    for (std::size_t i = 0; i < E.size(); ++i) E[i] += seen[i] * omega;
   }
-  return at_sensor(E);
+  return E;
 }
 
-std::vector<double> WorldObject::at_sensor(std::vector<double> spectrum) const {
+std::vector<double> WorldObject::at_sensor(std::vector<double> spectrum, const Vec3& point_body_m,
+                                           const Vec3& normal_body) const {
+  if (under_atmosphere_) {
+    thread_local std::vector<double> T, L;
+    const Vec3 toward = -to_frame(point_body_m).normalized();
+    world_->atmosphere.surface.view_at((placed.body_to_frame * normal_body).dot(toward), T, L);
+    for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] = spectrum[i] * T[i] + L[i];
+    return spectrum;
+  }
   const std::vector<double>& T = view().transmittance;
   if (!T.empty())
     for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] *= T[i];
+  if (!path_spectral_.empty())
+    for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] += path_spectral_[i];
   return spectrum;
 }
 
@@ -487,17 +510,114 @@ const radiometry::SpectralView& WorldObject::view() const {
   return seen_through_ ? *seen_through_ : world_->view.spectral;
 }
 
-std::vector<double> WorldAtmosphere::to_observer(const Vec3& point_m) const {
-  std::vector<double> T;
-  if (!on()) return T;
-  const double range = point_m.norm();
+namespace {
+// Linear interpolation between the rows of a table over mu.
+void interpolate_rows(const std::vector<double>& mu, const std::vector<std::vector<double>>& rows, double x,
+                      std::vector<double>& out) {
+  const double m = std::clamp(x, 0.0, 1.0);
+  const std::size_t k = std::min<std::size_t>(
+      static_cast<std::size_t>(std::upper_bound(mu.begin(), mu.end(), m) - mu.begin()), mu.size() - 1);
+  const std::size_t j = k == 0 ? 0 : k - 1;
+  const double f = mu[j + 1] > mu[j] ? (m - mu[j]) / (mu[j + 1] - mu[j]) : 0.0;
+  const std::vector<double>& a = rows[j];
+  const std::vector<double>& b = rows[j + 1];
+  out.resize(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) out[i] = a[i] + f * (b[i] - a[i]);
+}
+
+// Nodes of the surface tables.
+constexpr int kSurfacePathNodes = 33;
+
+// The surface tables for an observer at altitude H: paths from a point of
+// the equator at view (and Sun) zenith cosines mu.
+SurfacePaths surface_paths(const WorldAtmosphere& a, double observer_altitude_m) {
+  SurfacePaths t;
+  const atmosphere::AtmosphereProfile& profile = *a.profile;
+  const Vec3 up = a.earth.pole.unitOrthogonal();
+  const Vec3 across = a.earth.pole.cross(up);
+  const Vec3 ground = a.earth.centre_m + a.earth.equatorial_radius_m * up;
+  const double top = a.earth.equatorial_radius_m + profile.top_altitude_m();
+  const double r_observer = a.earth.equatorial_radius_m + std::min(observer_altitude_m, profile.top_altitude_m() + 1.0);
+  for (int k = 0; k < kSurfacePathNodes; ++k) {
+    const double mu = std::pow(static_cast<double>(k) / (kSurfacePathNodes - 1), 2.0);
+    t.mu.push_back(mu);
+    const Vec3 u = mu * up + std::sqrt(std::max(0.0, 1.0 - mu * mu)) * across;
+    // Where the line of sight reaches the observer's altitude (or leaves the
+    // atmosphere): the path runs from there to the ground, observer first.
+    const Vec3 rel = ground - a.earth.centre_m;
+    const double b = rel.dot(u), c = rel.squaredNorm() - std::pow(std::min(r_observer, top), 2.0);
+    const double reach = -b + std::sqrt(std::max(0.0, b * b - c));
+    const atmosphere::PathColumns view = atmosphere::path_between(profile, a.earth, ground + reach * u, ground);
+    std::vector<double> T, L;
+    a.optics->transmittance(view, T);
+    a.optics->path_radiance(view, L);
+    t.view_T.push_back(std::move(T));
+    t.view_L.push_back(std::move(L));
+    bool below = false;
+    const atmosphere::PathColumns sun = atmosphere::refracted_path_to_space(profile, a.earth, ground, u, below, true);
+    std::vector<double> S(static_cast<std::size_t>(a.optics->band().intervals), 0.0);
+    if (!below) a.optics->transmittance(sun, S);
+    t.sun_T.push_back(std::move(S));
+  }
+  return t;
+}
+}  // namespace
+
+void SurfacePaths::view_at(double mu_view, std::vector<double>& T, std::vector<double>& L) const {
+  interpolate_rows(mu, view_T, mu_view, T);
+  interpolate_rows(mu, view_L, mu_view, L);
+}
+
+void SurfacePaths::sun_at(double mu_sun, std::vector<double>& T) const { interpolate_rows(mu, sun_T, mu_sun, T); }
+
+atmosphere::PathColumns WorldAtmosphere::path_to(const Vec3& point_m) const {
   atmosphere::PathColumns c;
+  if (!on()) return c;
+  const double range = point_m.norm();
   bool ground = false;
   if (observer_inside && range > 0 && atmosphere::altitude_m(earth, point_m) >= profile->top_altitude_m())
-    c = atmosphere::refracted_path_to_space(*profile, earth, Vec3::Zero(), point_m / range, ground);
-  if (!c.crosses || ground) c = atmosphere::path_between(*profile, earth, point_m, Vec3::Zero());
+    c = atmosphere::refracted_path_to_space(*profile, earth, Vec3::Zero(), apparent_direction(point_m / range), ground);
+  if (!c.crosses || ground) c = atmosphere::path_between(*profile, earth, Vec3::Zero(), point_m);
+  return c;
+}
+
+void WorldAtmosphere::seen_from(const Vec3& point_m, std::vector<double>& T, std::vector<double>& L) const {
+  T.clear();
+  L.clear();
+  const atmosphere::PathColumns c = path_to(point_m);
+  if (!c.crosses) return;
+  optics->transmittance(c, T);
+  optics->path_radiance(c, L);
+}
+
+std::vector<double> WorldAtmosphere::to_observer(const Vec3& point_m) const {
+  std::vector<double> T;
+  const atmosphere::PathColumns c = path_to(point_m);
   if (c.crosses) optics->transmittance(c, T);
   return T;
+}
+
+double WorldAtmosphere::air_mass(const atmosphere::PathColumns& path) const {
+  return on() ? path.air_m2 / profile->vertical_columns_above(0.0).air_m2 : 0.0;
+}
+
+double WorldAtmosphere::air_mass_toward(const Vec3& direction) const {
+  if (!on()) return 0.0;
+  bool ground = false;
+  return air_mass(observer_inside
+                      ? atmosphere::refracted_path_to_space(*profile, earth, Vec3::Zero(), apparent_direction(direction),
+                                                            ground, false)
+                      : atmosphere::path_to_space(*profile, earth, Vec3::Zero(), direction, false));
+}
+
+Vec3 WorldAtmosphere::apparent_direction(const Vec3& d) const {
+  if (!on() || !observer_inside) return d;
+  const double e = std::asin(std::clamp(d.dot(zenith), -1.0, 1.0));
+  Vec3 horizontal = d - d.dot(zenith) * zenith;
+  if (!(horizontal.norm() > 1e-12)) return d;  // the zenith: no refraction
+  horizontal.normalize();
+  const double apparent = e + atmosphere::refraction_from_true_rad(refraction, e);
+  return std::cos(apparent) * horizontal + std::sin(apparent) * zenith;
 }
 
 std::vector<double> WorldAtmosphere::to_space(const Vec3& point_m, const Vec3& direction) const {
@@ -593,9 +713,10 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   }
 
   // The Earth's atmosphere, when its central body has it on (spec 4.3.1.1):
-  // each object's light reaches the sensor through it (T_out) and the Sun's
-  // reaches the object through it (T_in), at the object's centre. The
-  // Earth's own surface is seen as in vacuum still.
+  // each object's light reaches the sensor through it (T_out) with the
+  // path's own thermal radiance (L_path), and the Sun's reaches the object
+  // through it (T_in), at the object's centre. The Earth's own surface is
+  // seen as in vacuum still.
   std::int32_t earth_id = -1;
   for (std::size_t i = 0; i < world->objects.size(); ++i) {
     const universe::Object& o = *sources[i];
@@ -612,14 +733,37 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     a.earth.equatorial_radius_m = earth.equatorial_radius_m;
     a.earth.polar_radius_m = earth.polar_radius_m;
     a.observer_inside = atmosphere::altitude_m(a.earth, Vec3::Zero()) < a.profile->top_altitude_m();
+    {  // the observer's geodetic vertical and the refraction of its air
+      const Vec3 p = -a.earth.centre_m;
+      const double z = p.dot(a.earth.pole);
+      const Vec3 equatorial = p - z * a.earth.pole;
+      a.zenith = (equatorial / (a.earth.equatorial_radius_m * a.earth.equatorial_radius_m) +
+                  z * a.earth.pole / (a.earth.polar_radius_m * a.earth.polar_radius_m))
+                     .normalized();
+      const atmosphere::Densities here = a.profile->at(atmosphere::altitude_m(a.earth, Vec3::Zero()));
+      a.refraction = atmosphere::refraction_constants(
+          here.pressure_Pa, here.temperature_K,
+          atmosphere::relative_humidity_pct(here.h2o_m3, here.temperature_K) / 100.0, 0.5 * (band.low_um + band.high_um));
+    }
+  }
+  if (world->atmosphere.on() && earth_id >= 0 &&
+      world->objects[static_cast<std::size_t>(earth_id)]->imaging != Imaging::outside) {
+    world->atmosphere.surface =
+        surface_paths(world->atmosphere, atmosphere::altitude_m(world->atmosphere.earth, Vec3::Zero()));
+    world->objects[static_cast<std::size_t>(earth_id)]->under_atmosphere_ = true;
   }
   if (world->atmosphere.on())
     for (const auto& wp : world->objects) {
       WorldObject& w = *wp;
       if (w.id == earth_id) continue;
-      std::vector<double> out = world->atmosphere.to_observer(w.placed.position_m);
-      if (!out.empty()) w.seen_through_ = std::make_unique<radiometry::SpectralView>(
-                            radiometry::SpectralView::through(world->view.spectral, std::move(out)));
+      std::vector<double> out, path;
+      world->atmosphere.seen_from(w.placed.position_m, out, path);
+      if (!out.empty()) {
+        w.path_radiance_W_cm2_sr_ = world->view.spectral.integrate(path);
+        w.path_spectral_ = std::move(path);
+        w.seen_through_ = std::make_unique<radiometry::SpectralView>(
+            radiometry::SpectralView::through(world->view.spectral, std::move(out)));
+      }
       if (w.id != world->sun.object)
         w.sun_transmittance_ = world->atmosphere.to_space(
             w.placed.position_m, (world->sun.position_m - w.placed.position_m).normalized());

@@ -21,6 +21,7 @@
 
 #include "atmosphere/path_optics.hpp"
 #include "atmosphere/profile.hpp"
+#include "atmosphere/refraction.hpp"
 #include "atmosphere/shell_path.hpp"
 #include "core/fidelity.hpp"
 #include "core/time.hpp"
@@ -71,6 +72,22 @@ struct SunLight {
   std::int32_t object = -1;        // the Sun's world object, if it is in the world
 };
 
+// The atmosphere over the Earth's surface as a world sees it: per
+// spectral interval, eq. 9's T_out and L_path between a surface point and
+// the observer against the cosine of the view's zenith angle there, and
+// T_in of the Sun's light against the cosine of the Sun's (spherical
+// symmetry: for an observer at a given altitude these angles fix the
+// paths), on nodes dense toward the horizon (mu = (k / (n - 1))^2),
+// linear between them.
+struct SurfacePaths {
+  std::vector<double> mu;                      // nodes, 0..1
+  std::vector<std::vector<double>> view_T, view_L, sun_T;  // [node][interval]
+  bool empty() const { return mu.empty(); }
+  // Interpolated at mu (clamped to [0, 1]) into out.
+  void view_at(double mu_view, std::vector<double>& T, std::vector<double>& L) const;
+  void sun_at(double mu_sun, std::vector<double>& T) const;
+};
+
 // The Earth's atmosphere in the world (spec 4.3.1.1, DESIGN "The atmosphere
 // in the world"): its state, made when the Earth's `atmosphere` is on, and
 // the Earth's figure relative to the observer (J2000 axes) for the paths.
@@ -87,7 +104,27 @@ struct WorldAtmosphere {
   // A path from an observer inside the atmosphere to space follows the
   // refracted ray.
   std::vector<double> to_observer(const Vec3& point_m) const;
+  // Both the transmittance and the thermal path radiance (eq. 9's L_path,
+  // per interval) between a point and the observer; empty in vacuum.
+  void seen_from(const Vec3& point_m, std::vector<double>& transmittance, std::vector<double>& path_radiance) const;
   std::vector<double> to_space(const Vec3& point_m, const Vec3& direction) const;
+  // The path from the observer to a point, its segments from the observer
+  // out (refracted from an observer inside the atmosphere to a point above
+  // it; empty in vacuum).
+  atmosphere::PathColumns path_to(const Vec3& point_m) const;
+  // The air of a path, and toward space along a direction from the
+  // observer, in sea-level vertical columns (spec 6.2.5.4: straight up from
+  // the ground is 1); 0 in vacuum.
+  double air_mass(const atmosphere::PathColumns& path) const;
+  double air_mass_toward(const Vec3& direction) const;
+  // Where a source in the (true, unit) direction d appears to an observer
+  // inside the atmosphere: raised toward the zenith by the refraction
+  // (atmosphere/refraction.hpp); d itself for an observer above it or in
+  // vacuum.
+  Vec3 apparent_direction(const Vec3& d) const;
+  Vec3 zenith = Vec3::UnitZ();                      // the observer's geodetic vertical (J2000)
+  atmosphere::RefractionConstants refraction;       // at the observer, at the band's centre wavelength
+  SurfacePaths surface;                             // over the Earth's surface
 };
 
 class World;
@@ -157,9 +194,18 @@ class WorldObject {
   double detailed_point_irradiance_W_cm2(double patch_edge_m) const;
   // Its spectral vector at the sensor (W cm^-2 um^-1; T_out applied).
   std::vector<double> point_spectral_irradiance() const;
-  // A spectrum of this object's light as the sensor receives it (times the
-  // view's transmittance, if any).
-  std::vector<double> at_sensor(std::vector<double> spectrum) const;
+  // A radiance spectrum leaving this object as the sensor receives it: times
+  // the view's transmittance, plus the path's own radiance (eq. 9's T_out
+  // and L_path; unchanged in vacuum).
+  // On the Earth under its atmosphere the path of the point (body frame)
+  // with the outward normal there.
+  std::vector<double> at_sensor(std::vector<double> spectrum, const Vec3& point_body_m = Vec3::Zero(),
+                                const Vec3& normal_body = Vec3::UnitZ()) const;
+  // The band radiance of a plain part at the sensor (eq. 9 with L_path).
+  double plain_radiance(std::int32_t part) const { return surface->part_radiance(part) + path_radiance_W_cm2_sr_; }
+  // One radiance per part, whatever the point (false for the Earth seen
+  // through its atmosphere: the path changes with the point).
+  bool plain() const { return surface->plain() && !under_atmosphere_; }
 
   // This object as a source of eq. 7: its area-weighted SRF and emission
   // (per patch where the temperature varies, per part otherwise), made on
@@ -196,6 +242,9 @@ class WorldObject {
   const World* world_ = nullptr;
   std::unique_ptr<radiometry::SpectralView> seen_through_;  // the atmosphere's T_out, if its path crosses air
   std::vector<double> sun_transmittance_;  // eq. 9's T_in of the Sun's light at the centre; empty: 1
+  std::vector<double> path_spectral_;      // eq. 9's L_path from the centre to the sensor; empty: none
+  double path_radiance_W_cm2_sr_ = 0;      // its band integral (eq. 48)
+  bool under_atmosphere_ = false;          // the Earth: its points see World::atmosphere.surface's paths
   std::int32_t light_ = -1;  // index in World::lights, -1 if not a source
   std::vector<std::vector<geometry::Occulter>> occulters_;  // per light (0 the Sun, 1 + k lights[k]): may shade it
   std::vector<char> negligible_light_;  // per lights[k]: its light here is below kNegligible of the self-emission

@@ -176,7 +176,7 @@ class RunContext {
     // C ABI 1.3 truth: kind, apparent RA/Dec, magnitudes, streak ends.
     const bool v13 = api.struct_size >= offsetof(eoir_api_v1, target_spectrum_get) + sizeof api.target_spectrum_get &&
                      api.target_spectrum_get != nullptr;
-    // C ABI 1.5 truth: topocentric azimuth and elevation.
+    // C ABI 1.5 truth: topocentric azimuth and elevation, air mass.
     const bool v15 = api.struct_size >= offsetof(eoir_api_v1, sensor_point_at) + sizeof api.sensor_point_at;
     const auto num = [](double x) { return std::isfinite(x) ? ojson(x) : ojson(nullptr); };
     ojson out = ojson::array();
@@ -225,6 +225,7 @@ class RunContext {
         o["azimuth_deg"] = num(t.azimuth_deg);
         o["elevation_deg"] = num(t.elevation_deg);
       }
+      if (v15) o["air_mass"] = num(t.air_mass);  // 0 while the atmosphere is off
       // The streak (start and end of the integration) in FITS pixels.
       const double sx = v13 ? t.start_pixel_x : t.pixel_x, sy = v13 ? t.start_pixel_y : t.pixel_y;
       const double ex = v13 ? t.end_pixel_x : t.pixel_x, ey = v13 ? t.end_pixel_y : t.pixel_y;

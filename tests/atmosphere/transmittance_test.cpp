@@ -19,6 +19,7 @@
 #include "atmosphere/shell_path.hpp"
 #include "core/constants.hpp"
 #include "core/data_dir.hpp"
+#include "radiometry/planck.hpp"
 
 #ifndef EOIR_ATMOSPHERE_TEST_DATA
 #error "EOIR_ATMOSPHERE_TEST_DATA must name tests/atmosphere/data"
@@ -194,6 +195,41 @@ TEST(Transmittance, StableAtTheExtremes) {
       const double humidity = relative_humidity_pct(profile->at(0).h2o_m3, profile->at(0).temperature_K);
       EXPECT_NEAR(humidity, water > 0 ? 99.0 : 0.0, 1.5);
     }
+  }
+}
+
+
+// Thermal path radiance by Schwarzschild's equation (eq. 9's L_path): in an
+// isothermal atmosphere (US76's densities, every level at 250 K) a path
+// radiates (1 - T) B(250 K) in each interval (Kirchhoff; the sub-samples'
+// Planck spread within a 0.01 um interval: 0.5 %); nothing at 0 K; and the
+// sum over segments adds up for US76 from the ground straight up: below
+// the radiance of a black body at the ground's 288 K.
+TEST(PathRadiance, IsothermalSlabIsOneMinusTTimesPlanck) {
+  const std::string data = resolve_data_dir("");
+  const universe::AtmosphereSettings s = settings(universe::AerosolModel::rural);
+  const auto us76 = AtmosphereProfile::make(s, data);
+  for (const double T0 : {250.0, 0.0}) {
+    std::vector<ProfileLevel> levels = us76->levels();
+    for (ProfileLevel& l : levels) l.at.temperature_K = T0;
+    const auto iso = std::make_shared<const AtmosphereProfile>(std::move(levels));
+    const PathOptics optics(iso, s, data, band(8.0, 12.0, 400));
+    const PathColumns up = path_to_space(*iso, kEarth, kGround, Vec3(1, 0, 0.3).normalized());
+    std::vector<double> T, L;
+    optics.transmittance(up, T);
+    optics.path_radiance(up, L);
+    for (std::size_t i = 0; i < T.size(); ++i) {
+      const double l = 8.0 + (static_cast<double>(i) + 0.5) * 0.01;
+      const double B = T0 > 0 ? radiometry::planck_radiance(l, T0) : 0.0;
+      EXPECT_NEAR(L[i], (1.0 - T[i]) * B, 5e-3 * B + 1e-30) << l;
+    }
+  }
+  const PathOptics optics(us76, s, data, band(8.0, 12.0, 40));
+  std::vector<double> L;
+  optics.path_radiance(path_to_space(*us76, kEarth, kGround, Vec3::UnitX()), L);
+  for (std::size_t i = 0; i < L.size(); ++i) {
+    EXPECT_GT(L[i], 0.0);
+    EXPECT_LT(L[i], radiometry::planck_radiance(8.05 + 0.1 * static_cast<double>(i), 288.15));
   }
 }
 

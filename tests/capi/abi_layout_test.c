@@ -95,6 +95,7 @@ int main(void) {
   CHECK_LAYOUT(eoir_truth, topocentric, 200); /* 1.5 */
   CHECK_LAYOUT(eoir_truth, azimuth_deg, 208);
   CHECK_LAYOUT(eoir_truth, elevation_deg, 216);
+  CHECK_LAYOUT(eoir_truth, air_mass, 224);
   CHECK_LAYOUT(eoir_api_v1, abi_major, 4);
   CHECK_LAYOUT(eoir_api_v1, version, 16);
   CHECK_LAYOUT(eoir_api_v1, engine_create, 40);

@@ -186,7 +186,8 @@ class eoir_truth(Structure):
                 ("topocentric", c_int32),  # appended in 1.5
                 ("reserved_1_5", c_int32),
                 ("azimuth_deg", c_double),
-                ("elevation_deg", c_double)]
+                ("elevation_deg", c_double),
+                ("air_mass", c_double)]
 
 
 eoir_log_fn = CFUNCTYPE(None, c_void_p, c_int32, c_char_p)

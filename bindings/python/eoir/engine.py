@@ -630,8 +630,13 @@ class Engine(_Closing):
         the start and the end of the integration (a streak), azimuth_deg and
         elevation_deg (that direction on the sensor's local horizon: from
         north through east, above the geodetic horizon, unrefracted; None
-        unless the sensor is within 100 km of the Earth's surface).
-        Raises NoStateError if no frame was rendered."""
+        unless the sensor is within 100 km of the Earth's surface), air_mass
+        (the air along the line of sight, or toward space for a star, in
+        sea-level vertical columns: 1 straight up from sea level; 0 while
+        the Earth's atmosphere is off). From inside the atmosphere the pixel
+        positions of stars and of point sources beyond it are raised by the
+        refraction, as in the image. Raises NoStateError if no frame was
+        rendered."""
         s = encode(sensor)
         n = c_size_t()
         check(lib.eoir_truth_count(self.handle, s, byref(n)))
@@ -659,6 +664,7 @@ class Engine(_Closing):
                 "end": (float(t.end_pixel_x), float(t.end_pixel_y)),
                 "azimuth_deg": float(t.azimuth_deg) if t.topocentric else None,
                 "elevation_deg": float(t.elevation_deg) if t.topocentric else None,
+                "air_mass": float(t.air_mass),
             })
         return out
 

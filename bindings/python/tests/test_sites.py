@@ -97,6 +97,28 @@ def test_point_at_target_tracks_without_streak(engine):
     assert row["elevation_deg"] == pytest.approx(70.0, abs=1e-6)
 
 
+def test_truth_air_mass_and_refraction(engine):
+    """With the atmosphere on, truth's air mass from Paranal (2635 m) is
+    Kasten and Young (1989) times the US76 pressure there, p/p0 =
+    (1 - 2.25577e-5 h)^5.25588 = 0.7246, within 1 %; the satellite moves up
+    the picture by the refraction (about 1.3 px); off, the air mass is 0."""
+    engine.add_object("satellite", "Sat")
+    engine.set_state("Sat", position=at_azel(222.0, 41.0, 1200e3), frame="earth_fixed")
+    engine.point_at("Scope", azimuth_deg=222.0, elevation_deg=41.0)
+    engine.render("Scope")
+    (off,) = engine.truth("Scope")
+    assert off["air_mass"] == 0.0
+    engine.set("Earth", "atmosphere", "simple")
+    engine.render("Scope")
+    (on,) = engine.truth("Scope")
+    z = 90.0 - 41.0 - 0.014  # apparent zenith angle (deg): about 50" of refraction
+    kasten_young = 1.0 / (math.cos(math.radians(z)) + 0.50572 * (96.07995 - z) ** -1.6364)
+    assert on["air_mass"] == pytest.approx(kasten_young * (1 - 2.25577e-5 * HEIGHT) ** 5.25588, rel=0.01)
+    assert on["pixel_x"] == pytest.approx(off["pixel_x"], abs=0.01)
+    assert 1.0 < off["pixel_y"] - on["pixel_y"] < 1.6
+    assert on["elevation_deg"] == off["elevation_deg"]
+
+
 def test_truth_from_space_has_no_azimuth():
     with eoir.Engine(threads=1) as e:
         e.set_time(T0)

@@ -447,7 +447,11 @@ EOIR_API eoir_status eoir_target_spectrum_get(eoir_engine engine, const char* se
 
 /* Per-frame truth: each object in the field of the last frame of `sensor`
  * (central bodies only where imaged as point sources) and, with a star
- * field, each catalogue star imaged (1.3). */
+ * field, each catalogue star imaged (1.3). Pixel positions are where the
+ * image has them: from inside the Earth's atmosphere, stars and point
+ * sources beyond the atmosphere appear raised toward the zenith by the
+ * refraction (1.5); the directions (RA/Dec, azimuth/elevation) stay
+ * geometric. */
 #define EOIR_TRUTH_OBJECT 0
 #define EOIR_TRUTH_STAR 1
 
@@ -476,6 +480,9 @@ typedef struct eoir_truth {
   double azimuth_deg;           /* the direction of right_ascension_deg, declination_deg on the sensor's local */
   double elevation_deg;         /* horizon: from north through east in [0, 360), above the geodetic horizon
                                    (unrefracted); both 0 if topocentric is 0 */
+  double air_mass;              /* air along the line of sight to the object, or toward space for a star, in
+                                   sea-level vertical columns (spec 6.2.5.4: 1 straight up from sea level);
+                                   0 while the Earth's atmosphere is off */
 } eoir_truth;
 
 EOIR_API eoir_status eoir_truth_count(eoir_engine engine, const char* sensor, size_t* count_out);

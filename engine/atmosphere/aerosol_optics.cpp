@@ -16,7 +16,7 @@ constexpr double kLastWavelength_um = 200.0;
 }  // namespace
 
 double relative_humidity_pct(double h2o_m3, double temperature_K) {
-  if (!(temperature_K > 0)) return 0.0;
+  if (!(temperature_K > 150.0)) return 0.0;  // (Buck's formula has a pole at 16 K; no liquid water there)
   const double e_Pa = h2o_m3 * constants::boltzmann_J_per_K * temperature_K;
   const double t_C = temperature_K - 273.15;
   const double es_Pa = 611.21 * std::exp((18.678 - t_C / 234.5) * (t_C / (257.14 + t_C)));

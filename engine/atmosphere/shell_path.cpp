@@ -137,13 +137,14 @@ PathColumns refracted_path_to_space(const AtmosphereProfile& profile, const Eart
   const double a = earth.equatorial_radius_m, top = a + profile.top_altitude_m();
   const Vec3 u = apparent_direction.normalized();
   const Vec3 x0 = stretch(from_m - earth.centre_m), d0 = stretch(u).normalized();
-  const double r0 = x0.norm();
+  // A start below the surface (a site on the sea floor) is taken at it.
+  const double r0 = std::max(x0.norm(), a);
   if (!(r0 < top)) return path_to_space(profile, earth, from_m, u, keep);
   const double length_scale = 1.0 / stretch(u).norm();  // true length per stretched length, near the start
-  const double pole_cos = x0.dot(earth.pole) / r0;        // the shells' altitude correction along the way
+  const double pole_cos = x0.norm() > 0 ? x0.dot(earth.pole) / x0.norm() : 0.0;  // the shells' altitude correction
   const auto h_of = [&](double r) { return (r - a) / (1.0 + stretch.extra * pole_cos * pole_cos); };
   const auto n_of = [&](double r) { return 1.0 + refractivity(profile.at(h_of(r)).air_m3); };
-  const double mu0 = x0.dot(d0) / r0;  // cos(zenith angle) at the start
+  const double mu0 = x0.norm() > 0 ? x0.dot(d0) / x0.norm() : 1.0;  // cos(zenith angle) at the start
   const double invariant = n_of(r0) * r0 * std::sqrt(std::max(0.0, 1.0 - mu0 * mu0));
   // The radius the ray starts climbing from: the start, or below the horizon
   // its lowest point (n r = invariant), or the ground.
@@ -195,11 +196,13 @@ PathColumns refracted_path_to_space(const AtmosphereProfile& profile, const Eart
       add_segment(seg, air_T, air_p, keep, out);
     }
   };
-  if (ends_on_ground) {
-    climb(r0);  // from the ground up to the start, the way the ray came down
-    return out;
+  // Segments run from the start out: the leg down to the lowest point (or
+  // the ground) is integrated upward, so its segments are reversed.
+  if (descends) {
+    climb(r0);
+    std::reverse(out.segments.begin(), out.segments.end());
   }
-  if (descends) climb(r0);  // down to the lowest point and back up to the start's height
+  if (ends_on_ground) return out;
   climb(top);
   return out;
 }

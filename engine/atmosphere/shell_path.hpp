@@ -48,7 +48,7 @@ struct PathColumns {
   double air_m2 = 0, h2o_m2 = 0, o3_m2 = 0, aerosol_tau_550 = 0;
   double boundary_aerosol_tau_550 = 0;  // of which the boundary layer's
   double lowest_altitude_m = 0;  // the path's lowest point (of the part inside)
-  std::vector<PathSegment> segments;  // from the first point on, when asked for
+  std::vector<PathSegment> segments;  // from the first point (the start of a refracted path) out, when asked for
 };
 
 // Between two points.

@@ -464,7 +464,7 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
   const World& w = *world_;
   std::vector<double> E(w.view.spectral.sample_wavelengths_um.size(), 0.0);
   const double r2 = range_m * range_m;
-  if (!detailed_point_source && light_ >= 0) {
+  if (!detailed_point_source && light_ >= 0 && !under_atmosphere_) {  // (under its air the Earth's paths vary: summed)
     // Eq. 7 toward the observer: [E_sun SRF 2/(3 pi) Phase(psi) + eps B(T)] dOmega.
     const LightSpectra& self = light_spectra();
     const double omega = constants::pi * volumetric_radius_m * volumetric_radius_m / r2;
@@ -483,7 +483,7 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
     if (facing <= 0) continue;
     const std::vector<double> L = spectral_radiance(patch.part, patch.centre_body_m, patch.normal_body, toward);
     const double omega = facing * patch.area_m2 / r2;
-    const std::vector<double> seen = at_sensor(L);
+    const std::vector<double> seen = at_sensor(L, patch.centre_body_m, patch.normal_body);
     for (std::size_t i = 0; i < E.size(); ++i) E[i] += seen[i] * omega;
   }
   return E;
@@ -538,6 +538,10 @@ SurfacePaths surface_paths(const WorldAtmosphere& a, double observer_altitude_m)
   const Vec3 ground = a.earth.centre_m + a.earth.equatorial_radius_m * up;
   const double top = a.earth.equatorial_radius_m + profile.top_altitude_m();
   const double r_observer = a.earth.equatorial_radius_m + std::min(observer_altitude_m, profile.top_altitude_m() + 1.0);
+  const atmosphere::Densities air = profile.at(0.0);
+  const atmosphere::RefractionConstants ground_refraction = atmosphere::refraction_constants(
+      air.pressure_Pa, air.temperature_K, atmosphere::relative_humidity_pct(air.h2o_m3, air.temperature_K) / 100.0,
+      0.5 * (a.optics->band().low_um + a.optics->band().high_um));
   for (int k = 0; k < kSurfacePathNodes; ++k) {
     const double mu = std::pow(static_cast<double>(k) / (kSurfacePathNodes - 1), 2.0);
     t.mu.push_back(mu);
@@ -553,8 +557,12 @@ SurfacePaths surface_paths(const WorldAtmosphere& a, double observer_altitude_m)
     a.optics->path_radiance(view, L);
     t.view_T.push_back(std::move(T));
     t.view_L.push_back(std::move(L));
+    // The Sun at true zenith cosine mu is seen higher by the refraction at the ground.
     bool below = false;
-    const atmosphere::PathColumns sun = atmosphere::refracted_path_to_space(profile, a.earth, ground, u, below, true);
+    const double e = std::asin(mu), seen = e + atmosphere::refraction_from_true_rad(ground_refraction, e);
+    const Vec3 toward_sun = std::sin(seen) * up + std::cos(seen) * across;
+    const atmosphere::PathColumns sun =
+        atmosphere::refracted_path_to_space(profile, a.earth, ground, toward_sun, below, true);
     std::vector<double> S(static_cast<std::size_t>(a.optics->band().intervals), 0.0);
     if (!below) a.optics->transmittance(sun, S);
     t.sun_T.push_back(std::move(S));
@@ -625,8 +633,12 @@ std::vector<double> WorldAtmosphere::to_space(const Vec3& point_m, const Vec3& d
   if (!on()) return T;
   atmosphere::PathColumns c;
   bool ground = false;
+  // From the observer the ray leaves along the apparent direction (a point
+  // elsewhere is taken along the true one: the Sun low over an aircraft is
+  // seen through a little more air than it should).
+  const Vec3 launch = point_m.squaredNorm() == 0.0 ? apparent_direction(direction) : direction;
   if (atmosphere::altitude_m(earth, point_m) < profile->top_altitude_m())
-    c = atmosphere::refracted_path_to_space(*profile, earth, point_m, direction, ground);
+    c = atmosphere::refracted_path_to_space(*profile, earth, point_m, launch, ground);
   else
     c = atmosphere::path_to_space(*profile, earth, point_m, direction);
   if (ground) return std::vector<double>(static_cast<std::size_t>(optics->band().intervals), 0.0);
@@ -715,23 +727,25 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   // The Earth's atmosphere, when its central body has it on (spec 4.3.1.1):
   // each object's light reaches the sensor through it (T_out) with the
   // path's own thermal radiance (L_path), and the Sun's reaches the object
-  // through it (T_in), at the object's centre. The Earth's own surface is
-  // seen as in vacuum still.
+  // through it (T_in), at the object's centre; the Earth's surface through
+  // the tables of SurfacePaths. The settings and figure are the universe's
+  // Earth's, in the world or not (a sensor on the Earth does not image it).
   std::int32_t earth_id = -1;
-  for (std::size_t i = 0; i < world->objects.size(); ++i) {
-    const universe::Object& o = *sources[i];
-    if (o.kind != ObjectKind::central_body || o.central_body != universe::CentralBody::earth) continue;
-    earth_id = world->objects[i]->id;
-    if (o.atmosphere.model == universe::AtmosphereModel::none) continue;
-    const WorldObject& earth = *world->objects[i];
+  for (std::size_t i = 0; i < world->objects.size(); ++i)
+    if (sources[i]->kind == ObjectKind::central_body && sources[i]->central_body == universe::CentralBody::earth)
+      earth_id = world->objects[i]->id;
+  for (const universe::Object& o : universe.objects()) {
+    if (o.kind != ObjectKind::central_body || o.central_body != universe::CentralBody::earth ||
+        o.atmosphere.model == universe::AtmosphereModel::none)
+      continue;
     WorldAtmosphere& a = world->atmosphere;
     a.settings = o.atmosphere;
     a.profile = atmosphere::AtmosphereProfile::make(o.atmosphere, library.data_dir);
     a.optics = std::make_shared<const atmosphere::PathOptics>(a.profile, o.atmosphere, library.data_dir, band);
-    a.earth.centre_m = earth.placed.position_m;
-    a.earth.pole = earth.placed.body_to_frame.col(2);
-    a.earth.equatorial_radius_m = earth.equatorial_radius_m;
-    a.earth.polar_radius_m = earth.polar_radius_m;
+    a.earth.centre_m = -world->observer.position_m;  // the Earth at the geocentre, as place() puts it
+    a.earth.pole = frames::j2000_to_earth_fixed(t).transpose().col(2);
+    a.earth.equatorial_radius_m = o.body.dimensions_m[0];
+    a.earth.polar_radius_m = o.body.dimensions_m[1];
     a.observer_inside = atmosphere::altitude_m(a.earth, Vec3::Zero()) < a.profile->top_altitude_m();
     {  // the observer's geodetic vertical and the refraction of its air
       const Vec3 p = -a.earth.centre_m;

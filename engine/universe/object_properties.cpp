@@ -141,7 +141,8 @@ std::vector<Spec> atmosphere_properties() {
   Spec model = enum_property<Object, AtmosphereModel>(
       "atmosphere",
       "The atmosphere along every path the world traces (spec 4.3.1.1, eq. 9): none (vacuum, the default) or simple "
-      "(transmission, path radiance and scatter from the profile, absorbers and aerosol below); the Earth's only",
+      "(transmission and thermal path radiance from the profile, absorbers and aerosol below; solar scatter not yet); "
+      "the Earth's only",
       [](Object& o) -> auto& { return o.atmosphere.model; }, atmosphere_model_names());
   const auto set_model = model.set;
   model.set = [set_model](Object& o, const Value& v) {
@@ -172,7 +173,8 @@ std::vector<Spec> atmosphere_properties() {
   t.push_back(bool_property<Object>(
       "downwelling",
       "The sky's diffuse light on surfaces (eq. 9's DownWelling: Rayleigh and aerosol scatter, and the sky's "
-      "thermal emission); off reproduces single-scatter references that carry the direct Sun only (ERRATA)",
+      "thermal emission); off reproduces single-scatter references that carry the direct Sun only (ERRATA). Kept "
+      "and saved, but not yet read: DownWelling is not modeled in this release",
       [](Object& o) -> auto& { return o.atmosphere.downwelling; }));
   t.push_back(number_property<Object>("water_vapor_scale", "-",
                                       "Multiplies the profile's water-vapour density at every altitude (its column)",

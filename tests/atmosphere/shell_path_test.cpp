@@ -146,5 +146,24 @@ TEST(ShellPath, SegmentsAddUp) {
   EXPECT_GE(c.segments.size(), p->levels().size() - 1);
 }
 
+
+// A refracted ray leaving a mountain below the horizon: its segments run
+// from the observer out (down to the lowest point, then up), as the
+// Schwarzschild sum of path_optics needs.
+TEST(ShellPath, DescendingRefractedSegmentsRunFromTheObserver) {
+  const auto p = us76();
+  bool ground = true;
+  const PathColumns c = refracted_path_to_space(*p, kEarth, equator(3000), zenith_direction(91), ground);
+  ASSERT_FALSE(ground);
+  ASSERT_GT(c.segments.size(), 4u);
+  EXPECT_EQ(c.segments.front().layer, p->layer_of(2999.0));
+  std::size_t lowest = 0;
+  for (std::size_t k = 1; k < c.segments.size(); ++k)
+    if (c.segments[k].layer < c.segments[lowest].layer) lowest = k;
+  for (std::size_t k = 1; k <= lowest; ++k) EXPECT_LE(c.segments[k].layer, c.segments[k - 1].layer) << k;
+  for (std::size_t k = lowest + 1; k < c.segments.size(); ++k) EXPECT_GE(c.segments[k].layer, c.segments[k - 1].layer) << k;
+  EXPECT_EQ(c.segments.back().layer, p->levels().size() - 2);
+}
+
 }  // namespace
 }  // namespace eoir::atmosphere

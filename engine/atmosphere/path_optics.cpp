@@ -88,13 +88,7 @@ void PathOptics::path_radiance(const PathColumns& path, std::vector<double>& out
   PathColumns prefix;
   prefix.crosses = true;
   for (const PathSegment& s : path.segments) {
-    prefix.segments.push_back(s);
-    prefix.length_m += s.length_m;
-    prefix.air_m2 += s.air_m2;
-    prefix.h2o_m2 += s.h2o_m2;
-    prefix.o3_m2 += s.o3_m2;
-    prefix.aerosol_tau_550 += s.aerosol_tau_550;
-    prefix.boundary_aerosol_tau_550 += s.boundary_aerosol_tau_550;
+    append_segment(prefix, s);
     sub_transmittance(prefix, far);
     for (std::size_t k = 0; k < sub.size(); ++k)
       sub[k] += radiometry::planck_radiance(wavelength_um_[k], s.temperature_K) * std::max(0.0, near[k] - far[k]);

@@ -46,13 +46,8 @@ void add_segment(PathSegment& seg, double air_T, double air_p, bool keep, PathCo
     seg.temperature_K = air_T / seg.air_m2;
     seg.pressure_Pa = air_p / seg.air_m2;
   }
-  out.length_m += seg.length_m;
-  out.air_m2 += seg.air_m2;
-  out.h2o_m2 += seg.h2o_m2;
-  out.o3_m2 += seg.o3_m2;
-  out.aerosol_tau_550 += seg.aerosol_tau_550;
-  out.boundary_aerosol_tau_550 += seg.boundary_aerosol_tau_550;
-  if (keep) out.segments.push_back(seg);
+  append_segment(out, seg);
+  if (!keep) out.segments.pop_back();
 }
 
 // Integrates the line x(t) = p + t d (caller's frame, d of any length) for
@@ -126,6 +121,16 @@ PathColumns path_to_space(const AtmosphereProfile& profile, const EarthFigure& e
   // Far enough to leave the top sphere from anywhere inside it.
   const double reach = (from_m - earth.centre_m).norm() + 2.0 * (earth.equatorial_radius_m * 1.01 + profile.top_altitude_m());
   return integrate(profile, earth, from_m, direction.normalized(), 0.0, reach, keep_segments);
+}
+
+void append_segment(PathColumns& path, const PathSegment& s) {
+  path.length_m += s.length_m;
+  path.air_m2 += s.air_m2;
+  path.h2o_m2 += s.h2o_m2;
+  path.o3_m2 += s.o3_m2;
+  path.aerosol_tau_550 += s.aerosol_tau_550;
+  path.boundary_aerosol_tau_550 += s.boundary_aerosol_tau_550;
+  path.segments.push_back(s);
 }
 
 double refractivity(double air_m3) { return 2.926e-4 * air_m3 / kLoschmidt_m3; }

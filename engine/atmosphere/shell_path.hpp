@@ -51,6 +51,9 @@ struct PathColumns {
   std::vector<PathSegment> segments;  // from the first point (the start of a refracted path) out, when asked for
 };
 
+// Adds a segment's amounts to a path's totals (and the segment to its list).
+void append_segment(PathColumns& path, const PathSegment& segment);
+
 // Between two points.
 PathColumns path_between(const AtmosphereProfile& profile, const EarthFigure& earth, const Vec3& from_m,
                          const Vec3& to_m, bool keep_segments = true);

@@ -117,6 +117,18 @@ static inline double kasten_young(double z_deg) {
   return 1.0 / (cos(z_deg * 3.14159265358979323846 / 180.0) + 0.50572 * pow(96.07995 - z_deg, -1.6364));
 }
 
+/* |actual - expected| <= tol */
+#define NEAR_ABS(actual, expected, tol)                                                          \
+  do {                                                                                           \
+    double a_ = (actual), e_ = (expected);                                                       \
+    ++check_count;                                                                               \
+    if (!(fabs(a_ - e_) <= (tol))) {                                                             \
+      ++check_failures;                                                                          \
+      fprintf(stderr, "%s:%d: %s = %.12g, expected %.12g within %g\n", __FILE__, __LINE__, #actual, \
+              a_, e_, (double)(tol));                                                            \
+    }                                                                                            \
+  } while (0)
+
 #define CHECK_SUMMARY()                                                                  \
   (printf("%d checks, %d failed\n", check_count, check_failures), check_failures ? 1 : 0)
 

@@ -30,17 +30,6 @@
 #define CENTRE ((PIXELS - 1) / 2.0) /* pixel 0 is centred on 0 */
 #define RANGE_M 3.0e6               /* the satellite: 1100 km up at 10 deg */
 
-/* |actual - expected| <= tol */
-#define NEAR_ABS(actual, expected, tol)                                                          \
-  do {                                                                                           \
-    double a_ = (actual), e_ = (expected);                                                       \
-    ++check_count;                                                                               \
-    if (!(fabs(a_ - e_) <= (tol))) {                                                             \
-      ++check_failures;                                                                          \
-      fprintf(stderr, "%s:%d: %s = %.9g, expected %.9g within %g\n", __FILE__, __LINE__, #actual, a_, \
-              e_, (double)(tol));                                                                \
-    }                                                                                            \
-  } while (0)
 
 /* Bennett (1982) for the US76 ground: the refraction (deg) of a source at
  * true elevation e_deg, h = e + R(h) by fixed-point iteration. */

@@ -22,17 +22,6 @@
 /* White Sands, New Mexico. */
 static const double site_lat = 32.3805, site_lon = -106.4793, site_height = 1224.0;
 
-/* |actual - expected| <= tol */
-#define NEAR_ABS(actual, expected, tol)                                                          \
-  do {                                                                                           \
-    double a_ = (actual), e_ = (expected);                                                       \
-    ++check_count;                                                                               \
-    if (!(fabs(a_ - e_) <= (tol))) {                                                             \
-      ++check_failures;                                                                          \
-      fprintf(stderr, "%s:%d: %s = %.12g, expected %.12g within %g\n", __FILE__, __LINE__, #actual, \
-              a_, e_, (double)(tol));                                                            \
-    }                                                                                            \
-  } while (0)
 
 static void geodetic_to_ecef(double lat_deg, double lon_deg, double h, double r[3]) {
   const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2.0 - f);

@@ -349,17 +349,24 @@ const std::vector<WorldObject::AreaSourcePatch>& WorldObject::area_source(std::s
   return area_sources_.emplace(light, std::move(patches)).first->second;
 }
 
-std::vector<double> WorldObject::spectral_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
-                                                   const Vec3& toward, bool sun_only) const {
-  std::vector<double> out(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
+void WorldObject::spectral_radiance_into(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
+                                         const Vec3& toward, bool sun_only, std::vector<double>& out,
+                                         std::vector<double>& E) const {
+  out.assign(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
   const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
   if (surface->reflects(point)) {
-    std::vector<double> E(out.size(), 0.0);
+    E.assign(out.size(), 0.0);
     const SurfaceSpectrum& s = *point.spectrum;
     add_reflected_irradiance(to_frame(point_body_m), placed.body_to_frame * normal_body, toward, s.brdf(), sun_only, E);
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = E[i] * s.srf()[i];
   }
   surface->add_emission(point, out);
+}
+
+std::vector<double> WorldObject::spectral_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
+                                                   const Vec3& toward, bool sun_only) const {
+  std::vector<double> out, E;
+  spectral_radiance_into(part, point_body_m, normal_body, toward, sun_only, out, E);
   return out;
 }
 
@@ -368,9 +375,10 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
   if (plain()) return plain_radiance(part);
   const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
   if (under_atmosphere_) {  // eq. 9 interval by interval: the path changes with the point
-    thread_local std::vector<double> L;
-    L = spectral_radiance(part, point_body_m, normal_body, -to_frame(point_body_m).normalized());
-    return world_->view.spectral.integrate(at_sensor(std::move(L), point_body_m, normal_body));
+    thread_local std::vector<double> L, E;  // per-sample scratch (eq. 8 sources below allocate their own)
+    spectral_radiance_into(part, point_body_m, normal_body, -to_frame(point_body_m).normalized(), false, L, E);
+    to_sensor(L, point_body_m, normal_body);
+    return world_->view.spectral.integrate(L);
   }
   double reflected = 0;
   if (surface->reflects(point)) {
@@ -491,19 +499,23 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
 
 std::vector<double> WorldObject::at_sensor(std::vector<double> spectrum, const Vec3& point_body_m,
                                            const Vec3& normal_body) const {
+  to_sensor(spectrum, point_body_m, normal_body);
+  return spectrum;
+}
+
+void WorldObject::to_sensor(std::vector<double>& spectrum, const Vec3& point_body_m, const Vec3& normal_body) const {
   if (under_atmosphere_) {
     thread_local std::vector<double> T, L;
     const Vec3 toward = -to_frame(point_body_m).normalized();
     world_->atmosphere.surface.view_at((placed.body_to_frame * normal_body).dot(toward), T, L);
     for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] = spectrum[i] * T[i] + L[i];
-    return spectrum;
+    return;
   }
   const std::vector<double>& T = view().transmittance;
   if (!T.empty())
     for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] *= T[i];
   if (!path_spectral_.empty())
     for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] += path_spectral_[i];
-  return spectrum;
 }
 
 const radiometry::SpectralView& WorldObject::view() const {

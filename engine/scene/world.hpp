@@ -201,6 +201,7 @@ class WorldObject {
   // with the outward normal there.
   std::vector<double> at_sensor(std::vector<double> spectrum, const Vec3& point_body_m = Vec3::Zero(),
                                 const Vec3& normal_body = Vec3::UnitZ()) const;
+  void to_sensor(std::vector<double>& spectrum, const Vec3& point_body_m, const Vec3& normal_body) const;
   // The band radiance of a plain part at the sensor (eq. 9 with L_path).
   double plain_radiance(std::int32_t part) const { return surface->part_radiance(part) + path_radiance_W_cm2_sr_; }
   // One radiance per part, whatever the point (false for the Earth seen
@@ -234,6 +235,9 @@ class WorldObject {
   // sum over the patches of t facing the observer of L_k cos A_k (ERRATA eq. 11 times R^2).
   template <class PatchRadiance>
   double visible_patch_sum(const geometry::Tessellation& t, PatchRadiance radiance) const;
+  // spectral_radiance into caller buffers (E: the reflected irradiance's scratch).
+  void spectral_radiance_into(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body, const Vec3& toward,
+                              bool sun_only, std::vector<double>& out, std::vector<double>& E) const;
   // Eq. 8 sums of source `light` as seen from this object's centre.
   const std::vector<AreaSourcePatch>& area_source(std::size_t light) const;
   // Adds sum_i E_i (I_i . N) BRDF(I_i, N, O) at a point (eq. 4's bracket).

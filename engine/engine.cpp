@@ -172,7 +172,8 @@ std::shared_ptr<const scene::World> Engine::world(const std::string& sensor) {
   if (it != worlds_.end() && it->second.revision == revision_ && it->second.time == time_) return it->second.world;
   auto w = scene::build_world(universe_, library(), time_, universe_.sensor(sensor),
                               scene::ViewDefinition{model->grid, model->spectral, model->fidelity(),
-                                                    model->parameters.integration_time_ms * 1e-3});
+                                                    model->parameters.integration_time_ms * 1e-3},
+                              world_cache_.get());
   ++world_builds_;
   worlds_[sensor] = CachedWorld{revision_, time_, w};
   return w;
@@ -350,7 +351,8 @@ void Engine::adaptive_frame(const std::string& name, const scene::FidelityChoice
     const sensor::SensorModel& m = *cached.model;
     cached.world = scene::build_world(universe_, library(), time_, s,
                                       scene::ViewDefinition{m.grid, m.spectral, m.fidelity(),
-                                                            m.parameters.integration_time_ms * 1e-3});
+                                                            m.parameters.integration_time_ms * 1e-3},
+                                      world_cache_.get());
     cached.world_revision = revision_;
     cached.time = time_;
     ++world_builds_;

@@ -153,6 +153,7 @@ class Engine {
   std::vector<universe::Material> user_materials_;
   std::vector<universe::NamedSpectrum> user_spectra_;
   std::string last_sky_warning_;  // logged once, not every frame
+  std::unique_ptr<scene::WorldCache> world_cache_ = std::make_unique<scene::WorldCache>();  // shared by the worlds
 };
 
 }  // namespace eoir

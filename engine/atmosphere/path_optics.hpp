@@ -36,6 +36,7 @@ class PathOptics {
   ~PathOptics();
   const radiometry::SpectralBand& band() const { return band_; }
   const AtmosphereProfile& profile() const { return *profile_; }
+  const std::shared_ptr<const AtmosphereProfile>& profile_ptr() const { return profile_; }
   // The sub-sample wavelengths (um), interval by interval: interval i holds
   // [first_[i], first_[i + 1]).
   const std::vector<double>& sub_wavelengths_um() const { return wavelength_um_; }

@@ -238,7 +238,7 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
         const double g = f * universe::sun_projected_solid_angle_sr(d) * cos_i * brdf.value(I, toward, n);
         if (under_atmosphere_) {  // eq. 9's T_in at the point's Sun zenith angle
           thread_local std::vector<double> T;
-          w.atmosphere.surface.sun_at(cos_i, T);
+          w.atmosphere.surface->sun_at(cos_i, T);
           for (std::size_t i = 0; i < count; ++i) out[i] += g * w.sun.radiance[i] * T[i];
         } else if (sun_transmittance_.empty()) {
           for (std::size_t i = 0; i < count; ++i) out[i] += g * w.sun.radiance[i];
@@ -507,7 +507,7 @@ void WorldObject::to_sensor(std::vector<double>& spectrum, const Vec3& point_bod
   if (under_atmosphere_) {
     thread_local std::vector<double> T, L;
     const Vec3 toward = -to_frame(point_body_m).normalized();
-    world_->atmosphere.surface.view_at((placed.body_to_frame * normal_body).dot(toward), T, L);
+    world_->atmosphere.surface->view_at((placed.body_to_frame * normal_body).dot(toward), T, L);
     for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] = spectrum[i] * T[i] + L[i];
     return;
   }
@@ -669,9 +669,36 @@ const WorldObject* World::find(const std::string& name) const {
   return nullptr;
 }
 
+// Entries each of the engine's world caches keeps at most.
+constexpr std::size_t kWorldCacheEntries = 16;
+
+std::shared_ptr<const atmosphere::PathOptics> WorldCache::optics(const universe::AtmosphereSettings& settings,
+                                                                 const std::string& data_dir,
+                                                                 const radiometry::SpectralBand& band) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const auto& [s, dir, low, high, n, optics] : optics_)
+    if (s == settings && dir == data_dir && low == band.low_um && high == band.high_um && n == band.intervals)
+      return optics;
+  auto made = std::make_shared<const atmosphere::PathOptics>(atmosphere::AtmosphereProfile::make(settings, data_dir),
+                                                             settings, data_dir, band);
+  if (optics_.size() >= kWorldCacheEntries) optics_.clear();  // bounded: worlds keep what they hold
+  optics_.emplace_back(settings, data_dir, band.low_um, band.high_um, band.intervals, made);
+  return made;
+}
+
+std::shared_ptr<const SurfacePaths> WorldCache::surface(const std::shared_ptr<const atmosphere::PathOptics>& optics,
+                                                        double altitude_m, const std::function<SurfacePaths()>& make) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto key = std::make_pair(optics.get(), altitude_m);
+  auto it = surface_.find(key);
+  if (it != surface_.end()) return it->second;
+  if (surface_.size() >= kWorldCacheEntries) surface_.clear();  // (an aircraft's altitude changes every frame)
+  return surface_.emplace(key, std::make_shared<const SurfacePaths>(make())).first->second;
+}
+
 std::shared_ptr<const World> build_world(const universe::Universe& universe, const universe::Library& library,
                                          const EngineTime& t, const universe::Object& sensor,
-                                         const ViewDefinition& view) {
+                                         const ViewDefinition& view, WorldCache* cache) {
   auto world = std::make_shared<World>();
   world->time = t;
   world->sensor_name = sensor.name;
@@ -752,8 +779,11 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       continue;
     WorldAtmosphere& a = world->atmosphere;
     a.settings = o.atmosphere;
-    a.profile = atmosphere::AtmosphereProfile::make(o.atmosphere, library.data_dir);
-    a.optics = std::make_shared<const atmosphere::PathOptics>(a.profile, o.atmosphere, library.data_dir, band);
+    a.optics = cache ? cache->optics(o.atmosphere, library.data_dir, band)
+                     : std::make_shared<const atmosphere::PathOptics>(
+                           atmosphere::AtmosphereProfile::make(o.atmosphere, library.data_dir), o.atmosphere,
+                           library.data_dir, band);
+    a.profile = a.optics->profile_ptr();
     a.earth.centre_m = -world->observer.position_m;  // the Earth at the geocentre, as place() puts it
     a.earth.pole = frames::j2000_to_earth_fixed(t).transpose().col(2);
     a.earth.equatorial_radius_m = o.body.dimensions_m[0];
@@ -774,8 +804,12 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   }
   if (world->atmosphere.on() && earth_id >= 0 &&
       world->objects[static_cast<std::size_t>(earth_id)]->imaging != Imaging::outside) {
-    world->atmosphere.surface =
-        surface_paths(world->atmosphere, atmosphere::altitude_m(world->atmosphere.earth, Vec3::Zero()));
+    const WorldAtmosphere& a = world->atmosphere;
+    // (every observer above the atmosphere sees the same paths)
+    const double altitude = std::min(atmosphere::altitude_m(a.earth, Vec3::Zero()), a.profile->top_altitude_m() + 1.0);
+    const auto make = [&a, altitude] { return surface_paths(a, altitude); };
+    world->atmosphere.surface = cache ? cache->surface(a.optics, altitude, make)
+                                      : std::make_shared<const SurfacePaths>(make());
     world->objects[static_cast<std::size_t>(earth_id)]->under_atmosphere_ = true;
   }
   if (world->atmosphere.on())

@@ -13,10 +13,12 @@
 #include <Eigen/Core>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "atmosphere/path_optics.hpp"
@@ -124,7 +126,28 @@ struct WorldAtmosphere {
   Vec3 apparent_direction(const Vec3& d) const;
   Vec3 zenith = Vec3::UnitZ();                      // the observer's geodetic vertical (J2000)
   atmosphere::RefractionConstants refraction;       // at the observer, at the band's centre wavelength
-  SurfacePaths surface;                             // over the Earth's surface
+  std::shared_ptr<const SurfacePaths> surface;      // over the Earth's surface (when it is imaged)
+};
+
+// What the worlds of one engine build once and share (thread-safe): the
+// atmosphere's path optics per setting and band, and its surface tables
+// per observer altitude (clamped at the top of the atmosphere, so that every
+// observer above it shares one). Owned by the engine.
+class WorldCache {
+ public:
+  std::shared_ptr<const atmosphere::PathOptics> optics(const universe::AtmosphereSettings& settings,
+                                                       const std::string& data_dir,
+                                                       const radiometry::SpectralBand& band);
+  // The tables of `optics` for an observer at that (clamped) altitude, made by `make` if new.
+  std::shared_ptr<const SurfacePaths> surface(const std::shared_ptr<const atmosphere::PathOptics>& optics,
+                                              double altitude_m, const std::function<SurfacePaths()>& make);
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::tuple<universe::AtmosphereSettings, std::string, double, double, std::int64_t,
+                         std::shared_ptr<const atmosphere::PathOptics>>>
+      optics_;
+  std::map<std::pair<const atmosphere::PathOptics*, double>, std::shared_ptr<const SurfacePaths>> surface_;
 };
 
 class World;
@@ -226,7 +249,8 @@ class WorldObject {
  private:
   friend class World;
   friend std::shared_ptr<const World> build_world(const universe::Universe&, const universe::Library&,
-                                                  const EngineTime&, const universe::Object&, const ViewDefinition&);
+                                                  const EngineTime&, const universe::Object&, const ViewDefinition&,
+                                                  WorldCache*);
   struct AreaSourcePatch {
     Vec3 direction;              // from the receiver toward the patch, observer frame
     double solid_angle_sr = 0;   // projected solid angle at the receiver
@@ -296,6 +320,6 @@ class World {
 // unknown_name for an unknown material or spectrum).
 std::shared_ptr<const World> build_world(const universe::Universe& universe, const universe::Library& library,
                                          const EngineTime& t, const universe::Object& sensor,
-                                         const ViewDefinition& view);
+                                         const ViewDefinition& view, WorldCache* cache = nullptr);
 
 }  // namespace eoir::scene

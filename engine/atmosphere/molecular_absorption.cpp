@@ -134,10 +134,10 @@ class LowtranBandModel final : public MolecularAbsorption {
       const double temperature_K = std::max(s.temperature_K, 1.0);
       const double pss = s.pressure_Pa / kP0_Pa, tss = kT0_K / temperature_K;
       const double lp = std::log(pss), lt = std::log(tss);
-      const double h2o_g_cm2 = s.h2o_m2 * kH2OMolarMass_kg_mol / kAvogadro_per_mol * 0.1;
-      const double o3_atm_cm = s.o3_m2 / kLoschmidt_m3 * 1e2;
+      const double h2o_g_cm2 = precipitable_water_g_cm2(s.h2o_m2);
+      const double o3_atm_cm = atm_cm(s.o3_m2);
       std::array<double, kMixedGases> mixed_atm_cm{};
-      for (std::size_t g = 0; g < kMixedGases; ++g) mixed_atm_cm[g] = s.mixed_m2[g] / kLoschmidt_m3 * 1e2;
+      for (std::size_t g = 0; g < kMixedGases; ++g) mixed_atm_cm[g] = atm_cm(s.mixed_m2[g]);
       for (const auto& [band, nm] : scaling_) {
         const double u = nm.amount == Amount::h2o ? h2o_g_cm2 : nm.amount == Amount::o3 ? o3_atm_cm : mixed_atm_cm[nm.mixed];
         w.scaled[band] += u * std::exp(nm.n * lp + nm.m * lt);

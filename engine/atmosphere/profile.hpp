@@ -46,6 +46,10 @@ constexpr double kBoundaryLayerTop_m = 2000.0;
 constexpr double kH2OMolarMass_kg_mol = 18.01528e-3;
 constexpr double kAvogadro_per_mol = 6.02214076e23;
 constexpr double kLoschmidt_m3 = 2.6867811e25;  // molecules per m^3 at 273.15 K, 101325 Pa: 1 atm-cm = this x 1e-2 m
+// A water column (molecules m^-2) in g cm^-2 (precipitable cm), and any
+// gas's in atm-cm.
+inline double precipitable_water_g_cm2(double h2o_m2) { return h2o_m2 * kH2OMolarMass_kg_mol / kAvogadro_per_mol * 0.1; }
+inline double atm_cm(double molecules_m2) { return molecules_m2 / kLoschmidt_m3 * 1e2; }
 
 class AtmosphereProfile {
  public:

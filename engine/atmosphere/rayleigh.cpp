@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "atmosphere/profile.hpp"
-#include "core/constants.hpp"
 
 namespace eoir::atmosphere {
 
@@ -27,10 +26,5 @@ double rayleigh_cross_section_m2(double wavelength_um) {
   return rayleigh_sea_level_optical_depth(wavelength_um) / rayleigh_reference_column_m2();
 }
 
-double rayleigh_phase_per_sr(double cos_theta) {
-  // Chandrasekhar with depolarisation: 3 / (4 (1 + 2 gamma)) [(1 + 3 gamma) + (1 - gamma) cos^2], gamma = rho / (2 - rho).
-  const double rho = 0.0279, gamma = rho / (2.0 - rho);
-  return 3.0 / (16.0 * constants::pi * (1.0 + 2.0 * gamma)) * ((1.0 + 3.0 * gamma) + (1.0 - gamma) * cos_theta * cos_theta);
-}
 
 }  // namespace eoir::atmosphere

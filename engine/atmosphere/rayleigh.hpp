@@ -15,8 +15,5 @@ double rayleigh_sea_level_optical_depth(double wavelength_um);
 double rayleigh_reference_column_m2();
 // Cross section per air molecule (m^2).
 double rayleigh_cross_section_m2(double wavelength_um);
-// The Rayleigh phase function, normalised to 1 over 4 pi sr (1/sr), with the
-// depolarisation of air (King factor 1.0490: rho_n = 0.0279).
-double rayleigh_phase_per_sr(double cos_scattering_angle);
 
 }  // namespace eoir::atmosphere

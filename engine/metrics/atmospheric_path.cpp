@@ -30,8 +30,8 @@ AtmosphericPathMetrics atmospheric_path(const scene::World& world, const scene::
   }
   const atmosphere::PathColumns c = a.path_to(to);
   m.air_mass = a.air_mass(c);
-  m.h2o_g_cm2 = c.h2o_m2 * atmosphere::kH2OMolarMass_kg_mol / atmosphere::kAvogadro_per_mol * 0.1;
-  m.o3_atm_cm = c.o3_m2 / atmosphere::kLoschmidt_m3 * 1e2;
+  m.h2o_g_cm2 = atmosphere::precipitable_water_g_cm2(c.h2o_m2);
+  m.o3_atm_cm = atmosphere::atm_cm(c.o3_m2);
   m.aerosol_optical_depth_550 = c.aerosol_tau_550;
   m.rayleigh_optical_depth_550 = c.air_m2 * atmosphere::rayleigh_cross_section_m2(0.55);
   m.length_in_atmosphere_km = c.length_m / 1e3;

@@ -373,13 +373,13 @@ std::vector<double> WorldObject::spectral_radiance(std::int32_t part, const Vec3
 double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
                                        bool interpolated) const {
   if (plain()) return plain_radiance(part);
-  const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
   if (under_atmosphere_) {  // eq. 9 interval by interval: the path changes with the point
     thread_local std::vector<double> L, E;  // per-sample scratch (eq. 8 sources below allocate their own)
     spectral_radiance_into(part, point_body_m, normal_body, -to_frame(point_body_m).normalized(), false, L, E);
     to_sensor(L, point_body_m, normal_body);
     return world_->view.spectral.integrate(L);
   }
+  const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
   double reflected = 0;
   if (surface->reflects(point)) {
     const Vec3 p = to_frame(point_body_m);
@@ -608,13 +608,6 @@ void WorldAtmosphere::seen_from(const Vec3& point_m, std::vector<double>& T, std
   if (!c.crosses) return;
   optics->transmittance(c, T);
   optics->path_radiance(c, L);
-}
-
-std::vector<double> WorldAtmosphere::to_observer(const Vec3& point_m) const {
-  std::vector<double> T;
-  const atmosphere::PathColumns c = path_to(point_m);
-  if (c.crosses) optics->transmittance(c, T);
-  return T;
 }
 
 double WorldAtmosphere::air_mass(const atmosphere::PathColumns& path) const {

@@ -100,12 +100,11 @@ struct WorldAtmosphere {
   atmosphere::EarthFigure earth;
   bool observer_inside = false;  // the observer lies below the top of the atmosphere
   bool on() const { return profile != nullptr; }
-  // The transmittance per interval of the view from a point to the observer
-  // (the observer at the origin) and from a point toward space along a unit
-  // direction (toward the Sun, a star); empty where the path crosses no air.
+  // The transmittance per interval of the view from a point toward space
+  // along a unit direction (toward the Sun, a star); empty where the path
+  // crosses no air.
   // A path from an observer inside the atmosphere to space follows the
   // refracted ray.
-  std::vector<double> to_observer(const Vec3& point_m) const;
   // Both the transmittance and the thermal path radiance (eq. 9's L_path,
   // per interval) between a point and the observer; empty in vacuum.
   void seen_from(const Vec3& point_m, std::vector<double>& transmittance, std::vector<double>& path_radiance) const;

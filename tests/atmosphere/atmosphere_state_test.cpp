@@ -68,14 +68,6 @@ TEST(Rayleigh, VerticalOpticalDepthAt550nm) {
   EXPECT_NEAR(tau, 0.0971, 0.0971 * 0.01) << tau;
   // lambda^-4 (and a little more): 0.3 um / 1.0 um ~ 0.0971 x 0.55^4 / 0.3^4 ...
   EXPECT_GT(rayleigh_cross_section_m2(0.4) / rayleigh_cross_section_m2(0.8), 16.0);
-  // The phase function integrates to 1 over the sphere.
-  double sum = 0;
-  const int n = 2000;
-  for (int i = 0; i < n; ++i) {
-    const double mu = -1.0 + (i + 0.5) * 2.0 / n;
-    sum += rayleigh_phase_per_sr(mu) * 2.0 * 3.14159265358979323846 * (2.0 / n);
-  }
-  EXPECT_NEAR(sum, 1.0, 1e-6);  // the midpoint rule's error on a quadratic: 1e-7
 }
 
 // AFGL 1986 US-standard columns. The profile integrates the densities
@@ -88,8 +80,8 @@ TEST(Rayleigh, VerticalOpticalDepthAt550nm) {
 TEST(AFGL, USStandardColumns) {
   const auto p = profile(us76());
   const VerticalColumns c = p->vertical_columns_above(0.0);
-  const double h2o_g_cm2 = c.h2o_m2 * kH2OMolarMass_kg_mol / kAvogadro_per_mol * 1e3 * 1e-4;
-  const double o3_atm_cm = c.o3_m2 / kLoschmidt_m3 * 1e2;
+  const double h2o_g_cm2 = precipitable_water_g_cm2(c.h2o_m2);
+  const double o3_atm_cm = atm_cm(c.o3_m2);
   EXPECT_NEAR(h2o_g_cm2, 1.4164, 1.4164 * 0.01) << h2o_g_cm2;
   EXPECT_NEAR(o3_atm_cm, 0.3438, 0.3438 * 0.01) << o3_atm_cm;
   double h2o_trapezoid = 0, o3_trapezoid = 0;

@@ -108,8 +108,8 @@ TEST(Transmittance, AstmG173DirectNormal) {
   // G173's columns: 1.4164 cm of water and 0.3438 atm-cm of ozone.
   {
     const VerticalColumns c = AtmosphereProfile::make(s, data)->vertical_columns_above(0.0);
-    s.water_vapor_scale = 1.4164 / (c.h2o_m2 * kH2OMolarMass_kg_mol / kAvogadro_per_mol * 0.1);
-    s.ozone_scale = 0.3438 / (c.o3_m2 / kLoschmidt_m3 * 1e2);
+    s.water_vapor_scale = 1.4164 / precipitable_water_g_cm2(c.h2o_m2);
+    s.ozone_scale = 0.3438 / atm_cm(c.o3_m2);
   }
   auto profile = AtmosphereProfile::make(s, data);
   // The aerosol scaled to an optical depth of 0.084 at 0.5 um, straight up.

@@ -25,21 +25,35 @@ struct Descriptor {
 }
 }  // namespace
 
+void require_regular_file(const std::string& path, unsigned mode) {
+  if (S_ISREG(mode)) return;
+  const char* what = S_ISDIR(mode)    ? "a directory"
+                     : S_ISFIFO(mode) ? "a FIFO"
+                     : S_ISCHR(mode)  ? "a character device"
+                     : S_ISBLK(mode)  ? "a block device"
+                     : S_ISSOCK(mode) ? "a socket"
+                                      : "a special file";
+  throw Error(Status::io, "path: '" + path + "' is not a regular file (" + what + ")");
+}
+
 std::string read_file(const std::string& path, std::size_t max_bytes, const std::string& kind) {
-  const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
-  if (file.fd < 0) fail("open", path, errno);
+  // Devices and FIFOs are refused before they are opened (opening one may
+  // block or act); O_NONBLOCK and fstat cover a file replaced in between.
   struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) require_regular_file(path, st.st_mode);
+  const Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
+  if (file.fd < 0) fail("open", path, errno);
   if (::fstat(file.fd, &st) != 0) fail("read", path, errno);
-  if (S_ISDIR(st.st_mode)) fail("read", path, EISDIR);
+  require_regular_file(path, st.st_mode);
   const auto too_large = [&] {
     throw Error(Status::corrupt_file, "file: '" + path + "' is larger than " + std::to_string(max_bytes >> 20) +
                                           " MiB, the limit of " + kind);
   };
-  if (S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > max_bytes) too_large();
-  // Read in place: a regular file into storage of its size (one allocation,
-  // no copies: the 6 MB star catalogue loads in milliseconds), anything else
-  // in growing chunks up to the cap.
-  std::string out(S_ISREG(st.st_mode) ? static_cast<std::size_t>(st.st_size) + 1 : std::size_t{65536}, '\0');
+  if (static_cast<unsigned long long>(st.st_size) > max_bytes) too_large();
+  // Read in place into storage of the file's size (one allocation, no
+  // copies: the 6 MB star catalogue loads in milliseconds); a file that grows
+  // meanwhile is read up to the cap.
+  std::string out(static_cast<std::size_t>(st.st_size) + 1, '\0');
   std::size_t size = 0;
   for (;;) {
     if (size == out.size()) {

@@ -12,6 +12,7 @@
 #include <random>
 
 #include "core/error.hpp"
+#include "core/read_file.hpp"
 
 namespace eoir::state {
 namespace {
@@ -84,6 +85,8 @@ void write_file_atomically(const std::string& path, const std::string& contents)
   const std::string dir = dir_of(target), base = base_of(target);
   struct stat existing {};
   const bool exists = ::stat(target.c_str(), &existing) == 0;
+  // A device or FIFO at the target is not replaced by a file.
+  if (exists) require_regular_file(target, existing.st_mode);
   remove_stale_temporaries(dir, base);
 
   // An unnamed file in the target's directory, or a named one if the file

@@ -2,8 +2,10 @@
 // then rename over the target. A crash or error at
 // any point leaves the old file intact (house rule 5).
 //
-// Writes keep what the user set up: a symbolic link is written through (its
-// target is replaced, the link stays), an existing file keeps its permission
+// Writes keep what the user set up: only a regular file is replaced (a
+// device such as /dev/null, a FIFO or a directory at the target is refused:
+// Error(io) naming it), a symbolic link is written through (its target is
+// replaced, the link stays), an existing file keeps its permission
 // bits (a 0600 file stays private; a new file gets 0666 less the umask), and
 // the directory is flushed after the rename. The data are written to an
 // unnamed file (O_TMPFILE) that gets the name "<target>.tmp.XXXXXX" only for

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "core/read_file.hpp"
 #include "core/value.hpp"
 
 namespace eoir::universe {
@@ -18,8 +18,13 @@ double sun_projected_solid_angle_sr(double distance_m) {
 
 SpectrumTable SpectrumTable::load(const std::string& data_dir) {
   const std::string path = data_dir + "/solar/e490.txt";
-  std::ifstream in(path);
-  if (!in) throw Error(Status::io, "data: cannot read the solar spectrum '" + path + "' (build the data folder: .ci/setup)");
+  std::istringstream in([&] {
+    try {
+      return read_file(path, std::size_t{1} << 20, "solar spectra");
+    } catch (const Error& e) {
+      throw Error(e.status(), std::string(e.what()) + " (the solar spectrum; build the data folder: .ci/setup)");
+    }
+  }());
   std::vector<double> wl, irradiance;
   std::string line, source = "ASTM E-490-00a";
   for (std::size_t n = 1; std::getline(in, line); ++n) {

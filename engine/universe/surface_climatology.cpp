@@ -4,11 +4,11 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/read_file.hpp"
 
 namespace eoir::universe {
 namespace {
@@ -152,8 +152,7 @@ ClimatologyTable ClimatologyTable::parse(std::istream& in, const std::string& na
 }
 
 ClimatologyTable ClimatologyTable::load(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(Status::io, path + ": cannot open the climatology table");
+  std::istringstream in(read_file(path, std::size_t{1} << 20, "climatology tables"));
   return parse(in, path);
 }
 

@@ -1,5 +1,7 @@
 #include "universe/surface_map.hpp"
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -52,6 +54,8 @@ std::unique_ptr<RasterLevel> RasterLevel::load(const std::string& sidecar) {
   }
   if (r->width_ <= 0 || r->height_ <= 0 || r->width_ > 1000000 || r->height_ > 1000000 || !(r->cell_deg_ > 0))
     corrupt(sidecar, "width, height and cell_deg must be positive");
+  struct stat st {};  // rows are read on demand: the raster must be a regular file
+  if (::stat(r->data_path_.c_str(), &st) == 0) require_regular_file(r->data_path_, st.st_mode);
   std::ifstream data(r->data_path_, std::ios::binary);
   if (!data) throw Error(Status::io, "map: cannot read '" + r->data_path_ + "'");
   data.seekg(0, std::ios::end);

@@ -69,6 +69,16 @@ void write_file_atomically(const std::string& path_in, const void* data, std::si
   const std::string path = resolve_links(path_in);
   struct stat existing {};
   const bool exists = ::stat(path.c_str(), &existing) == 0;
+  // A device or FIFO at the target is not replaced by a file.
+  if (exists && !S_ISREG(existing.st_mode))
+    throw ImageIoError("cannot replace " + path + ": not a regular file (" +
+                       (S_ISDIR(existing.st_mode)    ? "a directory"
+                        : S_ISFIFO(existing.st_mode) ? "a FIFO"
+                        : S_ISCHR(existing.st_mode)  ? "a character device"
+                        : S_ISBLK(existing.st_mode)  ? "a block device"
+                        : S_ISSOCK(existing.st_mode) ? "a socket"
+                                                     : "a special file") +
+                       ")");
   remove_stale_temporaries(path);
   // Unique per process and call; O_EXCL guards against collisions.
   const std::string tmp =

@@ -4,8 +4,9 @@
 // directory is fsync'ed afterwards. On any error the temporary file is
 // removed and the previous target (if any) is left untouched.
 //
-// As the engine's state files (engine/state/atomic_file.hpp): an existing
-// target keeps its permission bits (new files get 0666 less the umask), a
+// As the engine's state files (engine/state/atomic_file.hpp): only a
+// regular file is replaced (a device, FIFO or directory is refused), an
+// existing target keeps its permission bits (new files get 0666 less the umask), a
 // symbolic link is written through to its target (the link stays), and
 // temporary files "<target>.tmp.<pid>.<n>" left by a writer that died (no
 // process <pid>) are removed by the next write of that target.

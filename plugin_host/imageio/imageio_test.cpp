@@ -2,6 +2,7 @@
 #include <fitsio.h>
 #include <gtest/gtest.h>
 #include <png.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -280,6 +281,30 @@ TEST(AtomicWrite, ModeLinksAndStaleTemporaries) {
   EXPECT_FALSE(fs::exists(stale));
   EXPECT_TRUE(fs::exists(live));
   EXPECT_TRUE(fs::exists(other));
+}
+
+// Issue 25, item 6: a FIFO (or, as root, /dev/null) at the target was
+// replaced by a regular file; it is refused naming the path and left alone.
+TEST(AtomicWrite, NonRegularTargetsAreNotReplaced) {
+  TempDir dir;
+  const std::string fifo = dir.file("frame.fits");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::vector<double> a(6, 1.0);
+  try {
+    write_fits_image(fifo, a.data(), 3, 2, FitsHeader{});
+    ADD_FAILURE() << "a FIFO was replaced";
+  } catch (const ImageIoError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot replace " + fifo + ": not a regular file (a FIFO)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  const std::string link = dir.file("link.png");
+  fs::create_symlink(fifo, link);
+  const unsigned char pixels[4] = {0, 1, 2, 3};
+  EXPECT_THROW(write_png_gray8(link, pixels, 2, 2), ImageIoError);
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_TRUE(fs::is_symlink(link));
 }
 
 TEST(FitsWriter, ByteReproducible) {

@@ -124,7 +124,7 @@ EOIR_API eoir_status eoir_pick_get(eoir_engine engine, const char* sensor, int32
     std::memset(pick, 0, sizeof(eoir_pick));
     pick->struct_size = size;
     pick->hit = p.hit ? 1 : 0;
-    std::snprintf(pick->object, sizeof pick->object, "%s", p.object.c_str());
+    capi::copy_text(pick->object, p.object);
     pick->patch = p.patch;
     pick->range_m = p.range_m;
     pick->has_geodetic = p.has_geodetic ? 1 : 0;

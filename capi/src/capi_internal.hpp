@@ -3,11 +3,13 @@
 // exception into a status and a thread-local message, and argument checks.
 // Everything here translates; the engine computes.
 #pragma once
+#include <cstring>
 #include <memory>
 #include <mutex>
 #include <string>
 
 #include "core/error.hpp"
+#include "core/utf8.hpp"
 #include "engine.hpp"
 #include "eoir/eoir.h"
 
@@ -63,6 +65,14 @@ inline void need_size(uint32_t struct_size, size_t minimum, const char* field) {
   if (struct_size < minimum)
     throw Error(Status::struct_size, std::string(field) + ".struct_size: " + std::to_string(struct_size) +
                                          " is smaller than the " + std::to_string(minimum) + " bytes of ABI v1");
+}
+// Copies `text` into a char array of the ABI (object names, catalogue ids):
+// at most N - 1 bytes, cut at a UTF-8 character boundary, NUL-terminated.
+template <std::size_t N>
+void copy_text(char (&out)[N], const std::string& text) {
+  const std::size_t n = utf8_prefix_length(text, N - 1);
+  std::memcpy(out, text.data(), n);
+  out[n] = '\0';
 }
 inline std::string str(const char* s, const char* field) {
   need(s, field);

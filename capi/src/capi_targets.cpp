@@ -64,7 +64,7 @@ EOIR_API eoir_status eoir_truth_get(eoir_engine engine, const char* sensor, size
     full.struct_size = size;
     eoir_truth* const caller = out;
     out = &full;
-    std::snprintf(out->object, sizeof out->object, "%s", row.object.c_str());
+    capi::copy_text(out->object, row.object);
     out->pixel_x = t.pixel_x;
     out->pixel_y = t.pixel_y;
     out->range_m = t.range_km * 1e3;

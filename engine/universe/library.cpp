@@ -1,5 +1,6 @@
 #include "universe/library.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/error.hpp"
@@ -28,14 +29,22 @@ Library Library::load(const std::string& data_dir) {
 }
 
 std::shared_ptr<const StarCatalog> Library::star_catalog(const std::string& csv_path, double epoch_julian_year) const {
-  const auto key = std::make_pair(csv_path, csv_path.empty() ? 2000.0 : epoch_julian_year);
   std::lock_guard<std::mutex> lock(catalogues_->mutex);
-  auto& slot = catalogues_->loaded[key];
-  if (!slot)
-    slot = std::make_shared<const StarCatalog>(csv_path.empty()
-                                                   ? StarCatalog::load_binary(data_dir + "/stars/hipparcos_tycho_v9.eoirstars")
-                                                   : StarCatalog::load_csv(csv_path, epoch_julian_year));
-  return slot;
+  auto& recent = catalogues_->recent;
+  auto it = std::find_if(recent.begin(), recent.end(), [&](const auto& entry) { return entry.first == csv_path; });
+  if (it != recent.end()) {
+    recent.splice(recent.begin(), recent, it);
+  } else {
+    recent.emplace_front(csv_path, std::make_shared<const StarCatalog>(
+                                       csv_path.empty()
+                                           ? StarCatalog::load_binary(data_dir + "/stars/hipparcos_tycho_v9.eoirstars")
+                                           : StarCatalog::load_csv(csv_path, epoch_julian_year)));
+    if (recent.size() > kCachedStarCatalogues) recent.pop_back();
+  }
+  const std::shared_ptr<const StarCatalog>& cached = recent.front().second;
+  // The binary catalogue has its own epoch; a CSV's positions are at the one asked.
+  if (csv_path.empty() || cached->epoch_julian_year() == epoch_julian_year) return cached;
+  return std::make_shared<const StarCatalog>(cached->at_epoch(epoch_julian_year));
 }
 
 const BodyMaps* Library::maps_of(CentralBody body) const {

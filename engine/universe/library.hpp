@@ -5,6 +5,7 @@
 // predefined composite satellites (4.3.3). Loaded once, when a
 // world first needs it; shared read-only by every world built from it.
 #pragma once
+#include <list>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -37,13 +38,17 @@ struct Library {
   // copies of this library): csv_path "" is the data folder's
   // stars/hipparcos_tycho_v9.eoirstars, else a user CSV whose positions are
   // at epoch_julian_year. Throws io / corrupt_file naming the file and line.
+  // One copy of each file's stars serves every epoch; the
+  // kCachedStarCatalogues files used last are kept (a catalogue in use stays
+  // alive with its users).
   std::shared_ptr<const StarCatalog> star_catalog(const std::string& csv_path = "",
                                                   double epoch_julian_year = 2000.0) const;
+  static constexpr std::size_t kCachedStarCatalogues = 4;
 
  private:
   struct Catalogues {
     std::mutex mutex;
-    std::map<std::pair<std::string, double>, std::shared_ptr<const StarCatalog>> loaded;
+    std::list<std::pair<std::string, std::shared_ptr<const StarCatalog>>> recent;  // most recent first
   };
   std::shared_ptr<Catalogues> catalogues_ = std::make_shared<Catalogues>();
 };

@@ -9,12 +9,12 @@
 #include <cstring>
 #include <iterator>
 #include <sstream>
-#include <unordered_map>
-#include <unordered_set>
+#include <string_view>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "core/read_file.hpp"
+#include "core/utf8.hpp"
 
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
 #error "the binary star catalogue is little-endian; add byte swapping for this host"
@@ -51,23 +51,30 @@ T read_le(const char* p) {
   throw Error(Status::corrupt_file, path + ": " + what);
 }
 
-std::string trim(const std::string& s) {
+std::string_view trim(std::string_view s) {
   const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return {};
+  if (first == std::string_view::npos) return {};
   const auto last = s.find_last_not_of(" \t\r");
   return s.substr(first, last - first + 1);
 }
 
-std::vector<std::string> split_commas(const std::string& line) {
-  std::vector<std::string> fields;
-  std::size_t start = 0;
-  for (;;) {
-    const auto comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
+// Calls line(text, number) for each line of `bytes` (1-based numbers), in
+// place: no copies.
+template <typename F>
+void for_each_line(const std::string& bytes, F&& line) {
+  long number = 0;
+  for (std::size_t pos = 0; pos < bytes.size();) {
+    const std::size_t end = std::min(bytes.find('\n', pos), bytes.size());
+    line(std::string_view(bytes).substr(pos, end - pos), ++number);
+    pos = end + 1;
   }
-  return fields;
+}
+
+// A field's text for a message: at most 40 bytes, cut at a character boundary.
+std::string shown(std::string_view text) {
+  constexpr std::size_t kMax = 40;
+  if (text.size() <= kMax) return std::string(text);
+  return std::string(text.substr(0, utf8_prefix_length(text, kMax))) + "...";
 }
 
 double epoch_tdb_julian_year(const EngineTime& t) {
@@ -93,27 +100,32 @@ ApparentPlaceContext context_from_astrom(const eraASTROM& astrom, const EngineTi
 
 }  // namespace
 
-void StarCatalog::finish() {
-  brightest_v_mag_ = faintest_v_mag_ = 0.0;
-  if (!stars_.empty()) {
-    const auto [lo, hi] = std::minmax_element(stars_.begin(), stars_.end(), [](const CatalogStar& a,
-                                                                             const CatalogStar& b) {
+void StarCatalog::Stars::finish() {
+  brightest_v_mag = faintest_v_mag = 0.0;
+  if (!stars.empty()) {
+    const auto [lo, hi] = std::minmax_element(stars.begin(), stars.end(), [](const CatalogStar& a,
+                                                                           const CatalogStar& b) {
       return a.v_mag < b.v_mag;
     });
-    brightest_v_mag_ = lo->v_mag;
-    faintest_v_mag_ = hi->v_mag;
+    brightest_v_mag = lo->v_mag;
+    faintest_v_mag = hi->v_mag;
   }
-  sorted_by_v_ = std::is_sorted(stars_.begin(), stars_.end(),
-                                [](const CatalogStar& a, const CatalogStar& b) { return a.v_mag < b.v_mag; });
-  unit_vectors_.resize(stars_.size());
-  max_proper_motion_mas_yr_ = 0.0;
-  for (std::size_t i = 0; i < stars_.size(); ++i) {
-    const CatalogStar& s = stars_[i];
-    unit_vectors_[i] = Vec3(std::cos(s.dec_rad) * std::cos(s.ra_rad), std::cos(s.dec_rad) * std::sin(s.ra_rad),
-                            std::sin(s.dec_rad));
-    max_proper_motion_mas_yr_ =
-        std::max(max_proper_motion_mas_yr_, std::hypot(s.pm_ra_cosdec_mas_per_yr, s.pm_dec_mas_per_yr));
+  sorted_by_v = std::is_sorted(stars.begin(), stars.end(),
+                               [](const CatalogStar& a, const CatalogStar& b) { return a.v_mag < b.v_mag; });
+  unit_vectors.resize(stars.size());
+  max_proper_motion_mas_yr = 0.0;
+  for (std::size_t i = 0; i < stars.size(); ++i) {
+    const CatalogStar& s = stars[i];
+    unit_vectors[i] = Vec3(std::cos(s.dec_rad) * std::cos(s.ra_rad), std::cos(s.dec_rad) * std::sin(s.ra_rad),
+                           std::sin(s.dec_rad));
+    max_proper_motion_mas_yr =
+        std::max(max_proper_motion_mas_yr, std::hypot(s.pm_ra_cosdec_mas_per_yr, s.pm_dec_mas_per_yr));
   }
+}
+
+StarCatalog StarCatalog::at_epoch(double epoch_julian_year) const {
+  require_finite(epoch_julian_year, "star_catalogue.epoch_julian_year");
+  return StarCatalog(data_, epoch_julian_year);
 }
 
 StarCatalog StarCatalog::load_binary(const std::string& path) {
@@ -143,15 +155,14 @@ StarCatalog StarCatalog::load_binary(const std::string& path) {
                       " name bytes need " + std::to_string(needed) + " bytes, the file has " +
                       std::to_string(file_bytes));
 
-  StarCatalog catalogue;
-  catalogue.epoch_julian_year_ = epoch;
-  catalogue.source_.assign(p + kFixedHeaderBytes, source_bytes);
+  Stars catalogue;
+  catalogue.source.assign(p + kFixedHeaderBytes, source_bytes);
   const char* names = p + header_bytes + std::size_t{count} * kRecordBytes;
-  catalogue.stars_.resize(count);
+  catalogue.stars.resize(count);
   char id[16] = {'H', 'T'};
   for (std::uint32_t i = 0; i < count; ++i) {
     const char* r = p + header_bytes + std::size_t{i} * kRecordBytes;
-    CatalogStar& s = catalogue.stars_[i];
+    CatalogStar& s = catalogue.stars[i];
     s.ra_rad = read_le<double>(r + 0);
     s.dec_rad = read_le<double>(r + 8);
     s.pm_ra_cosdec_mas_per_yr = read_le<float>(r + 16);
@@ -184,33 +195,52 @@ StarCatalog StarCatalog::load_binary(const std::string& path) {
       corrupt(path, "record " + std::to_string(i) + ": non-finite value");
   }
   catalogue.finish();
-  return catalogue;
+  return StarCatalog(std::make_shared<const Stars>(std::move(catalogue)), epoch);
 }
 
 StarCatalog StarCatalog::load_csv(const std::string& path, double epoch_julian_year) {
   require_finite(epoch_julian_year, "star_catalogue.epoch_julian_year");
-  std::istringstream in(read_file(path, kMaxFileBytes, "star catalogues"));
+  const std::string bytes = read_file(path, kMaxFileBytes, "star catalogues");
 
   static const char* const kColumns[] = {"id",           "ra_deg",  "dec_deg", "pm_ra_mas_yr", "pm_dec_mas_yr",
                                          "parallax_mas", "v_mag",   "b_v"};
   constexpr std::size_t kColumnCount = sizeof kColumns / sizeof kColumns[0];
+  // Memory stays a small multiple of the file size: fields are views into
+  // the file, the stars are reserved once (a data line has at least 16
+  // bytes) and duplicate ids are found by sorting indices.
+  std::size_t data_lines = 0;
+  for_each_line(bytes, [&](std::string_view line, long) {
+    const std::string_view content = trim(line);
+    data_lines += !content.empty() && content[0] != '#';
+  });
+  Stars catalogue;
+  catalogue.source = path;
+  catalogue.stars.reserve(std::min(data_lines > 0 ? data_lines - 1 : 0, kMaxCsvStars));
+  std::vector<std::uint32_t> line_of_star;
+  line_of_star.reserve(catalogue.stars.capacity());
+
   std::size_t column_of[kColumnCount];
   std::size_t header_fields = 0;
   bool have_header = false;
-
-  StarCatalog catalogue;
-  catalogue.epoch_julian_year_ = epoch_julian_year;
-  catalogue.source_ = path;
-  std::unordered_map<std::string, long> first_line_of_id;
-  std::string line;
-  long line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    const std::string content = trim(line);
-    if (content.empty() || content[0] == '#') continue;
+  std::vector<std::string_view> fields;
+  std::string field_text;  // a field NUL-terminated for strtod
+  for_each_line(bytes, [&](std::string_view line, long line_number) {
+    const std::string_view content = trim(line);
+    if (content.empty() || content[0] == '#') return;
     const std::string where = path + ":" + std::to_string(line_number) + ": ";
-    if (content.find('\0') != std::string::npos) throw Error(Status::corrupt_file, where + "line: a NUL byte (not text)");
-    const auto fields = split_commas(content);
+    if (content.find('\0') != std::string_view::npos)
+      throw Error(Status::corrupt_file, where + "line: a NUL byte (not text)");
+    const std::size_t count = 1 + static_cast<std::size_t>(std::count(content.begin(), content.end(), ','));
+    if (count > kMaxCsvColumns)
+      throw Error(Status::corrupt_file, where + (have_header ? "line: " : "header: ") + std::to_string(count) +
+                                            " columns, at most " + std::to_string(kMaxCsvColumns));
+    fields.clear();
+    for (std::size_t start = 0;;) {
+      const std::size_t comma = content.find(',', start);
+      fields.push_back(trim(content.substr(start, comma == std::string_view::npos ? comma : comma - start)));
+      if (comma == std::string_view::npos) break;
+      start = comma + 1;
+    }
     if (!have_header) {
       header_fields = fields.size();
       for (std::size_t c = 0; c < kColumnCount; ++c) {
@@ -220,35 +250,37 @@ StarCatalog StarCatalog::load_csv(const std::string& path, double epoch_julian_y
         column_of[c] = static_cast<std::size_t>(it - fields.begin());
       }
       have_header = true;
-      continue;
+      return;
     }
     if (fields.size() != header_fields)
       throw Error(Status::corrupt_file, where + "line: " + std::to_string(fields.size()) + " fields, the header has " +
                                             std::to_string(header_fields));
+    if (catalogue.stars.size() == kMaxCsvStars)
+      throw Error(Status::corrupt_file, where + "line: more than " + std::to_string(kMaxCsvStars) +
+                                            " stars, the limit of a catalogue");
     auto number = [&](std::size_t c, double lo, double hi) {
-      const std::string& text = fields[column_of[c]];
+      const std::string_view text = fields[column_of[c]];
       if (text.empty()) throw Error(Status::corrupt_file, where + kColumns[c] + ": empty");
+      field_text.assign(text);
       char* end = nullptr;
       errno = 0;
-      const double value = std::strtod(text.c_str(), &end);
-      if (end == text.c_str() || *end != '\0' || errno == ERANGE)
-        throw Error(Status::corrupt_file, where + kColumns[c] + ": '" + text + "' is not a number");
+      const double value = std::strtod(field_text.c_str(), &end);
+      if (end == field_text.c_str() || *end != '\0' || errno == ERANGE)
+        throw Error(Status::corrupt_file, where + kColumns[c] + ": '" + shown(text) + "' is not a number");
       if (!std::isfinite(value))
-        throw Error(Status::corrupt_file, where + kColumns[c] + ": '" + text + "' is not a finite number");
+        throw Error(Status::corrupt_file, where + kColumns[c] + ": '" + shown(text) + "' is not a finite number");
       if (value < lo || value > hi) {
         std::ostringstream msg;
-        msg << where << kColumns[c] << ": " << text << " outside [" << lo << ", " << hi << "]";
+        msg << where << kColumns[c] << ": " << shown(text) << " outside [" << lo << ", " << hi << "]";
         throw Error(Status::corrupt_file, msg.str());
       }
       return value;
     };
+    const std::string_view id = fields[column_of[0]];
+    if (id.empty()) throw Error(Status::corrupt_file, where + "id: empty");
+    const std::string problem = printable_utf8_problem(id);  // ids travel into truth (JSON, FITS)
+    if (!problem.empty()) throw Error(Status::corrupt_file, where + "id: " + problem);
     CatalogStar s;
-    s.id = fields[column_of[0]];
-    if (s.id.empty()) throw Error(Status::corrupt_file, where + "id: empty");
-    const auto [it, inserted] = first_line_of_id.emplace(s.id, line_number);
-    if (!inserted)
-      throw Error(Status::corrupt_file,
-                  where + "id: '" + s.id + "' duplicates line " + std::to_string(it->second));
     const double ra_deg = number(1, 0.0, 360.0);
     if (ra_deg >= 360.0) throw Error(Status::corrupt_file, where + "ra_deg: must be < 360");
     s.ra_rad = ra_deg * constants::rad_per_deg;
@@ -258,33 +290,58 @@ StarCatalog StarCatalog::load_csv(const std::string& path, double epoch_julian_y
     s.parallax_mas = number(5, 0.0, kMaxParallax_mas);
     s.v_mag = number(6, kMinVMag, kMaxVMag);
     s.b_v_mag = number(7, kMinBV, kMaxBV);
-    catalogue.stars_.push_back(std::move(s));
-  }
+    s.id.assign(id);
+    catalogue.stars.push_back(std::move(s));
+    line_of_star.push_back(static_cast<std::uint32_t>(line_number));
+  });
   if (!have_header) throw Error(Status::corrupt_file, path + ":1: header: no header line (id,ra_deg,dec_deg,...)");
+
+  // Duplicate ids: the first line that repeats an earlier one.
+  const std::vector<CatalogStar>& stars = catalogue.stars;
+  std::vector<std::uint32_t> order(stars.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const int c = stars[a].id.compare(stars[b].id);
+    return c != 0 ? c < 0 : a < b;
+  });
+  std::size_t repeat = stars.size(), first = 0;
+  for (std::size_t k = 1, group = 0; k < order.size(); ++k) {
+    if (stars[order[k]].id != stars[order[group]].id) {
+      group = k;  // the earliest star of the next id
+    } else if (k == group + 1 && order[k] < repeat) {
+      repeat = order[k];
+      first = order[group];
+    }
+  }
+  if (repeat < stars.size())
+    throw Error(Status::corrupt_file, path + ":" + std::to_string(line_of_star[repeat]) + ": id: '" +
+                                          shown(stars[repeat].id) + "' duplicates line " +
+                                          std::to_string(line_of_star[first]));
   catalogue.finish();
-  return catalogue;
+  return StarCatalog(std::make_shared<const Stars>(std::move(catalogue)), epoch_julian_year);
 }
 
 StarSelection StarCatalog::select_brighter_than(double limiting_v_mag) const {
   if (std::isnan(limiting_v_mag)) throw Error(Status::out_of_range, "limiting_v_mag: NaN");
   StarSelection selection;
   selection.limiting_v_mag = limiting_v_mag;
-  if (sorted_by_v_) {
-    const auto end = std::upper_bound(stars_.begin(), stars_.end(), limiting_v_mag,
+  const std::vector<CatalogStar>& stars = data_->stars;
+  if (data_->sorted_by_v) {
+    const auto end = std::upper_bound(stars.begin(), stars.end(), limiting_v_mag,
                                       [](double v, const CatalogStar& s) { return v < s.v_mag; });
-    selection.indices.resize(static_cast<std::size_t>(end - stars_.begin()));
+    selection.indices.resize(static_cast<std::size_t>(end - stars.begin()));
     for (std::size_t i = 0; i < selection.indices.size(); ++i) selection.indices[i] = i;
   } else {
-    for (std::size_t i = 0; i < stars_.size(); ++i)
-      if (stars_[i].v_mag <= limiting_v_mag) selection.indices.push_back(i);
+    for (std::size_t i = 0; i < stars.size(); ++i)
+      if (stars[i].v_mag <= limiting_v_mag) selection.indices.push_back(i);
   }
   // Magnitudes are given to 0.01 mag: a limit within kCatalogueCutTolerance
   // of the faintest star is the catalogue's own cut (V <= 9 for Hipparcos/Tycho).
-  if (stars_.empty() || limiting_v_mag > faintest_v_mag_ + kCatalogueCutTolerance_mag) {
+  if (stars.empty() || limiting_v_mag > faintest_v_mag() + kCatalogueCutTolerance_mag) {
     selection.limit_beyond_catalogue = true;
     std::ostringstream msg;
     msg << "limiting_v_mag: " << limiting_v_mag << " is fainter than the faintest star of the catalogue (V = "
-        << faintest_v_mag_ << "); stars between the two are missing from the scene";
+        << faintest_v_mag() << "); stars between the two are missing from the scene";
     selection.warning = msg.str();
   }
   return selection;

@@ -6,7 +6,9 @@
 //  - a user catalogue in CSV, loaded with load_csv(). Columns (header line
 //    required, any order, extra columns ignored, '#' comments and blank lines
 //    skipped):
-//      id             text, unique, no comma
+//      id             text, unique, no comma, valid UTF-8 without control
+//                     characters (a truth row gives its first 63 bytes,
+//                     cut at a character boundary)
 //      ra_deg         ICRS right ascension at the epoch, [0, 360)
 //      dec_deg        ICRS declination at the epoch, [-90, 90]
 //      pm_ra_mas_yr   mu_alpha* = mu_alpha cos(delta) [mas/yr] (as Hipparcos
@@ -17,6 +19,9 @@
 //      b_v            Johnson B-V, [kMinBV, kMaxBV]
 //    |proper motion| components at most kMaxProperMotion_mas_yr.
 //    Bad input throws eoir::Error(Status::corrupt_file, "file:line: field: why").
+//    Bounds: at most kMaxCsvColumns columns and kMaxCsvStars stars in a file
+//    of at most 256 MiB; loading holds the file and about 150 bytes per star
+//    (at least 16 bytes of file each): at most about 11 times the file size.
 //
 // Apparent place (the direction in which the observer sees the star, in the
 // engine's geocentric J2000 = GCRS axes) follows ERFA's astrometry chain for
@@ -32,6 +37,7 @@
 #include <Eigen/Geometry>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -51,6 +57,9 @@ constexpr double kMaxProperMotion_mas_yr = 1.0e5;
 // A limiting magnitude up to this much fainter than the catalogue's faintest
 // star is not reported as beyond the catalogue (magnitudes are given to 0.01).
 constexpr double kCatalogueCutTolerance_mag = 0.05;
+// Bounds of user catalogues (CSV).
+constexpr std::size_t kMaxCsvColumns = 1024;
+constexpr std::size_t kMaxCsvStars = 4000000;
 
 struct CatalogStar {
   std::string id;                        // "HT<n>" for the converted catalogue (n = rank in V), user id otherwise
@@ -86,32 +95,42 @@ class StarCatalog {
   // DR3).
   static StarCatalog load_csv(const std::string& path, double epoch_julian_year = 2000.0);
 
-  const std::vector<CatalogStar>& stars() const { return stars_; }
-  std::size_t size() const { return stars_.size(); }
+  // The same stars with their positions at another epoch; shares the stars
+  // (no copy).
+  StarCatalog at_epoch(double epoch_julian_year) const;
+
+  const std::vector<CatalogStar>& stars() const { return data_->stars; }
+  std::size_t size() const { return data_->stars.size(); }
   // Epoch of positions and origin of proper motion [TDB Julian year].
   double epoch_julian_year() const { return epoch_julian_year_; }
   // Where the data came from (the binary header's source text, or the CSV path).
-  const std::string& source() const { return source_; }
-  double brightest_v_mag() const { return brightest_v_mag_; }
-  double faintest_v_mag() const { return faintest_v_mag_; }
+  const std::string& source() const { return data_->source; }
+  double brightest_v_mag() const { return data_->brightest_v_mag; }
+  double faintest_v_mag() const { return data_->faintest_v_mag; }
 
   // All stars with V <= limiting_v_mag. Throws out_of_range for NaN.
   StarSelection select_brighter_than(double limiting_v_mag) const;
   // Unit vectors of the catalogue positions (ICRS, at the epoch), for culling.
-  const std::vector<Vec3>& unit_vectors() const { return unit_vectors_; }
+  const std::vector<Vec3>& unit_vectors() const { return data_->unit_vectors; }
   // The largest total proper motion of the catalogue [mas/yr].
-  double max_proper_motion_mas_yr() const { return max_proper_motion_mas_yr_; }
+  double max_proper_motion_mas_yr() const { return data_->max_proper_motion_mas_yr; }
 
  private:
-  void finish();
-  std::vector<CatalogStar> stars_;
+  // Everything but the epoch, shared by the copies at other epochs.
+  struct Stars {
+    std::vector<CatalogStar> stars;
+    std::string source;
+    double brightest_v_mag = 0.0;
+    double faintest_v_mag = 0.0;
+    bool sorted_by_v = false;
+    std::vector<Vec3> unit_vectors;
+    double max_proper_motion_mas_yr = 0.0;
+    void finish();
+  };
+  StarCatalog(std::shared_ptr<const Stars> data, double epoch_julian_year)
+      : data_(std::move(data)), epoch_julian_year_(epoch_julian_year) {}
+  std::shared_ptr<const Stars> data_;
   double epoch_julian_year_ = 2000.0;
-  std::string source_;
-  double brightest_v_mag_ = 0.0;
-  double faintest_v_mag_ = 0.0;
-  bool sorted_by_v_ = false;
-  std::vector<Vec3> unit_vectors_;
-  double max_proper_motion_mas_yr_ = 0.0;
 };
 
 // The observer-dependent part of the apparent-place chain for one instant

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/limits.hpp"
+#include "core/utf8.hpp"
 #include "universe/central_bodies.hpp"
 #include "universe/spectrum_table.hpp"
 
@@ -18,26 +19,8 @@ void check_limit(std::size_t have, std::size_t limit, const char* what, const ch
 // Names travel into files (.scd, FITS, JSON): valid UTF-8 without control
 // characters.
 void check_name_text(const std::string& name) {
-  const auto* s = reinterpret_cast<const unsigned char*>(name.data());
-  const std::size_t n = name.size();
-  for (std::size_t i = 0; i < n;) {
-    const unsigned char c = s[i];
-    if (c < 0x20 || c == 0x7f)
-      throw Error(Status::out_of_range, "name: control character at byte " + std::to_string(i));
-    std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
-    bool ok = len > 0 && i + len <= n;
-    for (std::size_t k = 1; ok && k < len; ++k) ok = (s[i + k] >> 6) == 0x2;
-    if (ok && len > 1) {  // no overlong forms, surrogates or code points past U+10FFFF
-      const unsigned cp = len == 2 ? ((c & 0x1fu) << 6) | (s[i + 1] & 0x3fu)
-                          : len == 3 ? ((c & 0x0fu) << 12) | ((s[i + 1] & 0x3fu) << 6) | (s[i + 2] & 0x3fu)
-                                     : ((c & 0x07u) << 18) | ((s[i + 1] & 0x3fu) << 12) | ((s[i + 2] & 0x3fu) << 6) |
-                                           (s[i + 3] & 0x3fu);
-      const unsigned min_cp = len == 2 ? 0x80u : len == 3 ? 0x800u : 0x10000u;
-      ok = cp >= min_cp && cp <= 0x10ffffu && !(cp >= 0xd800u && cp <= 0xdfffu);
-    }
-    if (!ok) throw Error(Status::out_of_range, "name: not valid UTF-8 at byte " + std::to_string(i));
-    i += len;
-  }
+  const std::string problem = printable_utf8_problem(name);
+  if (!problem.empty()) throw Error(Status::out_of_range, "name: " + problem);
 }
 }  // namespace
 

@@ -75,11 +75,44 @@ int main(void) {
           "huge.csv' is larger than 256 MiB");
   }
   FAILS(eoir_set_string(e, "Stars", "catalog_file", at("absent.csv")), EOIR_ERR_IO, "absent.csv");
+  /* Issue 25, item 2: an id that is not UTF-8 (Latin-1 e-acute) was
+   * accepted and aborted the CLI's run when its truth was written. */
+  FAILS(eoir_set_string(e, "Stars", "catalog_file", catalogue("latin1.csv", "caf\xe9,10,10,0,0,1,5,0.5\n")),
+        EOIR_ERR_CORRUPT_FILE, "latin1.csv:2: id: not valid UTF-8 at byte 3");
 
   /* the refusals left the good catalogue in place, and it renders */
   OK(eoir_get_string(e, "Stars", "catalog_file", name, sizeof name));
   CHECK(strcmp(name, at("good.csv")) == 0);
   OK(eoir_render(e, "Cam"));
+
+  {
+    /* Issue 25, item 2: a valid id longer than eoir_truth.object's 63 bytes
+     * is cut at a character boundary, not inside the 2-byte e-acute at
+     * bytes 62-63 (which left invalid UTF-8 in the truth). */
+    char id[80], rows[256];
+    eoir_image_info info;
+    eoir_truth t;
+    size_t n = 0, i;
+    int found = 0;
+    memset(&info, 0, sizeof info);
+    info.struct_size = sizeof info;
+    OK(eoir_image_info_get(e, "Cam", EOIR_IMAGE_SENSOR_MEAN, &info));
+    memset(id, 'a', 62);
+    strcpy(id + 62, "\xc3\xa9toile");
+    snprintf(rows, sizeof rows, "%s,%.9f,%.9f,0,0,0,5,0.6\n", id, info.boresight_ra_deg, info.boresight_dec_deg);
+    OK(eoir_set_string(e, "Stars", "catalog_file", catalogue("long_id.csv", rows)));
+    OK(eoir_render(e, "Cam"));
+    OK(eoir_truth_count(e, "Cam", &n));
+    for (i = 0; i < n; ++i) {
+      memset(&t, 0, sizeof t);
+      t.struct_size = sizeof t;
+      OK(eoir_truth_get(e, "Cam", i, &t));
+      if (t.kind != EOIR_TRUTH_STAR) continue;
+      found = 1;
+      CHECK(strlen(t.object) == 62 && memcmp(t.object, id, 62) == 0);
+    }
+    CHECK(found);
+  }
 
   eoir_engine_destroy(e);
   {

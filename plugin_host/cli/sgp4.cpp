@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 
 namespace eoir::cli {
 namespace {
@@ -34,51 +35,120 @@ double gstime(double jdut1) {
 }
 
 // ------------------------------------------------------------------ TLE text
+// The format (CelesTrak, "NORAD Two-Line Element Set Format"): 69 fixed
+// columns per line; every field is checked against its pattern before it is
+// converted, so no text reaches strtod but digits, one '.' and a sign.
 [[noreturn]] void bad(int line, const std::string& field, const std::string& why) {
   throw std::invalid_argument("line " + std::to_string(line) + " " + field + ": " + why);
 }
 
-std::string cols(const std::string& s, std::size_t a, std::size_t b) {  // [a, b), 0-based
-  return a < s.size() ? s.substr(a, std::min(b, s.size()) - a) : std::string();
+bool digit(char c) { return c >= '0' && c <= '9'; }
+
+// A field at 0-based columns [a, a + strlen(pattern)) of one line.
+struct Field {
+  const std::string& text;
+  int line;
+  std::size_t a;
+  const char* name;
+  const char* pattern;
+};
+
+// Checks `f` against its pattern: 'N' a digit (leading ones may be blank,
+// down to the last before a '.' or the end), 'S' a sign (' ', '+' or '-'),
+// 'E' an exponent sign ('+' or '-'), anything else itself. Returns the text.
+std::string checked(const Field& f) {
+  const std::string p = f.pattern;
+  const std::string t = f.text.substr(f.a, p.size());
+  bool leading = true;  // still in the blanks allowed before the first digit
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const char c = t[i];
+    bool ok;
+    if (p[i] == 'N') {
+      const bool last_of_run = i + 1 == p.size() || p[i + 1] != 'N';
+      ok = digit(c) || (leading && c == ' ' && !last_of_run);
+      if (digit(c)) leading = false;
+    } else {
+      ok = p[i] == 'S' ? (c == ' ' || c == '+' || c == '-') : p[i] == 'E' ? (c == '+' || c == '-') : c == p[i];
+      leading = p[i] == 'S';
+    }
+    if (!ok) bad(f.line, f.name, "'" + t + "' is not of the form " + p);
+  }
+  return t;
 }
 
-double number(const std::string& text, int line, const std::string& field) {
-  std::string t = text;
-  while (!t.empty() && t.back() == ' ') t.pop_back();
-  std::size_t start = 0;
-  while (start < t.size() && t[start] == ' ') ++start;
-  t = t.substr(start);
-  if (t.empty()) bad(line, field, "is empty");
-  char* end = nullptr;
-  const double v = std::strtod(t.c_str(), &end);
-  if (end == nullptr || *end != '\0' || !std::isfinite(v)) bad(line, field, "'" + text + "' is not a number");
+// The value of a checked decimal field (digits, blanks, '.', a sign).
+double value_of(const std::string& t) {
+  std::string s;
+  for (char c : t)
+    if (c != ' ') s += c;
+  return std::strtod(s.c_str(), nullptr);
+}
+
+// A checked decimal field within [lo, hi] or, with hi_excluded, [lo, hi).
+double decimal(const Field& f, int lo, int hi, bool hi_excluded = false) {
+  const std::string t = checked(f);
+  const double v = value_of(t);
+  if (v < lo || v > hi || (hi_excluded && v == hi))
+    bad(f.line, f.name, t.substr(t.find_first_not_of(' ')) + " outside [" + std::to_string(lo) + ", " +
+                            std::to_string(hi) + (hi_excluded ? ")" : "]"));
   return v;
 }
 
-long integer(const std::string& text, int line, const std::string& field) {
-  const double v = number(text, line, field);
-  if (v != std::floor(v)) bad(line, field, "'" + text + "' is not an integer");
-  return static_cast<long>(v);
+// "SNNNNNEN": sign, five digits of a fraction (decimal point assumed) and a
+// power of ten, as python-sgp4 computes it.
+double assumed_point(const Field& f) {
+  const std::string t = checked(f);
+  std::string digits = t.substr(1, 5);
+  for (char& c : digits)
+    if (c == ' ') c = '0';
+  const double mantissa = std::strtod(((t[0] == '-' ? "-." : ".") + digits).c_str(), nullptr);
+  return mantissa * std::pow(10.0, static_cast<double>(t[6] == '-' ? '0' - t[7] : t[7] - '0'));
 }
 
-// Satellite numbers: 5 digits, or Alpha-5 (a letter and 4 digits; I and O skipped).
-long alpha5(const std::string& s, int line) {
-  if (s.size() != 5) bad(line, "satellite number", "must have 5 characters");
-  if (!std::isalpha(static_cast<unsigned char>(s[0]))) return integer(s, line, "satellite number");
-  const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(s[0])));
-  long n = c - 'A' + 10;
-  n -= c > 'I';
-  n -= c > 'O';
-  return n * 10000 + integer(s.substr(1), line, "satellite number");
+// Satellite numbers: 5 digits (leading ones may be blank), or Alpha-5 (a
+// letter, I and O skipped, and 4 digits: A0001 = 100001).
+long parse_satellite_number(const std::string& l, int line) {
+  const std::string t = l.substr(2, 5);
+  const char c = t[0];
+  if (c >= 'A' && c <= 'Z' && c != 'I' && c != 'O') {
+    if (!(digit(t[1]) && digit(t[2]) && digit(t[3]) && digit(t[4])))
+      bad(line, "satellite number", "'" + t + "' is not 5 digits or a letter and 4 digits (Alpha-5)");
+    const long letter = c - 'A' + 10 - (c > 'I') - (c > 'O');
+    return letter * 10000 + std::strtol(t.c_str() + 1, nullptr, 10);
+  }
+  std::size_t i = 0;
+  while (i < 4 && t[i] == ' ') ++i;
+  for (std::size_t k = i; k < 5; ++k)
+    if (!digit(t[k])) bad(line, "satellite number", "'" + t + "' is not 5 digits or a letter and 4 digits (Alpha-5)");
+  return std::strtol(t.c_str() + i, nullptr, 10);
 }
 
 int checksum(const std::string& line) {
   int sum = 0;
   for (std::size_t i = 0; i < 68 && i < line.size(); ++i) {
-    if (std::isdigit(static_cast<unsigned char>(line[i]))) sum += line[i] - '0';
+    if (digit(line[i])) sum += line[i] - '0';
     if (line[i] == '-') sum += 1;
   }
   return sum % 10;
+}
+
+// 69 columns (line ends stripped), the line number, blanks between fields
+// and the checksum digit in column 69 (matching the line, if asked).
+std::string columns_of(const std::string& text, int line, bool check_checksum, const std::vector<std::size_t>& blanks) {
+  std::string l = text;
+  while (!l.empty() && (l.back() == '\r' || l.back() == '\n')) l.pop_back();
+  const char* layout = line == 1 ? "'1 NNNNNC NNNNNAAA NNNNN.NNNNNNNN +.NNNNNNNN +NNNNN-N +NNNNN-N N NNNNN'"
+                                 : "'2 NNNNN NNN.NNNN NNN.NNNN NNNNNNN NNN.NNNN NNN.NNNN NN.NNNNNNNNNNNNNN'";
+  if (l.size() != 69)
+    bad(line, "format", std::to_string(l.size()) + " columns, a TLE line has 69 (" + layout + ")");
+  bool ok = l[0] == static_cast<char>('0' + line);
+  for (std::size_t i : blanks) ok = ok && l[i] == ' ';
+  if (!ok) bad(line, "format", std::string("not a TLE line ") + std::to_string(line) + " (" + layout + ")");
+  if (!digit(l[68])) bad(line, "checksum", "column 69 is '" + std::string(1, l[68]) + "', not a digit");
+  if (check_checksum && l[68] - '0' != checksum(l))
+    bad(line, "checksum", "column 69 is " + std::string(1, l[68]) + " but the line sums to " +
+                              std::to_string(checksum(l)));
+  return l;
 }
 
 // Vallado's days2mdhms and jday.
@@ -107,60 +177,54 @@ double jday(int year, int mon, int day, int hr, int minute, double sec) {
 }  // namespace
 
 // ---------------------------------------------------------------- parsing
-Sgp4 Sgp4::from_tle(const std::string& line1_in, const std::string& line2_in, bool check_checksum) {
-  std::string l1 = line1_in, l2 = line2_in;
-  while (!l1.empty() && (l1.back() == ' ' || l1.back() == '\r' || l1.back() == '\n')) l1.pop_back();
-  while (!l2.empty() && (l2.back() == ' ' || l2.back() == '\r' || l2.back() == '\n')) l2.pop_back();
-  // The fixed columns of the format (python-sgp4's io.twoline2rv checks the same).
-  if (!(l1.size() >= 64 && l1.compare(0, 2, "1 ") == 0 && l1[8] == ' ' && l1[23] == '.' && l1[32] == ' ' &&
-        l1[34] == '.' && l1[43] == ' ' && l1[52] == ' ' && l1[61] == ' ' && l1[63] == ' '))
-    bad(1, "format", "not a TLE line 1 ('1 NNNNNC NNNNNAAA NNNNN.NNNNNNNN +.NNNNNNNN +NNNNN-N +NNNNN-N N NNNNN')");
-  if (!(l2.size() >= 69 && l2.compare(0, 2, "2 ") == 0 && l2[7] == ' ' && l2[11] == '.' && l2[16] == ' ' &&
-        l2[20] == '.' && l2[25] == ' ' && l2[33] == ' ' && l2[37] == '.' && l2[42] == ' ' && l2[46] == '.' &&
-        l2[51] == ' '))
-    bad(2, "format", "not a TLE line 2 ('2 NNNNN NNN.NNNN NNN.NNNN NNNNNNN NNN.NNNN NNN.NNNN NN.NNNNNNNNNNNNNN')");
-  if (check_checksum) {
-    if (l1.size() >= 69 && std::isdigit(static_cast<unsigned char>(l1[68])) && l1[68] - '0' != checksum(l1))
-      bad(1, "checksum", "column 69 is " + std::string(1, l1[68]) + " but the line sums to " +
-                             std::to_string(checksum(l1)));
-    if (std::isdigit(static_cast<unsigned char>(l2[68])) && l2[68] - '0' != checksum(l2))
-      bad(2, "checksum", "column 69 is " + std::string(1, l2[68]) + " but the line sums to " +
-                             std::to_string(checksum(l2)));
-  }
+Sgp4 Sgp4::from_tle(const std::string& line1, const std::string& line2, bool check_checksum) {
+  const std::string l1 = columns_of(line1, 1, check_checksum, {1, 8, 17, 32, 43, 52, 61, 63});
+  const std::string l2 = columns_of(line2, 2, check_checksum, {1, 7, 16, 25, 33, 42, 51});
   Sgp4 p;
-  p.satnum_ = alpha5(cols(l1, 2, 7), 1);
-  const int two_digit_year = static_cast<int>(integer(cols(l1, 18, 20), 1, "epoch year"));
-  const double epochdays = number(cols(l1, 20, 32), 1, "epoch day");
-  double ndot = number(cols(l1, 33, 43), 1, "ndot");
-  double nddot = number(std::string(1, l1[44]) + "." + cols(l1, 45, 50), 1, "nddot");
-  const long nexp = integer(cols(l1, 50, 52), 1, "nddot exponent");
-  double bstar = number(std::string(1, l1[53]) + "." + cols(l1, 54, 59), 1, "bstar");
-  const long ibexp = integer(cols(l1, 59, 61), 1, "bstar exponent");
-  if (alpha5(cols(l2, 2, 7), 2) != p.satnum_) bad(2, "satellite number", "differs from line 1's");
-  double inclo = number(cols(l2, 8, 16), 2, "inclination");
-  double nodeo = number(cols(l2, 17, 25), 2, "right ascension of the node");
-  std::string ecc_digits = cols(l2, 26, 33);
+  p.satnum_ = parse_satellite_number(l1, 1);
+  if (l1[7] != 'U' && l1[7] != 'C' && l1[7] != 'S')
+    bad(1, "classification", "'" + std::string(1, l1[7]) + "' is not U, C or S");
+  for (std::size_t i = 9; i < 17; ++i)
+    if (!(digit(l1[i]) || (l1[i] >= 'A' && l1[i] <= 'Z') || l1[i] == ' '))
+      bad(1, "international designator", "'" + l1.substr(9, 8) + "' is not of the form YYNNNAAA");
+  const int two_digit_year = static_cast<int>(value_of(checked({l1, 1, 18, "epoch year", "NN"})));
+  const int year = two_digit_year < 57 ? two_digit_year + 2000 : two_digit_year + 1900;
+  const int days_in_year = year % 4 == 0 ? 366 : 365;  // 1957-2056
+  const Field day_field{l1, 1, 20, "epoch day", "NNN.NNNNNNNN"};
+  const std::string day_text = checked(day_field);
+  const double epochdays = value_of(day_text);
+  if (!(epochdays >= 1.0 && epochdays < days_in_year + 1.0))
+    bad(1, "epoch day", day_text + " outside [1, " + std::to_string(days_in_year + 1) + ") in " + std::to_string(year));
+  const double ndot = value_of(checked({l1, 1, 33, "ndot", "S.NNNNNNNN"}));
+  const double nddot = assumed_point({l1, 1, 44, "nddot", "SNNNNNEN"});
+  const double bstar = assumed_point({l1, 1, 53, "bstar", "SNNNNNEN"});
+  if (!(digit(l1[62]) || l1[62] == ' ')) bad(1, "ephemeris type", "'" + std::string(1, l1[62]) + "' is not a digit");
+  checked({l1, 1, 64, "element set number", "NNNN"});
+
+  if (parse_satellite_number(l2, 2) != p.satnum_) bad(2, "satellite number", "differs from line 1's");
+  const double inclo = decimal({l2, 2, 8, "inclination", "NNN.NNNN"}, 0, 180);
+  const double nodeo = decimal({l2, 2, 17, "right ascension of the node", "NNN.NNNN"}, 0, 360, true);
+  std::string ecc_digits = checked({l2, 2, 26, "eccentricity", "NNNNNNN"});
   for (char& c : ecc_digits)
     if (c == ' ') c = '0';
-  const double ecco = number("0." + ecc_digits, 2, "eccentricity");
-  double argpo = number(cols(l2, 34, 42), 2, "argument of perigee");
-  double mo = number(cols(l2, 43, 51), 2, "mean anomaly");
-  double no_kozai = number(cols(l2, 52, 63), 2, "mean motion");
-  if (!(epochdays >= 1.0 && epochdays < 367.0)) bad(1, "epoch day", "must be in [1, 367)");
+  const double ecco = std::strtod(("0." + ecc_digits).c_str(), nullptr);
+  const double argpo = decimal({l2, 2, 34, "argument of perigee", "NNN.NNNN"}, 0, 360, true);
+  const double mo = decimal({l2, 2, 43, "mean anomaly", "NNN.NNNN"}, 0, 360, true);
+  const double no_kozai = value_of(checked({l2, 2, 52, "mean motion", "NN.NNNNNNNN"}));
   if (!(no_kozai > 0.0)) bad(2, "mean motion", "must be positive (revolutions per day)");
+  checked({l2, 2, 63, "revolution number", "NNNNN"});
 
   const double xpdotp = 1440.0 / (2.0 * pi);
   Satrec& s = p.s_;
   s.no_kozai = no_kozai / xpdotp;
-  s.nddot = nddot * std::pow(10.0, static_cast<double>(nexp)) / (xpdotp * 1440.0 * 1440);
-  s.bstar = bstar * std::pow(10.0, static_cast<double>(ibexp));
+  s.nddot = nddot / (xpdotp * 1440.0 * 1440);
+  s.bstar = bstar;
   s.ndot = ndot / (xpdotp * 1440.0);
   s.inclo = inclo * deg2rad;
   s.nodeo = nodeo * deg2rad;
   s.argpo = argpo * deg2rad;
   s.mo = mo * deg2rad;
   s.ecco = ecco;
-  const int year = two_digit_year < 57 ? two_digit_year + 2000 : two_digit_year + 1900;
   int mon, day, hr, minute;
   double sec;
   days2mdhms(year, epochdays, mon, day, hr, minute, sec);

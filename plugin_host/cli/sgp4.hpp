@@ -39,10 +39,14 @@ struct TemeState {
 
 class Sgp4 {
  public:
-  // Parses the two lines (fixed columns of the TLE format) and initialises
-  // the propagator. Throws std::invalid_argument naming the line and field
-  // ("line 2 eccentricity: ..."). With check_checksum, a line whose column
-  // 69 is a digit must match the modulo-10 checksum.
+  // Parses the two lines and initialises the propagator. Strict: 69
+  // columns each (line ends aside), every field of the form the TLE format
+  // gives it (digits where it has digits: no exponents, hex or
+  // signs on angles), a checksum digit in column 69, angles in range
+  // (inclination [0, 180], the others [0, 360)), the epoch day within its
+  // year, mean motion > 0. Throws std::invalid_argument naming the line and
+  // field ("line 2 inclination: 181.0000 outside [0, 180]"). check_checksum
+  // false (test vectors only) skips comparing the digit with the line's sum.
   static Sgp4 from_tle(const std::string& line1, const std::string& line2, bool check_checksum = true);
 
   // Position and velocity (TEME) at `minutes` since the epoch. Throws

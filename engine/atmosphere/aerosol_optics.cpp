@@ -88,4 +88,9 @@ AerosolOptics AerosolSpectra::at(double wavelength_um) const {
   return o;
 }
 
+double henyey_greenstein_phase(double g, double cos_scattering) {
+  const double d = 1.0 + g * g - 2.0 * g * cos_scattering;
+  return (1.0 - g * g) / (d * std::sqrt(d));
+}
+
 }  // namespace eoir::atmosphere

@@ -28,6 +28,10 @@ class AerosolSpectra {
   std::vector<double> wavelength_um_, extinction_, absorption_, asymmetry_;
 };
 
+// The Henyey-Greenstein phase function (normalised to 4 pi) of asymmetry g
+// at the cosine of the scattering angle: (1 - g^2) / (1 + g^2 - 2 g cos)^1.5.
+double henyey_greenstein_phase(double g, double cos_scattering);
+
 // Relative humidity (%) of water vapour of number density h2o_m3 at
 // temperature T (Buck 1981 saturation pressure over water).
 double relative_humidity_pct(double h2o_m3, double temperature_K);

@@ -39,8 +39,13 @@ PathOptics::PathOptics(std::shared_ptr<const AtmosphereProfile> profile, const u
   const AerosolSpectra background = AerosolSpectra::load(data_dir, "tropospheric", kBackgroundHumidity_pct);
   for (const double l : wavelength_um_) {
     rayleigh_m2_.push_back(rayleigh_cross_section_m2(l));
-    boundary_per_550_.push_back(boundary.at(l).extinction_per_550);
-    background_per_550_.push_back(background.at(l).extinction_per_550);
+    const AerosolOptics b = boundary.at(l), t = background.at(l);
+    boundary_per_550_.push_back(b.extinction_per_550);
+    background_per_550_.push_back(t.extinction_per_550);
+    boundary_albedo_.push_back(b.single_scatter_albedo);
+    background_albedo_.push_back(t.single_scatter_albedo);
+    boundary_g_.push_back(b.asymmetry);
+    background_g_.push_back(t.asymmetry);
   }
   molecules_ = MolecularAbsorption::load(data_dir);
 }
@@ -82,23 +87,63 @@ void PathOptics::transmittance(const PathColumns& path, std::vector<double>& out
 }
 
 void PathOptics::path_radiance(const PathColumns& path, std::vector<double>& out) const {
-  out.assign(static_cast<std::size_t>(band_.intervals), 0.0);
-  if (!path.crosses) return;
-  std::vector<double> sub(wavelength_um_.size(), 0.0), near(wavelength_um_.size(), 1.0), far;
+  if (!path.crosses) {
+    out.assign(static_cast<std::size_t>(band_.intervals), 0.0);
+    return;
+  }
+  out = terms(path).thermal;
+}
+
+PathTerms PathOptics::terms(const PathColumns& path) const {
+  const std::size_t intervals = static_cast<std::size_t>(band_.intervals), n = wavelength_um_.size();
+  PathTerms t;
+  t.transmittance.assign(intervals, 1.0);
+  t.thermal.assign(intervals, 0.0);
+  if (!path.crosses) return t;
+  const auto interval_means = [&](const std::vector<double>& sub, std::vector<double>& out) {
+    out.assign(intervals, 0.0);
+    for (std::size_t i = 0; i < intervals; ++i) {
+      for (std::size_t k = first_[i]; k < first_[i + 1]; ++k) out[i] += sub[k];
+      out[i] /= static_cast<double>(first_[i + 1] - first_[i]);
+    }
+  };
+  std::vector<double> thermal(n, 0.0), near(n, 1.0), far, wr(n), wa(n), g_weighted(n), mean_g;
   PathColumns prefix;
   prefix.crosses = true;
   for (const PathSegment& s : path.segments) {
     append_segment(prefix, s);
     sub_transmittance(prefix, far);
-    for (std::size_t k = 0; k < sub.size(); ++k)
-      sub[k] += radiometry::planck_radiance(wavelength_um_[k], s.temperature_K) * std::max(0.0, near[k] - far[k]);
+    const double boundary = s.boundary_aerosol_tau_550, background = s.aerosol_tau_550 - boundary;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double lost = std::max(0.0, near[k] - far[k]);
+      // Schwarzschild: B(T_segment) (T(0, near) - T(0, far)).
+      thermal[k] += radiometry::planck_radiance(wavelength_um_[k], s.temperature_K) * lost;
+      const double tau_r = rayleigh_m2_[k] * s.air_m2;
+      const double tau_b = boundary * boundary_per_550_[k] * boundary_albedo_[k];
+      const double tau_t = background * background_per_550_[k] * background_albedo_[k];
+      const double tau_a = tau_b + tau_t;
+      const double tau_e = far[k] > 0 && near[k] > far[k] ? std::log(near[k] / far[k]) : 0.0;
+      // (T_near - T_far) / tau_e -> T_near for a thin segment.
+      const double per_tau = tau_e > 1e-9 ? lost / tau_e : near[k];
+      const double scale = tau_e > 1e-9 ? std::min(1.0, tau_e / std::max(tau_r + tau_a, 1e-300)) : 1.0;
+      wr[k] = per_tau * tau_r * scale;
+      wa[k] = per_tau * tau_a * scale;
+      const double g = tau_a > 0 ? (tau_b * boundary_g_[k] + tau_t * background_g_[k]) / tau_a : 0.0;
+      g_weighted[k] = g * wa[k];
+    }
+    t.rayleigh.emplace_back();
+    t.aerosol.emplace_back();
+    interval_means(wr, t.rayleigh.back());
+    interval_means(wa, t.aerosol.back());
+    interval_means(g_weighted, mean_g);
+    for (std::size_t i = 0; i < intervals; ++i)
+      if (t.aerosol.back()[i] > 0) mean_g[i] /= t.aerosol.back()[i];
+    t.asymmetry.push_back(mean_g);
     near.swap(far);
   }
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    double sum = 0;
-    for (std::size_t k = first_[i]; k < first_[i + 1]; ++k) sum += sub[k];
-    out[i] = sum / static_cast<double>(first_[i + 1] - first_[i]);
-  }
+  interval_means(thermal, t.thermal);
+  interval_means(near, t.transmittance);
+  return t;
 }
 
 OpticalDepths PathOptics::optical_depths(const PathColumns& path) const {

@@ -24,6 +24,21 @@ class MolecularAbsorption;
 
 constexpr double kSubSampleSpacing_cm1 = 20.0;
 
+// Eq. 9's path terms along one path, per spectral interval: what does not
+// depend on where the light sources are.
+struct PathTerms {
+  std::vector<double> transmittance;  // T_out from the path's far end to its first point
+  std::vector<double> thermal;        // L_path: the path's own emission toward its first point
+  // Single scatter (eq. 9's L_scatter, Nishita et al. 1993) per segment
+  // (from the first point out) and interval: of the light that the
+  // segment's air (Rayleigh) and aerosol scatter per unit phase function
+  // (normalised to 4 pi), the fraction that reaches the first point:
+  // (T(0, near) - T(0, far)) tau_scatter / tau_extinction of the segment,
+  // so that a segment thick with absorbers scatters less. The aerosol's
+  // Henyey-Greenstein asymmetry g (scatter-weighted).
+  std::vector<std::vector<double>> rayleigh, aerosol, asymmetry;
+};
+
 // What a path's transmittance is made of: per interval, its sub-samples' mean optical depths.
 struct OpticalDepths {
   std::vector<double> rayleigh, aerosol, absorption;  // per interval, the sub-samples' means
@@ -53,6 +68,9 @@ class PathOptics {
   // scattering (Rayleigh, the aerosol's single-scatter albedo) is counted as
   // emitting too: in 8-12 um about 1 % of L_path for a rural aerosol.
   void path_radiance(const PathColumns& path, std::vector<double>& out) const;
+  // T_out, L_path (thermal) and the single-scatter weights in one pass
+  // over the path's segments (which must run from the first point out).
+  PathTerms terms(const PathColumns& path) const;
 
  private:
   // Transmittance at every sub-sample.
@@ -66,6 +84,8 @@ class PathOptics {
   std::vector<double> wavelength_um_;
   std::vector<double> rayleigh_m2_;          // cross section per air molecule
   std::vector<double> boundary_per_550_, background_per_550_;  // aerosol extinction / extinction at 0.55 um
+  std::vector<double> boundary_albedo_, background_albedo_;    // the aerosols' single-scatter albedo
+  std::vector<double> boundary_g_, background_g_;              // and asymmetry
   std::unique_ptr<const MolecularAbsorption> molecules_;
 };
 

@@ -26,5 +26,9 @@ double rayleigh_cross_section_m2(double wavelength_um) {
   return rayleigh_sea_level_optical_depth(wavelength_um) / rayleigh_reference_column_m2();
 }
 
+double rayleigh_phase(double cos_scattering) {
+  constexpr double rho = 0.0279, gamma = rho / (2.0 - rho);
+  return 3.0 / (4.0 * (1.0 + 2.0 * gamma)) * ((1.0 + 3.0 * gamma) + (1.0 - gamma) * cos_scattering * cos_scattering);
+}
 
 }  // namespace eoir::atmosphere

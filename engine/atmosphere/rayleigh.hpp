@@ -15,5 +15,11 @@ double rayleigh_sea_level_optical_depth(double wavelength_um);
 double rayleigh_reference_column_m2();
 // Cross section per air molecule (m^2).
 double rayleigh_cross_section_m2(double wavelength_um);
+// The phase function of air (normalised to 4 pi) at the cosine of the
+// scattering angle, with the molecules' depolarisation (Chandrasekhar 1950;
+// depolarisation factor 0.0279, Young 1980, as Bodhaine's cross section
+// assumes): 3 / (4 (1 + 2 gamma)) ((1 + 3 gamma) + (1 - gamma) cos^2),
+// gamma = rho / (2 - rho).
+double rayleigh_phase(double cos_scattering);
 
 }  // namespace eoir::atmosphere

@@ -104,7 +104,9 @@ PathColumns integrate(const AtmosphereProfile& profile, const EarthFigure& earth
     }
     seg.length_m = (tb - ta) * speed;
     const Vec3 xm = ps + mid * ds;
-    seg.layer = profile.layer_of(corrected_altitude(xm.norm(), xm.dot(earth.pole), a, stretch.extra));
+    seg.mid_distance_m = mid * speed;
+    seg.mid_altitude_m = corrected_altitude(xm.norm(), xm.dot(earth.pole), a, stretch.extra);
+    seg.layer = profile.layer_of(seg.mid_altitude_m);
     add_segment(seg, air_T, air_p, keep, out);
   }
   return out;
@@ -197,7 +199,8 @@ PathColumns refracted_path_to_space(const AtmosphereProfile& profile, const Eart
         add_node(n, w, seg, air_T, air_p);
         seg.length_m += w;
       }
-      seg.layer = profile.layer_of(h_of(0.5 * (cuts[i] + cuts[i + 1])));
+      seg.mid_altitude_m = h_of(0.5 * (cuts[i] + cuts[i + 1]));
+      seg.layer = profile.layer_of(seg.mid_altitude_m);
       add_segment(seg, air_T, air_p, keep, out);
     }
   };
@@ -207,8 +210,12 @@ PathColumns refracted_path_to_space(const AtmosphereProfile& profile, const Eart
     climb(r0);
     std::reverse(out.segments.begin(), out.segments.end());
   }
-  if (ends_on_ground) return out;
-  climb(top);
+  if (!ends_on_ground) climb(top);
+  double along = 0;  // the segments' middles along the ray, from its start
+  for (PathSegment& s : out.segments) {
+    s.mid_distance_m = along + 0.5 * s.length_m;
+    along += s.length_m;
+  }
   return out;
 }
 
@@ -240,6 +247,8 @@ double ray_traced_refraction_rad(const AtmosphereProfile& profile, const EarthFi
   }
   return bending;
 }
+
+Vec3 to_sphere_space(const EarthFigure& earth, const Vec3& v) { return Stretch(earth)(v); }
 
 double altitude_m(const EarthFigure& earth, const Vec3& point_m) {
   const Stretch stretch(earth);

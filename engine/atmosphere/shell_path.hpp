@@ -40,6 +40,8 @@ struct PathSegment {
   double boundary_aerosol_tau_550 = 0;  // of which the boundary layer's
   std::array<double, kMixedGases> mixed_m2{};
   double temperature_K = 0, pressure_Pa = 0;
+  double mid_distance_m = 0;  // from the path's first point to the segment's middle, along the path
+  double mid_altitude_m = 0;  // of the segment's middle
 };
 
 struct PathColumns {
@@ -83,6 +85,11 @@ double ray_traced_refraction_rad(const AtmosphereProfile& profile, const EarthFi
 
 // The refractivity n - 1 of air of number density air_m3 (visible light).
 double refractivity(double air_m3);
+
+// A vector (a point relative to the Earth's centre, or a direction) in the
+// space where the ellipsoid is a sphere of its equatorial radius: the
+// polar component stretched by a / b.
+Vec3 to_sphere_space(const EarthFigure& earth, const Vec3& v);
 
 // The geodetic altitude of a point (m), as the shells see it.
 double altitude_m(const EarthFigure& earth, const Vec3& point_m);

@@ -10,9 +10,9 @@ namespace eoir::metrics {
 namespace {
 using geometry::Vec3;
 
-// The radiance a hit sees (the sky's background light where it meets nothing).
-double radiance_of(const scene::World& world, const geometry::Hit& hit) {
-  if (hit.object_id < 0) return world.sky.background_radiance_W_cm2_sr;
+// The radiance a hit along the unit direction d sees (the sky's where it meets nothing).
+double radiance_of(const scene::World& world, const geometry::Hit& hit, const Vec3& d) {
+  if (hit.object_id < 0) return world.sky_radiance(d);
   const scene::WorldObject& o = *world.objects[static_cast<std::size_t>(hit.object_id)];
   return o.radiance_at(hit.part, hit.point_body_m, o.direction_to_body(hit.normal_frame));
 }
@@ -91,7 +91,7 @@ TargetMetrics target_metrics(const scene::World& world, const sensor::SensorMode
   const double ne_dark = m.dark_noise_electrons, SEe = m.saturation_electrons;
   if (r.point_source) {
     // Background: what the line of sight meets beyond the target (eq. 62).
-    const double L_bkg = radiance_of(world, world.caster.cast(los, geometry::RayQuery{geometry::ray_mask_all, tp.id}));
+    const double L_bkg = radiance_of(world, world.caster.cast(los, geometry::RayQuery{geometry::ray_mask_all, tp.id}), los);
     r.point_target_solid_angle_sr = r.target_solid_angle_sr;
     point_target_terms(m, tp.point_irradiance_W_cm2() /* eq. 61 */, L_bkg,
                        r.target_solid_angle_sr / m.effective_ifov_solid_angle_sr, r);
@@ -117,8 +117,9 @@ TargetMetrics target_metrics(const scene::World& world, const sensor::SensorMode
   world.caster.cast(directions, hits, 1);
   double sum_tgt = 0, sum_bkg = 0;
   int n_tgt = 0, n_bkg = 0;
-  for (const auto& h : hits) {
-    const double L = radiance_of(world, h);
+  for (std::size_t k = 0; k < hits.size(); ++k) {
+    const geometry::Hit& h = hits[k];
+    const double L = radiance_of(world, h, directions[k]);
     if (h.object_id == tp.id) sum_tgt += L, ++n_tgt;
     else sum_bkg += L, ++n_bkg;
   }
@@ -146,7 +147,7 @@ TargetMetrics star_metrics(const scene::World& world, const sensor::SensorModel&
   r.pixel_x = grid.pixel_x_of(star.column);
   r.pixel_y = grid.pixel_y_of(star.row);
   r.in_field = r.visible = true;  // the sky holds the stars in the field that nothing hides
-  point_target_terms(sensor.metrics, star.irradiance_W_cm2, world.sky.background_radiance_W_cm2_sr, 0.0, r);
+  point_target_terms(sensor.metrics, star.irradiance_W_cm2, world.sky_radiance(star.direction_j2000), 0.0, r);
   return r;
 }
 

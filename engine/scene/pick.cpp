@@ -24,7 +24,10 @@ Pick pick_sample(const World& world, const SceneImage& scene, std::int64_t c, st
   pick.wavelengths_um = world.spectral().sample_wavelengths_um;
   pick.spectral_radiance_W_cm2_sr_um.assign(pick.wavelengths_um.size(), 0.0);
   pick.range_m = geometry::sky_range_m;
-  if (scene.hits[i].object_id < 0) return pick;
+  if (scene.hits[i].object_id < 0) {
+    world.sky_spectrum(d, pick.spectral_radiance_W_cm2_sr_um);
+    return pick;
+  }
   // Cast this one sample's ray again, with range, point and normal.
   const geometry::Hit hit = world.caster.cast(d, geometry::RayQuery{geometry::ray_mask_extended, -1});
   if (hit.object_id < 0) return pick;

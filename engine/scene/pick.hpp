@@ -23,7 +23,7 @@ struct Pick {
   double effective_radiance_W_cm2_sr = 0;               // the image's sample (eq. 48)
   double temperature_K = 0;
   std::vector<double> wavelengths_um;                   // the view's sample wavelengths
-  std::vector<double> spectral_radiance_W_cm2_sr_um;    // eq. 4 at those wavelengths (0 for the sky)
+  std::vector<double> spectral_radiance_W_cm2_sr_um;    // eq. 4 (eq. 9 under the atmosphere) at those wavelengths; the sky's for the sky
 };
 
 // Sample (c, r) of the full grid (guard band included).

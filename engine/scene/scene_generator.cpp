@@ -47,7 +47,6 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
   out.image.radiance_W_cm2_sr = std::move(storage.image.radiance_W_cm2_sr);
   out.hits.resize(count);  // cast_grid emits every sample once
   out.image.radiance_W_cm2_sr.resize(count);
-  const double sky_radiance = world.sky.background_radiance_W_cm2_sr;
   const auto direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r); };
   const geometry::RayQuery extended{geometry::ray_mask_extended, -1};
   world.caster.cast_grid(
@@ -57,7 +56,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
         const auto i = static_cast<std::size_t>(r * w + c);
         out.hits[i] = SampleHit{object, part};
         if (object < 0) {
-          out.image.radiance_W_cm2_sr[i] = sky_radiance;  // the background light (spec 4.1.4), 0 without a sky
+          out.image.radiance_W_cm2_sr[i] = world.sky_radiance(direction(c, r));  // the background light (spec 4.1.4), the sky's
           return;
         }
         const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];
@@ -121,7 +120,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
               for (std::size_t m = 0; m < sub; ++m) {
                 const geometry::Hit& hit = sub_hits[static_cast<std::size_t>(k) * sub + m];
                 if (hit.object_id < 0) {
-                  sum += sky_radiance;
+                  sum += world.sky_radiance(directions[static_cast<std::size_t>(k) * sub + m]);
                   continue;
                 }
                 const WorldObject& o = *world.objects[static_cast<std::size_t>(hit.object_id)];

@@ -509,6 +509,11 @@ void WorldObject::to_sensor(std::vector<double>& spectrum, const Vec3& point_bod
     const Vec3 toward = -to_frame(point_body_m).normalized();
     world_->atmosphere.surface->view_at((placed.body_to_frame * normal_body).dot(toward), T, L);
     for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] = spectrum[i] * T[i] + L[i];
+    if (world_->atmosphere.sky) {  // eq. 9's L_scatter along the line of sight
+      thread_local std::vector<double> S;
+      world_->atmosphere.sky->scatter(-toward, S);
+      for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] += S[i];
+    }
     return;
   }
   const std::vector<double>& T = view().transmittance;
@@ -606,8 +611,11 @@ void WorldAtmosphere::seen_from(const Vec3& point_m, std::vector<double>& T, std
   L.clear();
   const atmosphere::PathColumns c = path_to(point_m);
   if (!c.crosses) return;
-  optics->transmittance(c, T);
-  optics->path_radiance(c, L);
+  const atmosphere::ScatterPath path = atmosphere::ScatterPath::make(*optics, c);
+  T = path.terms.transmittance;
+  L = path.terms.thermal;
+  if (sunlight)
+    atmosphere::add_single_scatter(path, -earth.centre_m, point_m.normalized(), to_sun, sun_irradiance, *sunlight, L);
 }
 
 double WorldAtmosphere::air_mass(const atmosphere::PathColumns& path) const {
@@ -656,6 +664,19 @@ double lambertian_sphere_phase(double cos_psi) {
   return (std::sqrt((1.0 - c) * (1.0 + c)) + (constants::pi - std::acos(c)) * c) / constants::pi;
 }
 
+double World::sky_radiance(const Vec3& d) const {
+  double L = 0;
+  if (atmosphere.sky && atmosphere.sky->sky_band(d, L)) return L;
+  return sky.background_radiance_W_cm2_sr;
+}
+
+void World::sky_spectrum(const Vec3& d, std::vector<double>& out) const {
+  if (atmosphere.sky && atmosphere.sky->sky(d, out)) return;
+  out.assign(view.spectral.sample_wavelengths_um.size(), 0.0);
+  if (sky.background)
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = sky.background_irradiance[i] / constants::pi;
+}
+
 const WorldObject* World::find(const std::string& name) const {
   for (const auto& o : objects)
     if (o->name == name) return o.get();
@@ -687,6 +708,25 @@ std::shared_ptr<const SurfacePaths> WorldCache::surface(const std::shared_ptr<co
   if (it != surface_.end()) return it->second;
   if (surface_.size() >= kWorldCacheEntries) surface_.clear();  // (an aircraft's altitude changes every frame)
   return surface_.emplace(key, std::make_shared<const SurfacePaths>(make())).first->second;
+}
+
+std::shared_ptr<const SightLines> WorldCache::sight_lines(const std::shared_ptr<const atmosphere::PathOptics>& optics,
+                                                          double altitude_m, const std::function<SightLines()>& make) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto key = std::make_pair(optics.get(), altitude_m);
+  auto it = sight_lines_.find(key);
+  if (it != sight_lines_.end()) return it->second;
+  if (sight_lines_.size() >= kWorldCacheEntries) sight_lines_.clear();
+  return sight_lines_.emplace(key, std::make_shared<const SightLines>(make())).first->second;
+}
+
+std::shared_ptr<const atmosphere::SunlightTable> WorldCache::sunlight(
+    const std::shared_ptr<const atmosphere::PathOptics>& optics, const std::function<atmosphere::SunlightTable()>& make) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = sunlight_.find(optics.get());
+  if (it != sunlight_.end()) return it->second;
+  if (sunlight_.size() >= kWorldCacheEntries) sunlight_.clear();
+  return sunlight_.emplace(optics.get(), std::make_shared<const atmosphere::SunlightTable>(make())).first->second;
 }
 
 std::shared_ptr<const World> build_world(const universe::Universe& universe, const universe::Library& library,
@@ -793,6 +833,16 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       a.refraction = atmosphere::refraction_constants(
           here.pressure_Pa, here.temperature_K,
           atmosphere::relative_humidity_pct(here.h2o_m3, here.temperature_K) / 100.0, 0.5 * (band.low_um + band.high_um));
+    }
+    // The Sun for single scatter (eq. 6's E = L_tab dOmega above the air).
+    if (world->sun.position_m.norm() > 0) {
+      a.to_sun = world->sun.position_m.normalized();
+      const double omega = universe::sun_projected_solid_angle_sr(world->sun.position_m.norm());
+      for (const double L : world->sun.radiance) a.sun_irradiance.push_back(L * omega);
+      const atmosphere::EarthFigure figure = a.earth;
+      const auto optics = a.optics;
+      const auto make = [optics, figure] { return atmosphere::SunlightTable(*optics, figure); };
+      a.sunlight = cache ? cache->sunlight(a.optics, make) : std::make_shared<const atmosphere::SunlightTable>(make());
     }
   }
   if (world->atmosphere.on() && earth_id >= 0 &&
@@ -965,12 +1015,26 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   for (const auto& w : world->objects) cast_against.push_back(&w->placed);
   world->caster.build(cast_against);
 
-  // 5. The sky, if the universe has a star field.
+  // 5. The sky, if the universe has a star field, and under the atmosphere
+  // its light over the view.
   for (const universe::Object& o : universe.objects())
     if (o.kind == ObjectKind::star_field) {
       build_sky(*world, o, library);
       break;
     }
+  if (world->atmosphere.sunlight) {
+    WorldAtmosphere& a = world->atmosphere;
+    const double altitude = std::min(atmosphere::altitude_m(a.earth, Vec3::Zero()), a.profile->top_altitude_m());
+    const atmosphere::EarthFigure figure = a.earth;
+    const auto optics = a.optics;
+    const auto make = [optics, figure, altitude] { return SightLines::make(*optics, figure, altitude); };
+    const auto lines = cache ? cache->sight_lines(a.optics, altitude, make) : std::make_shared<const SightLines>(make());
+    std::vector<double> background;
+    if (world->sky.background)
+      for (const double E : world->sky.background_irradiance) background.push_back(E / constants::pi);
+    a.sky = std::make_shared<const SkyView>(lines, a.sunlight, a.earth, a.to_sun, a.sun_irradiance, background,
+                                            world->view.spectral);
+  }
   return world;
 }
 

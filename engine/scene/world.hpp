@@ -32,6 +32,7 @@
 #include "geometry/scene_geometry.hpp"
 #include "radiometry/spectral_view.hpp"
 #include "scene/light_environment.hpp"
+#include "scene/sight_lines.hpp"
 #include "scene/sky.hpp"
 #include "scene/surface_model.hpp"
 #include "universe/library.hpp"
@@ -100,14 +101,14 @@ struct WorldAtmosphere {
   atmosphere::EarthFigure earth;
   bool observer_inside = false;  // the observer lies below the top of the atmosphere
   bool on() const { return profile != nullptr; }
+  // Eq. 9's path terms per interval between a point and the observer: the
+  // transmittance, and the path's radiance toward the observer (its thermal
+  // emission and the sunlight its air scatters); empty in vacuum.
+  void seen_from(const Vec3& point_m, std::vector<double>& transmittance, std::vector<double>& path_radiance) const;
   // The transmittance per interval of the view from a point toward space
   // along a unit direction (toward the Sun, a star); empty where the path
-  // crosses no air.
-  // A path from an observer inside the atmosphere to space follows the
-  // refracted ray.
-  // Both the transmittance and the thermal path radiance (eq. 9's L_path,
-  // per interval) between a point and the observer; empty in vacuum.
-  void seen_from(const Vec3& point_m, std::vector<double>& transmittance, std::vector<double>& path_radiance) const;
+  // crosses no air. A path from an observer inside the atmosphere to space
+  // follows the refracted ray.
   std::vector<double> to_space(const Vec3& point_m, const Vec3& direction) const;
   // The path from the observer to a point, its segments from the observer
   // out (refracted from an observer inside the atmosphere to a point above
@@ -126,6 +127,13 @@ struct WorldAtmosphere {
   Vec3 zenith = Vec3::UnitZ();                      // the observer's geodetic vertical (J2000)
   atmosphere::RefractionConstants refraction;       // at the observer, at the band's centre wavelength
   std::shared_ptr<const SurfacePaths> surface;      // over the Earth's surface (when it is imaged)
+  // Single scatter: T_sun over (altitude, Sun angle), the Sun (unit
+  // direction, irradiance per interval above the air), and the sky's terms
+  // over this frame's lines of sight.
+  std::shared_ptr<const atmosphere::SunlightTable> sunlight;
+  Vec3 to_sun = Vec3::UnitX();
+  std::vector<double> sun_irradiance;
+  std::shared_ptr<const SkyView> sky;
 };
 
 // What the worlds of one engine build once and share (thread-safe): the
@@ -140,6 +148,10 @@ class WorldCache {
   // The tables of `optics` for an observer at that (clamped) altitude, made by `make` if new.
   std::shared_ptr<const SurfacePaths> surface(const std::shared_ptr<const atmosphere::PathOptics>& optics,
                                               double altitude_m, const std::function<SurfacePaths()>& make);
+  std::shared_ptr<const SightLines> sight_lines(const std::shared_ptr<const atmosphere::PathOptics>& optics,
+                                                double altitude_m, const std::function<SightLines()>& make);
+  std::shared_ptr<const atmosphere::SunlightTable> sunlight(const std::shared_ptr<const atmosphere::PathOptics>& optics,
+                                                            const std::function<atmosphere::SunlightTable()>& make);
 
  private:
   std::mutex mutex_;
@@ -147,6 +159,8 @@ class WorldCache {
                          std::shared_ptr<const atmosphere::PathOptics>>>
       optics_;
   std::map<std::pair<const atmosphere::PathOptics*, double>, std::shared_ptr<const SurfacePaths>> surface_;
+  std::map<std::pair<const atmosphere::PathOptics*, double>, std::shared_ptr<const SightLines>> sight_lines_;
+  std::map<const atmosphere::PathOptics*, std::shared_ptr<const atmosphere::SunlightTable>> sunlight_;
 };
 
 class World;
@@ -312,6 +326,13 @@ class World {
   // nullptr if the world holds no object of that name (culled by kind, shape
   // none, no state, or the sensor's parent).
   const WorldObject* find(const std::string& name) const;
+  // The band radiance of a line of sight (unit direction) that meets no
+  // object: the background light (spec 4.1.4), and under the atmosphere
+  // the sky's (SkyView: its scatter and emission, the background through
+  // it).
+  double sky_radiance(const Vec3& d) const;
+  // The same per interval.
+  void sky_spectrum(const Vec3& d, std::vector<double>& out) const;
 };
 
 // Builds the world of `sensor` at t with the library's materials and spectra.

@@ -1,0 +1,176 @@
+#include "scene/sight_lines.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "core/constants.hpp"
+
+namespace eoir::scene {
+namespace {
+constexpr int kGroundNodes = 33;     // lines that meet the ground, from above: mu_g = (k / 32)^2 there
+constexpr int kLimbNodes = 25;       // lines through the limb: tangent altitude top (k / 24)^2
+constexpr int kElevationNodes = 25;  // from inside, each side of the horizon: (pi / 2) (k / 24)^1.6
+constexpr std::size_t kAzimuths = 49;  // 0..pi from the Sun's vertical plane, 3.75 deg apart
+}  // namespace
+
+SightLines SightLines::make(const atmosphere::PathOptics& optics, const atmosphere::EarthFigure& figure,
+                            double observer_altitude_m) {
+  SightLines s;
+  const atmosphere::AtmosphereProfile& profile = optics.profile();
+  atmosphere::EarthFigure earth = figure;
+  earth.centre_m = Vec3::Zero();
+  const Vec3 up = earth.pole.unitOrthogonal(), across = earth.pole.cross(up);  // the equator: a circle of radius a
+  const double a = earth.equatorial_radius_m, top = profile.top_altitude_m(), r_top = a + top;
+  s.above = observer_altitude_m >= top;
+  s.top_radius_m = r_top;
+  const auto add = [&](double node, const atmosphere::PathColumns& path) {
+    s.node.push_back(node);
+    s.paths.push_back(atmosphere::ScatterPath::make(optics, path));
+  };
+  if (s.above) {
+    // Down the line x = p across + t (-up), from where it enters the top.
+    const auto line = [&](double p, double end_t) {
+      const Vec3 entry = p * across + std::sqrt(std::max(0.0, r_top * r_top - p * p)) * up;
+      return atmosphere::path_between(profile, earth, entry, entry - end_t * up);
+    };
+    for (int k = kGroundNodes - 1; k >= 0; --k) {
+      const double mu = std::pow(static_cast<double>(k) / (kGroundNodes - 1), 2.0);
+      const double p = a * std::sqrt(1.0 - mu * mu);
+      add(p, line(p, std::sqrt(r_top * r_top - p * p) - std::sqrt(std::max(0.0, a * a - p * p))));
+    }
+    for (int k = 1; k < kLimbNodes; ++k) {
+      const double p = a + top * std::pow(static_cast<double>(k) / (kLimbNodes - 1), 2.0);
+      add(p, line(p, 2.0 * std::sqrt(std::max(0.0, r_top * r_top - p * p))));
+    }
+    return s;
+  }
+  s.observer_radius_m = a + std::max(0.0, observer_altitude_m);
+  const Vec3 observer = s.observer_radius_m * up;
+  for (int k = -(kElevationNodes - 1); k < kElevationNodes; ++k) {
+    const double e = (k < 0 ? -1.0 : 1.0) * 0.5 * constants::pi *
+                     std::pow(std::abs(static_cast<double>(k)) / (kElevationNodes - 1), 1.6);
+    bool ground = false;
+    add(e, atmosphere::refracted_path_to_space(profile, earth, observer, std::sin(e) * up + std::cos(e) * across,
+                                               ground));
+  }
+  return s;
+}
+
+SkyView::SkyView(std::shared_ptr<const SightLines> lines, std::shared_ptr<const atmosphere::SunlightTable> sunlight,
+                 const atmosphere::EarthFigure& earth, const Vec3& to_sun, const std::vector<double>& sun_irradiance,
+                 const std::vector<double>& background_radiance, const radiometry::SpectralView& view)
+    : lines_(std::move(lines)), intervals_(sunlight->intervals()), earth_(earth), azimuths_(kAzimuths) {
+  const SightLines& L = *lines_;
+  centre_ = atmosphere::to_sphere_space(earth, -earth.centre_m);
+  vertical_ = centre_.normalized();
+  const Vec3 sun = atmosphere::to_sphere_space(earth, to_sun).normalized();
+  x_ = sun - sun.dot(vertical_) * vertical_;
+  x_ = x_.norm() > 1e-9 ? x_.normalized() : vertical_.unitOrthogonal();
+  y_ = vertical_.cross(x_);
+  const double r_o = centre_.norm();
+  std::vector<double> out(intervals_);
+  scatter_.resize(L.node.size() * azimuths_);
+  scatter_band_.resize(scatter_.size());
+  for (std::size_t j = 0; j < L.node.size(); ++j) {
+    for (std::size_t m = 0; m < azimuths_; ++m) {
+      const double psi = constants::pi * static_cast<double>(m) / static_cast<double>(azimuths_ - 1);
+      const Vec3 horizontal = std::cos(psi) * x_ + std::sin(psi) * y_;
+      Vec3 d, start = centre_;
+      if (L.above) {
+        const double p = L.node[j];
+        const double mu = -std::sqrt(std::max(0.0, 1.0 - (p / r_o) * (p / r_o)));
+        d = mu * vertical_ + std::sqrt(std::max(0.0, 1.0 - mu * mu)) * horizontal;
+        // (the path begins where the line enters the top of the air)
+        const double r_top = L.top_radius_m;
+        start = centre_ + (-centre_.dot(d) - std::sqrt(std::max(0.0, r_top * r_top - p * p))) * d;
+      } else {
+        const double e = L.node[j];
+        d = std::sin(e) * vertical_ + std::cos(e) * horizontal;
+      }
+      std::fill(out.begin(), out.end(), 0.0);
+      atmosphere::add_single_scatter(L.paths[j], start, d, sun, sun_irradiance, *sunlight, out);
+      scatter_band_[j * azimuths_ + m] = view.integrate(out);
+      scatter_[j * azimuths_ + m] = out;
+    }
+    // What the line's air adds without the Sun: its emission and the background seen through it.
+    std::vector<double> sky = L.paths[j].terms.thermal;
+    if (!background_radiance.empty())
+      for (std::size_t i = 0; i < intervals_; ++i) sky[i] += background_radiance[i] * L.paths[j].terms.transmittance[i];
+    sky_band_.push_back(view.integrate(sky));
+    sky_.push_back(std::move(sky));
+  }
+}
+
+SkyView::Cell SkyView::cell_of(const Vec3& direction) const {
+  Cell c;
+  const SightLines& L = *lines_;
+  const Vec3 d = atmosphere::to_sphere_space(earth_, direction).normalized();
+  double x;
+  if (L.above) {
+    if (centre_.dot(d) >= 0) return c;  // heading away from the air
+    x = centre_.cross(d).norm();
+    if (x >= L.node.back()) return c;
+  } else {
+    x = std::asin(std::clamp(d.dot(vertical_), -1.0, 1.0));
+  }
+  c.inside = true;
+  const std::vector<double>& n = L.node;
+  const double xc = std::clamp(x, n.front(), n.back());
+  const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(std::upper_bound(n.begin(), n.end(), xc) - n.begin()),
+                                              n.size() - 1);
+  c.node = k == 0 ? 0 : k - 1;
+  const double fn = n[c.node + 1] > n[c.node] ? (xc - n[c.node]) / (n[c.node + 1] - n[c.node]) : 0.0;
+  const double psi = std::atan2(std::fabs(d.dot(y_)), d.dot(x_));  // 0..pi
+  const double a = psi / constants::pi * static_cast<double>(azimuths_ - 1);
+  c.azimuth = std::min<std::size_t>(static_cast<std::size_t>(a), azimuths_ - 2);
+  const double fa = std::clamp(a - static_cast<double>(c.azimuth), 0.0, 1.0);
+  c.weight[0] = (1 - fn) * (1 - fa);
+  c.weight[1] = fn * (1 - fa);
+  c.weight[2] = (1 - fn) * fa;
+  c.weight[3] = fn * fa;
+  return c;
+}
+
+template <class Value>
+double SkyView::blend(const Cell& c, Value value) const {
+  const std::size_t A = azimuths_;
+  const std::size_t i00 = c.node * A + c.azimuth;
+  return c.weight[0] * value(i00) + c.weight[1] * value(i00 + A) + c.weight[2] * value(i00 + 1) +
+         c.weight[3] * value(i00 + A + 1);
+}
+
+double SkyView::scatter_band(const Vec3& d) const {
+  const Cell c = cell_of(d);
+  if (!c.inside) return 0.0;
+  return blend(c, [&](std::size_t i) { return scatter_band_[i]; });
+}
+
+bool SkyView::sky_band(const Vec3& d, double& out) const {
+  const Cell c = cell_of(d);
+  if (!c.inside) return false;
+  const double own = (c.weight[0] + c.weight[2]) * sky_band_[c.node] + (c.weight[1] + c.weight[3]) * sky_band_[c.node + 1];
+  out = own + blend(c, [&](std::size_t i) { return scatter_band_[i]; });
+  return true;
+}
+
+void SkyView::scatter(const Vec3& d, std::vector<double>& out) const {
+  out.assign(intervals_, 0.0);
+  const Cell c = cell_of(d);
+  if (!c.inside) return;
+  const std::size_t A = azimuths_, i00 = c.node * A + c.azimuth;
+  const std::size_t idx[4] = {i00, i00 + A, i00 + 1, i00 + A + 1};
+  for (int q = 0; q < 4; ++q)
+    for (std::size_t i = 0; i < intervals_; ++i) out[i] += c.weight[q] * scatter_[idx[q]][i];
+}
+
+bool SkyView::sky(const Vec3& d, std::vector<double>& out) const {
+  const Cell c = cell_of(d);
+  if (!c.inside) return false;
+  scatter(d, out);
+  const double w0 = c.weight[0] + c.weight[2], w1 = c.weight[1] + c.weight[3];
+  for (std::size_t i = 0; i < intervals_; ++i) out[i] += w0 * sky_[c.node][i] + w1 * sky_[c.node + 1][i];
+  return true;
+}
+
+}  // namespace eoir::scene

@@ -38,6 +38,10 @@ class Error : public std::runtime_error {
   Status status_;
 };
 
+// The shortest text that reads back as the same double ("179.9999",
+// "100000", "5e-324", "1e+308", "inf"): every number a message quotes.
+std::string number_text(double value);
+
 // Throws out_of_range naming `field` (and the value).
 [[noreturn]] void throw_not_finite(double value, std::string_view field);
 // Throws out_of_range naming `field` unless value is finite (inline: checks

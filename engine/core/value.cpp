@@ -1,18 +1,10 @@
 #include "core/value.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "core/error.hpp"
 
 namespace eoir {
-namespace {
-std::string text_of(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-}  // namespace
 
 const char* value_type_name(ValueType type) {
   switch (type) {
@@ -28,7 +20,7 @@ const char* value_type_name(ValueType type) {
 ValueType value_type_of(const Value& value) { return static_cast<ValueType>(value.index() + 1); }
 
 std::string Range::text() const {
-  return std::string(min_open ? "(" : "[") + text_of(min) + ", " + text_of(max) + (max_open ? ")" : "]");
+  return std::string(min_open ? "(" : "[") + number_text(min) + ", " + number_text(max) + (max_open ? ")" : "]");
 }
 
 double number_of(const Value& v, const std::string& field) {
@@ -41,7 +33,7 @@ std::int64_t integer_of(const Value& v, const std::string& field) {
   if (auto i = std::get_if<std::int64_t>(&v)) return *i;
   if (auto d = std::get_if<double>(&v)) {
     if (std::isfinite(*d) && std::floor(*d) == *d && std::fabs(*d) < 9e15) return static_cast<std::int64_t>(*d);
-    throw Error(Status::out_of_range, field + ": expects a whole number, got " + text_of(*d));
+    throw Error(Status::out_of_range, field + ": expects a whole number, got " + number_text(*d));
   }
   throw Error(Status::type_mismatch, field + ": expects an integer");
 }
@@ -64,10 +56,10 @@ const std::vector<double>& array_of(const Value& v, const std::string& field) {
 void check_range(double x, const Range& range, const std::string& field, const std::string& unit) {
   require_finite(x, field);
   if (range.min == 0 && range.min_open && !(x > 0))
-    throw Error(Status::out_of_range, field + ": must be > 0, got " + text_of(x));
+    throw Error(Status::out_of_range, field + ": must be > 0, got " + number_text(x));
   if (!range.contains(x))
     throw Error(Status::out_of_range,
-                field + ": must be in " + range.text() + (unit.empty() ? "" : " " + unit) + ", got " + text_of(x));
+                field + ": must be in " + range.text() + (unit.empty() ? "" : " " + unit) + ", got " + number_text(x));
 }
 
 void throw_unknown_choice(const std::string& field, const std::string& value, const std::string& list) {

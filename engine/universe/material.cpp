@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/read_file.hpp"
 #include "universe/json_document.hpp"
+#include "universe/sensor_parameters.hpp"
 
 namespace eoir::universe {
 namespace {
@@ -23,6 +24,20 @@ double number(const json& j, const std::string& key, const std::string& where) {
   const double v = j.at(key).get<double>();
   if (!std::isfinite(v)) corrupt(where + "." + key, "not finite");
   return v;
+}
+
+// An optional field of text (grid, extension, brdf.reason).
+void optional_string(const json& j, const std::string& key, const std::string& where) {
+  if (j.contains(key) && !j.at(key).is_string()) corrupt(where + key, "expected a string");
+}
+
+// schemas/material.schema.json's name pattern ^[a-z0-9_]+$, at most 63 bytes
+// as every name of the engine.
+bool is_material_name(const std::string& name) {
+  if (name.empty() || name.size() > 63) return false;
+  for (const char c : name)
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_')) return false;
+  return true;
 }
 
 std::vector<double> numbers(const json& j, const std::string& key, const std::string& where) {
@@ -47,8 +62,8 @@ void validate(const BrdfParameters& b, const std::string& field) {
                 {"beta", b.beta, BrdfParameters::max_sharpness}};
   for (const auto& c : checks)
     if (!std::isfinite(c.value) || c.value < 0 || c.value > c.max)
-      throw Error(Status::out_of_range, field + "." + c.name + ": must be in [0, " + std::to_string(c.max) +
-                                            "], got " + std::to_string(c.value));
+      throw Error(Status::out_of_range, field + "." + c.name + ": must be in [0, " + number_text(c.max) + "], got " +
+                                            number_text(c.value));
 }
 
 Material material_from_json(const json& doc, const std::string& origin) {
@@ -67,7 +82,23 @@ Material material_from_json(const json& doc, const std::string& origin) {
   if (!doc.contains("name") || !doc["name"].is_string() || doc["name"].get<std::string>().empty())
     corrupt(origin + ": name", "expected a non-empty string");
   m.name = doc["name"].get<std::string>();
+  if (!is_material_name(m.name))
+    corrupt(origin + ": name", "must be 1 to 63 of a-z, 0-9 and _ (schemas/material.schema.json)");
   if (m.name == gray_body_material) corrupt(origin + ": name", "gray_body is built in");
+  optional_string(doc, "grid", origin + ": ");
+  optional_string(doc, "extension", origin + ": ");
+  if (doc.contains("composition")) {
+    // Metadata of combined materials, checked as the schema has it.
+    const json& c = doc["composition"];
+    if (!c.is_array()) corrupt(origin + ": composition", "expected an array of {component, fraction}");
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      const std::string at = origin + ": composition[" + std::to_string(i) + "]";
+      if (!c[i].is_object() || c[i].size() != 2 || !c[i].contains("component") || !c[i]["component"].is_string())
+        corrupt(at, "expected {\"component\": string, \"fraction\": number}");
+      const double f = number(c[i], "fraction", at);
+      if (f < 0 || f > 1) corrupt(at + ".fraction", "must be in [0, 1], got " + number_text(f));
+    }
+  }
   if (doc.contains("description")) {
     if (!doc["description"].is_string()) corrupt(origin + ": description", "expected a string");
     m.description = doc["description"].get<std::string>();
@@ -84,13 +115,21 @@ Material material_from_json(const json& doc, const std::string& origin) {
   if (!doc.contains("brdf") || !doc["brdf"].is_object()) corrupt(origin + ": brdf", "missing");
   const json& b = doc["brdf"];
   const std::string where = origin + ": brdf";
+  for (auto it = b.begin(); it != b.end(); ++it)
+    if (it.key() != "k0" && it.key() != "k1" && it.key() != "alpha" && it.key() != "beta" && it.key() != "reason")
+      corrupt(where + "." + it.key(), "unknown field");
+  optional_string(b, "reason", where + ".");
   m.brdf = BrdfParameters{number(b, "k0", where), number(b, "k1", where), number(b, "alpha", where),
                           number(b, "beta", where)};
   try {
     validate(m.brdf, where);
   } catch (const Error& e) {
-    corrupt(origin, e.what());
+    throw Error(Status::corrupt_file, e.what());  // names the file and the field
   }
+  // A file's lobes have a sharpness (the schema's exclusiveMinimum; a flat
+  // lobe is k0's part).
+  if (!(m.brdf.alpha > 0)) corrupt(where + ".alpha", "must be > 0 (the forward lobe's sharpness), got 0");
+  if (!(m.brdf.beta > 0)) corrupt(where + ".beta", "must be > 0 (the backscatter lobe's sharpness), got 0");
   const std::vector<double> wl = numbers(doc, "wavelength_um", origin + ":");
   const std::vector<double> r = numbers(doc, "reflectance", origin + ":");
   if (wl.size() != r.size())
@@ -98,10 +137,19 @@ Material material_from_json(const json& doc, const std::string& origin) {
                                           " wavelengths");
   for (std::size_t i = 0; i < r.size(); ++i)
     if (r[i] < 0 || r[i] > 1)
-      corrupt(origin + ": reflectance[" + std::to_string(i) + "]", "must be in [0, 1], got " + std::to_string(r[i]));
+      corrupt(origin + ": reflectance[" + std::to_string(i) + "]", "must be in [0, 1], got " + number_text(r[i]));
   for (std::size_t i = 0; i < wl.size(); ++i)
     if (!(wl[i] > 0) || (i > 0 && !(wl[i] > wl[i - 1])))
       corrupt(origin + ": wavelength_um[" + std::to_string(i) + "]", "wavelengths must be positive and increase");
+  // The table covers every band a sensor may take: outside it the SRF would
+  // be 0 (black, emissivity 1) without a word.
+  const std::string band = number_text(sensor_bounds::min_band_um) + "-" + number_text(sensor_bounds::max_band_um) +
+                           " um (the bands a sensor may take)";
+  if (!wl.empty() && !(wl.front() <= sensor_bounds::min_band_um))
+    corrupt(origin + ": wavelength_um[0]", number_text(wl.front()) + " um: the table must cover " + band);
+  if (!wl.empty() && !(wl.back() >= sensor_bounds::max_band_um))
+    corrupt(origin + ": wavelength_um[" + std::to_string(wl.size() - 1) + "]",
+            number_text(wl.back()) + " um: the table must cover " + band);
   try {
     m.reflectance = TabulatedFunction(wl, r, origin + ": reflectance");
   } catch (const Error& e) {

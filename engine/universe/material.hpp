@@ -37,9 +37,11 @@ struct Material {
 constexpr const char* gray_body_material = "gray_body";
 
 // Parses one material document; `origin` names the file in messages.
-// Throws eoir::Error(corrupt_file) naming the origin and field: missing
-// fields, NaN, non-monotonic wavelengths, reflectance outside [0, 1],
-// BRDF parameters out of range.
+// Throws eoir::Error(corrupt_file) naming the origin and field: missing,
+// unknown or wrong-typed fields, names outside ^[a-z0-9_]+$ (63 bytes),
+// NaN, non-monotonic wavelengths, tables not covering 0.28-28 um,
+// reflectance outside [0, 1], BRDF parameters out of range (alpha and beta
+// > 0).
 Material material_from_json(const nlohmann::json& doc, const std::string& origin);
 // The same from a file (io for a missing file, corrupt_file for bad content).
 Material load_material(const std::string& path);

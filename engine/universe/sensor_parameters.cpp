@@ -58,11 +58,9 @@ void validate(const SensorParameters& p) {
   SensorParameters copy = p;
   for (const auto& spec : sensor_properties())
     if (p.saturation_enabled || std::string(spec.name) != "saturation_pairs") spec.set(copy, spec.get(p));
-  if (!(p.band_high_um > p.band_low_um)) {
-    std::ostringstream s;
-    s << "band_high_um: must be greater than band_low_um (" << p.band_high_um << " <= " << p.band_low_um << ")";
-    throw Error(Status::out_of_range, s.str());
-  }
+  if (!(p.band_high_um > p.band_low_um))
+    throw Error(Status::out_of_range, "band_high_um: must be greater than band_low_um (" +
+                                          number_text(p.band_high_um) + " <= " + number_text(p.band_low_um) + ")");
   // The pixel pitch (eqs. 21-22) against the diffraction width lambda_diff F#.
   const double width_cm = p.diffraction_wavelength_um * 1.0e-4 * p.f_number;
   for (const auto& [fov_deg, pixels, axis] :

@@ -31,8 +31,12 @@ constexpr double max_f_number = 1000.0;
 // 10 um to 10 km: below the focal length of any lens, above the largest telescopes.
 constexpr double min_focal_length_cm = 1.0e-3;
 constexpr double max_focal_length_cm = 1.0e6;
-// lambda_diff: from the shortest wavelength the engine models (spec 4.1.1).
-constexpr double min_diffraction_wavelength_um = 0.28;
+// The wavelengths the engine models (spec 4.1.1): sensor bands lie within
+// them, material tables cover them.
+constexpr double min_band_um = 0.28;
+constexpr double max_band_um = 28.0;
+// lambda_diff: from the shortest wavelength the engine models.
+constexpr double min_diffraction_wavelength_um = min_band_um;
 constexpr double max_diffraction_wavelength_um = 1000.0;
 // Integration times (and reference-pair times): 1 ns to 10^4 s.
 constexpr double min_integration_time_ms = 1.0e-6;

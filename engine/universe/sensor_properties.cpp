@@ -48,6 +48,7 @@ const std::vector<Spec>& sensor_properties() {
   static const std::vector<Spec> table = [] {
     std::vector<Spec> t;
     const Range fov_range{sensor_bounds::min_fov_deg, sensor_bounds::max_fov_deg};
+    const Range band_range{sensor_bounds::min_band_um, sensor_bounds::max_band_um};
     t.push_back(integer_property<P>("horizontal_pixels", "count",
                                     "Number of pixels in the horizontal direction (spec 5.2)",
                                     [](P& p) -> auto& { return p.horizontal_pixels; }, Range{0, 16384, true}));
@@ -58,9 +59,9 @@ const std::vector<Spec>& sensor_properties() {
     t.push_back(number_property<P>("vertical_fov_deg", "deg", "Full-angle vertical field of view (eq. 22)",
                                    [](P& p) -> auto& { return p.vertical_fov_deg; }, fov_range));
     t.push_back(number_property<P>("band_low_um", "um", "Low band edge wavelength (spec 5.3; 0.28-28 um, spec 4.1.1)",
-                                   [](P& p) -> auto& { return p.band_low_um; }, Range{0.28, 28.0}));
+                                   [](P& p) -> auto& { return p.band_low_um; }, band_range));
     t.push_back(number_property<P>("band_high_um", "um", "High band edge wavelength (spec 5.3; 0.28-28 um)",
-                                   [](P& p) -> auto& { return p.band_high_um; }, Range{0.28, 28.0}));
+                                   [](P& p) -> auto& { return p.band_high_um; }, band_range));
     t.push_back(integer_property<P>("spectral_intervals", "count", "Number of spectral intervals N (spec 5.3)",
                                     [](P& p) -> auto& { return p.spectral_intervals; }, Range{1, 100000}));
     t.push_back(number_property<P>("f_number", "", "F-number F/# (spec 5.4)", [](P& p) -> auto& { return p.f_number; },
@@ -94,11 +95,13 @@ const std::vector<Spec>& sensor_properties() {
     const auto set_wrms = wrms.set;
     wrms.set = [set_wrms](P& p, const Value& v) {
       set_wrms(p, v);
-      p.image_quality = ImageQuality::custom;
+      // The preset stays if this is its own W_rms (a state applies
+      // image_quality, then W_rms): a custom W_rms equal to a preset's
+      // stays custom, so that states load as they were saved (issue 25).
       const auto& presets = image_quality_presets();
-      for (std::size_t i = 0; i < presets.size(); ++i)
-        if (presets[i].wavefront_error_rms_waves == p.wavefront_error_rms_waves)
-          p.image_quality = static_cast<ImageQuality>(i);
+      const auto q = static_cast<std::size_t>(p.image_quality);
+      if (q >= presets.size() || presets[q].wavefront_error_rms_waves != p.wavefront_error_rms_waves)
+        p.image_quality = ImageQuality::custom;
     };
     t.push_back(wrms);
     t.push_back(number_property<P>("jitter_mrad", "mrad", "RMS line-of-sight jitter sigma (eq. 38)",

@@ -3,7 +3,6 @@
 #include <erfa.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -200,7 +199,8 @@ StarCatalog StarCatalog::load_binary(const std::string& path) {
 
 StarCatalog StarCatalog::load_csv(const std::string& path, double epoch_julian_year) {
   require_finite(epoch_julian_year, "star_catalogue.epoch_julian_year");
-  const std::string bytes = read_file(path, kMaxFileBytes, "star catalogues");
+  std::string bytes = read_file(path, kMaxFileBytes, "star catalogues");
+  if (bytes.rfind("\xEF\xBB\xBF", 0) == 0) bytes.erase(0, 3);  // a UTF-8 byte-order mark (spreadsheets write one)
 
   static const char* const kColumns[] = {"id",           "ra_deg",  "dec_deg", "pm_ra_mas_yr", "pm_dec_mas_yr",
                                          "parallax_mas", "v_mag",   "b_v"};
@@ -263,9 +263,9 @@ StarCatalog StarCatalog::load_csv(const std::string& path, double epoch_julian_y
       if (text.empty()) throw Error(Status::corrupt_file, where + kColumns[c] + ": empty");
       field_text.assign(text);
       char* end = nullptr;
-      errno = 0;
       const double value = std::strtod(field_text.c_str(), &end);
-      if (end == field_text.c_str() || *end != '\0' || errno == ERANGE)
+      // Underflow (ERANGE with a subnormal or zero) is a number; overflow is inf.
+      if (end == field_text.c_str() || *end != '\0')
         throw Error(Status::corrupt_file, where + kColumns[c] + ": '" + shown(text) + "' is not a number");
       if (!std::isfinite(value))
         throw Error(Status::corrupt_file, where + kColumns[c] + ": '" + shown(text) + "' is not a finite number");

@@ -79,6 +79,16 @@ int main(void) {
    * accepted and aborted the CLI's run when its truth was written. */
   FAILS(eoir_set_string(e, "Stars", "catalog_file", catalogue("latin1.csv", "caf\xe9,10,10,0,0,1,5,0.5\n")),
         EOIR_ERR_CORRUPT_FILE, "latin1.csv:2: id: not valid UTF-8 at byte 3");
+  /* Issue 25 item 11: a subnormal is a number (it was "'5e-324' is not a
+   * number"); a UTF-8 byte-order mark before the header is accepted (it was
+   * "id: missing column"). */
+  OK(eoir_set_string(e, "Stars", "catalog_file", catalogue("subnormal.csv", "a,10,10,5e-324,-5e-324,1e-310,5,0.5\n")));
+  write_text(at("bom.csv"), "\xEF\xBB\xBFid,ra_deg,dec_deg,pm_ra_mas_yr,pm_dec_mas_yr,parallax_mas,v_mag,b_v\n"
+                            "a,10,10,0,0,1,5,0.5\n");
+  OK(eoir_set_string(e, "Stars", "catalog_file", at("bom.csv")));
+  FAILS(eoir_set_string(e, "Stars", "catalog_file", catalogue("overflow.csv", "a,10,10,1e999,0,1,5,0.5\n")),
+        EOIR_ERR_CORRUPT_FILE, "overflow.csv:2: pm_ra_mas_yr: '1e999' is not a finite number");
+  OK(eoir_set_string(e, "Stars", "catalog_file", at("good.csv")));
 
   /* the refusals left the good catalogue in place, and it renders */
   OK(eoir_get_string(e, "Stars", "catalog_file", name, sizeof name));

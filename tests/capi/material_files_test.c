@@ -259,6 +259,52 @@ int main(void) {
     FAILS(eoir_material_load(e, at("desc.json")), EOIR_ERR_CORRUPT_FILE, "desc.json: description: expected a string");
   }
 
+  /* Issue 25 item 8: a table must cover 0.28-28 um, every band a sensor may
+   * take (outside it the SRF would be a silent 0: black); the lobes of eq. 1
+   * need a sharpness (alpha, beta > 0 as in the schema); names follow the
+   * schema's ^[a-z0-9_]+$; the other optional fields are typed. Each is a
+   * corrupt file naming the field. */
+  FAILS(eoir_material_load(e, material("visible.json", "visible", lambert, "[0.4, 0.7]", "[0.5, 0.5]", "")),
+        EOIR_ERR_CORRUPT_FILE, "visible.json: wavelength_um[0]: 0.4 um: the table must cover 0.28-28 um");
+  FAILS(eoir_material_load(e, material("short.json", "short_ir", lambert, "[0.28, 1.0, 14.0]", "[0.5, 0.5, 0.5]",
+                                       "")),
+        EOIR_ERR_CORRUPT_FILE, "short.json: wavelength_um[2]: 14 um: the table must cover 0.28-28 um");
+  FAILS(eoir_material_load(e, material("alpha0.json", "flat", "{\"k0\": 0.5, \"k1\": 0.5, \"alpha\": 0, \"beta\": 1}",
+                                       wl4, r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "alpha0.json: brdf.alpha: must be > 0");
+  FAILS(eoir_material_load(e, material("beta0.json", "flat", "{\"k0\": 0.5, \"k1\": 0.5, \"alpha\": 1, \"beta\": 0.0}",
+                                       wl4, r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "beta0.json: brdf.beta: must be > 0");
+  FAILS(eoir_material_load(e, material("upper.json", "Gold-Leaf", lambert, wl4, r4, "")), EOIR_ERR_CORRUPT_FILE,
+        "upper.json: name: must be 1 to 63 of a-z, 0-9 and _");
+  FAILS(eoir_material_load(e, material("space.json", "gold leaf", lambert, wl4, r4, "")), EOIR_ERR_CORRUPT_FILE,
+        "space.json: name");
+  FAILS(eoir_material_load(e, material("long.json", "a123456789a123456789a123456789a123456789a123456789a123456789abcd",
+                                       lambert, wl4, r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "long.json: name");
+  FAILS(eoir_material_load(e, material("grid.json", "typed", lambert, wl4, r4, ", \"grid\": 5")), EOIR_ERR_CORRUPT_FILE,
+        "grid.json: grid: expected a string");
+  FAILS(eoir_material_load(e, material("extension.json", "typed", lambert, wl4, r4, ", \"extension\": [1]")),
+        EOIR_ERR_CORRUPT_FILE, "extension.json: extension: expected a string");
+  FAILS(eoir_material_load(e, material("reason.json", "typed", "{\"k0\": 1, \"k1\": 0, \"alpha\": 1, \"beta\": 1, \"reason\": 2}",
+                                       wl4, r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "reason.json: brdf.reason: expected a string");
+  FAILS(eoir_material_load(e, material("gloss.json", "typed", "{\"k0\": 1, \"k1\": 0, \"alpha\": 1, \"beta\": 1, \"gloss\": 2}",
+                                       wl4, r4, "")),
+        EOIR_ERR_CORRUPT_FILE, "gloss.json: brdf.gloss: unknown field");
+  FAILS(eoir_material_load(e, material("comp.json", "typed", lambert, wl4, r4,
+                                       ", \"composition\": [{\"component\": \"grass\", \"fraction\": 1.5}]")),
+        EOIR_ERR_CORRUPT_FILE, "comp.json: composition[0].fraction: must be in [0, 1], got 1.5");
+  FAILS(eoir_material_load(e, material("comp2.json", "typed", lambert, wl4, r4, ", \"composition\": {}")),
+        EOIR_ERR_CORRUPT_FILE, "comp2.json: composition");
+  FAILS(eoir_set_string(e, "Sat", "material", "visible"), EOIR_ERR_UNKNOWN_NAME, "'visible'");
+  /* The schema's optional fields, well typed, load. */
+  OK(eoir_material_load(e, material("typed.json", "typed_ok",
+                                    "{\"k0\": 1, \"k1\": 0, \"alpha\": 1, \"beta\": 1, \"reason\": \"test\"}", wl4,
+                                    r4,
+                                    ", \"grid\": \"eoir-grid-1\", \"extension\": \"none\", "
+                                    "\"composition\": [{\"component\": \"grass\", \"fraction\": 0.5}]")));
+
   eoir_engine_destroy(e);
   {
     char cmd[4200];

@@ -32,6 +32,13 @@ int main(void) {
   FAILS(eoir_set_number(e, "Satellite1", "temperature_K", -1.0), EOIR_ERR_OUT_OF_RANGE, "temperature_K");
   FAILS(eoir_set_number(e, "Satellite1", "temperature_K", 0.0 / 0.0), EOIR_ERR_OUT_OF_RANGE, "temperature_K");
   FAILS(eoir_set_number(e, "Satellite1", "reflectance", 1.5), EOIR_ERR_OUT_OF_RANGE, "reflectance");
+  /* Issue 25 item 11: messages quote a value with the digits that read back
+   * as it (179.9999 was "got 180" against a 179.9 limit; 5e-324 was 0). */
+  FAILS(eoir_set_number(e, "Sensor1", "horizontal_fov_deg", 179.9999), EOIR_ERR_OUT_OF_RANGE,
+        "horizontal_fov_deg: must be in [1e-06, 179.9] deg, got 179.9999");
+  FAILS(eoir_set_number(e, "Satellite1", "temperature_K", -5e-324), EOIR_ERR_OUT_OF_RANGE, "got -5e-324");
+  FAILS(eoir_set_number(e, "Satellite1", "reflectance", 1.0000000000000002), EOIR_ERR_OUT_OF_RANGE,
+        "got 1.0000000000000002");
   FAILS(eoir_set_number(e, "Satellite1", "wingspan", 1.0), EOIR_ERR_UNKNOWN_NAME, "wingspan");
   FAILS(eoir_set_string(e, "Satellite1", "temperature_K", "hot"), EOIR_ERR_TYPE_MISMATCH, "temperature_K");
   FAILS(eoir_set_string(e, "Earth", "shape", "box"), EOIR_ERR_NOT_ALLOWED, "fixed");
@@ -56,6 +63,16 @@ int main(void) {
   OK(eoir_set_number(e, "Sensor1", "wavefront_error_rms_waves", 0.21));
   OK(eoir_get_string(e, "Sensor1", "image_quality", s, sizeof s));
   CHECK(strcmp(s, "custom") == 0);
+  /* A custom W_rms equal to a preset's stays custom, and a preset given its
+   * own W_rms stays itself: states apply image_quality, then W_rms, and
+   * load as saved (issue 25, round trips; it became "mild"). */
+  OK(eoir_set_number(e, "Sensor1", "wavefront_error_rms_waves", 0.14));
+  OK(eoir_get_string(e, "Sensor1", "image_quality", s, sizeof s));
+  CHECK(strcmp(s, "custom") == 0);
+  OK(eoir_set_string(e, "Sensor1", "image_quality", "mild"));
+  OK(eoir_set_number(e, "Sensor1", "wavefront_error_rms_waves", 0.14));
+  OK(eoir_get_string(e, "Sensor1", "image_quality", s, sizeof s));
+  CHECK(strcmp(s, "mild") == 0);
   {
     double nine[18];
     int i;

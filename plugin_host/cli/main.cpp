@@ -4,6 +4,7 @@
 //
 // Exit status: 0 success, 1 bad command line, 2 bad scenario or an engine
 // error (the message names the JSON path or the engine's complaint).
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <cmath>
@@ -116,7 +117,7 @@ const std::vector<CommandSpec>& commands() {
        "  --sensor NAME     sensor of the scenario\n"
        "  --target NAME     target object (needed by \"EOIR Sensor-to-Target Metrics\")\n",
        {"--provider", "--sensor", "--target", "--start", "--stop", "--step", "--format", "--out"},
-       {"--quiet"}},
+       {"--quiet", "--allow-paths-outside"}},
       {"run",
        "usage: eoir run SCENARIO --out DIR [--start ISO] [--stop ISO] [--step SECONDS]\n"
        "                [--sensor NAME ...] [--cube] [--save-state FILE] [--quiet]\n"
@@ -136,7 +137,7 @@ const std::vector<CommandSpec>& commands() {
        "                    in a TIMES table extension)\n"
        "  --save-state FILE save the engine state after the last frame (.scd)\n",
        {"--out", "--start", "--stop", "--step", "--sensor", "--save-state"},
-       {"--quiet", "--cube"}},
+       {"--quiet", "--cube", "--allow-paths-outside"}},
       {"access",
        "usage: eoir access SCENARIO --sensor NAME --target NAME --min-snr X\n"
        "                   [--start ISO] [--stop ISO] [--step SECONDS]\n"
@@ -146,7 +147,7 @@ const std::vector<CommandSpec>& commands() {
        "access constraint): the SNR is sampled every step and each crossing is refined\n"
        "by bisection to 1 ms.\n",
        {"--sensor", "--target", "--min-snr", "--start", "--stop", "--step", "--format", "--out"},
-       {"--quiet"},
+       {"--quiet", "--allow-paths-outside"},
        true},
       {"validate",
        "usage: eoir validate SCENARIO\n"
@@ -156,7 +157,7 @@ const std::vector<CommandSpec>& commands() {
        "engine, every sensor's parameters together (band edges in order...), and every\n"
        "object's motion at each time step from start to stop.\n",
        {},
-       {}},
+       {"--allow-paths-outside"}},
       {"properties",
        "usage: eoir properties KIND [--format table|json]\n"
        "\n"
@@ -174,7 +175,7 @@ const std::vector<CommandSpec>& commands() {
        "start) and saves the whole engine state as a .scd file (schemas/scd.schema.json),\n"
        "written to a temporary file and renamed.\n",
        {"--out", "--time"},
-       {}},
+       {"--allow-paths-outside"}},
       {"load-state",
        "usage: eoir load-state FILE [--sensor NAME]\n"
        "\n"
@@ -206,6 +207,8 @@ std::string command_help(const CommandSpec& c) {
   if (c.name == "report" || c.name == "access")
     h += "  --format json|csv (default json); --out FILE (written atomically; default stdout)\n";
   if (c.name == "report" || c.name == "run" || c.name == "access") h += "  --quiet           no progress on stderr\n";
+  if (std::find(c.flags.begin(), c.flags.end(), "--allow-paths-outside") != c.flags.end())
+    h += "  --allow-paths-outside  let the scenario name files outside its folder (README \"Bounds\")\n";
   if (c.engine) h += "\ncommon options:\n" + std::string(kEngineOptions);
   return h;
 }
@@ -304,6 +307,13 @@ struct Options {
     return it->second.back();
   }
 };
+
+// The scenario's file policy from the command line (scenario.hpp).
+ScenarioOptions scenario_options(const Options& o) {
+  ScenarioOptions so;
+  so.allow_paths_outside = o.flags.count("--allow-paths-outside") > 0;
+  return so;
+}
 
 // `eoir COMMAND --help`
 struct HelpRequested {
@@ -406,7 +416,11 @@ TimeRange parse_time_range(const Options& o) {
   TimeRange r;
   if (const auto step = o.get("--step")) {
     r.step_s = parse_seconds(*step, "--step");
-    if (!(*r.step_s > 0)) throw UsageError("--step: must be positive, not " + *step);
+    try {
+      check_step(*r.step_s, "--step");
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
   }
   if (const auto start = o.get("--start")) r.start_s = parse_time_option(*start, "--start");
   if (const auto stop = o.get("--stop")) r.stop_s = parse_time_option(*stop, "--stop");
@@ -441,10 +455,10 @@ int cmd_report(const std::vector<std::string>& args, const Global& g) {
   if (format != "json" && format != "csv") throw UsageError("--format: '" + format + "' is not json or csv");
   const TimeRange range = parse_time_range(o);
 
-  const Scenario sc = load_scenario(*scenario_file);
+  const Scenario sc = load_scenario(*scenario_file, scenario_options(o));
   const double t0 = range.start_s.value_or(sc.start_s);
   const std::vector<double> times =
-      step_times(t0, default_stop(range, sc), range.step_s.value_or(sc.step_s), "report", 10000000);
+      step_times(t0, default_stop(range, sc), range.step_s.value_or(sc.step_s), "report", kMaxReportSteps);
 
   Engine engine(config_of(choice));
   Session session(engine, sc);
@@ -511,7 +525,7 @@ int cmd_run(const std::vector<std::string>& args, const Global& g) {
   if (out_dir->empty()) throw UsageError("--out: empty directory name");
   const TimeRange range = parse_time_range(o);
 
-  const Scenario sc = load_scenario(*scenario_file);
+  const Scenario sc = load_scenario(*scenario_file, scenario_options(o));
   const double t0 = range.start_s.value_or(sc.start_s);
   opt.times = step_times(t0, default_stop(range, sc), range.step_s.value_or(sc.step_s), "run", 9999);
   opt.scenario_file = *scenario_file;
@@ -554,7 +568,7 @@ int cmd_access(const std::vector<std::string>& args, const Global& g) {
   }
   const TimeRange range = parse_time_range(o);
 
-  const Scenario sc = load_scenario(*scenario_file);
+  const Scenario sc = load_scenario(*scenario_file, scenario_options(o));
   // Times in whole milliseconds on the host time line (iso_time.hpp).
   const auto to_ms = [](double t) { return static_cast<int64_t>(std::llround(t * 1000.0)); };
   const int64_t t0 = to_ms(range.start_s.value_or(sc.start_s));
@@ -564,7 +578,7 @@ int cmd_access(const std::vector<std::string>& args, const Global& g) {
                      format_iso(static_cast<double>(t0) / 1000.0));
   const double dt = range.step_s.value_or(sc.step_s);
   const int64_t dt_ms = to_ms(dt);
-  if (dt_ms < 1) throw UsageError("--step: " + std::to_string(dt) + " s is below the 1 ms resolution of times");
+  if (dt_ms < 1) throw UsageError("--step: " + nlohmann::json(dt).dump() + " s is below the 1 ms resolution of times");
   std::vector<int64_t> samples;
   for (int64_t t = t0; t <= t1; t += dt_ms) {
     samples.push_back(t);
@@ -683,20 +697,17 @@ int cmd_validate(const std::vector<std::string>& args, const Global& g) {
   const Options o = parse_options(args, *find_command("validate"));
   const EngineChoice choice = engine_choice(o, g);
   if (!o.scenario) throw UsageError("validate: missing SCENARIO");
-  const Scenario sc = load_scenario(*o.scenario);
+  const Scenario sc = load_scenario(*o.scenario, scenario_options(o));
+  // The scenario's own times, refused as report refuses them.
+  const std::vector<double> times = step_times(sc.start_s, sc.stop_s, sc.step_s, "validate", kMaxReportSteps);
   Engine engine(config_of(choice));
   Session session(engine, sc);
-  std::size_t steps = 0;
-  for (long long k = 0;; ++k) {
-    const double t = sc.start_s + static_cast<double>(k) * sc.step_s;
-    if (t > sc.stop_s + 1e-6) break;
-    session.set_time(t);
-    if (k == 0) check_sensors(engine, sc, t);
-    if (++steps > 1000000) break;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    session.set_time(times[k]);
+    if (k == 0) check_sensors(engine, sc, times[k]);
   }
-  session.set_time(sc.stop_s);
   std::printf("%s: valid (scenario '%s': %zu objects, %zu sensors, %zu time steps)\n", o.scenario->c_str(),
-              sc.name.c_str(), sc.objects.size(), sc.sensors.size(), steps);
+              sc.name.c_str(), sc.objects.size(), sc.sensors.size(), times.size());
   return 0;
 }
 
@@ -893,7 +904,7 @@ int cmd_save_state(const std::vector<std::string>& args, const Global& g) {
   if (!out || out->empty()) throw UsageError("save-state: missing --out FILE");
   std::optional<double> at;
   if (const auto t = o.get("--time")) at = parse_time_option(*t, "--time");
-  const Scenario sc = load_scenario(*o.scenario);
+  const Scenario sc = load_scenario(*o.scenario, scenario_options(o));
   Engine engine(config_of(choice));
   Session session(engine, sc);
   const double t = at.value_or(sc.start_s);

@@ -397,81 +397,12 @@ void write_text_atomically(const std::string& path, const std::string& text) {
   try {
     io::write_file_atomically(path, text.data(), text.size());
   } catch (const io::ImageIoError& e) {
-    throw std::runtime_error(std::string("cannot write summary: ") + e.what());
+    throw std::runtime_error("cannot write " + fs::path(path).filename().string() + ": " + e.what());
   }
 }
 
-}  // namespace
-
-io::FitsHeader frame_fits_header(Engine& engine, const Scenario& sc, const SensorSpec& s, std::size_t index,
-                                 int32_t kind) {
-  RunContext ctx(engine, sc);
-  const std::string where = "FITS header of " + s.name;
-  const eoir_image_info in = ctx.info(s.name, kind, where);
-  switch (kind) {
-    case EOIR_IMAGE_SCENE_RADIANCE:
-      return ctx.header(s, index, in, "scene_radiance", kBunitRadiance);
-    case EOIR_IMAGE_SENSOR_ELECTRONS:
-      return ctx.header(s, index, in, "sensor_electrons", kBunitElectrons);
-    case EOIR_IMAGE_SENSOR_MEAN:
-      return ctx.header(s, index, in, "sensor_mean", kBunitElectrons);
-    default:
-      throw EngineError(where + ": image kind " + std::to_string(kind) + " is not written to FITS",
-                        EOIR_ERR_OUT_OF_RANGE);
-  }
-}
-
-std::string frame_truth_json(Engine& engine, const Scenario& sc, const std::string& sensor) {
-  RunContext ctx(engine, sc);
-  const std::string where = "truth of " + sensor;
-  const eoir_image_info in = ctx.info(sensor, EOIR_IMAGE_SENSOR_ELECTRONS, where);
-  return ctx.truth(sensor, where, in).dump(2) + "\n";
-}
-
-std::string file_stem(const std::string& name) {
-  std::string out = name;
-  for (char& c : out) {
-    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '.' ||
-                    c == '_' || c == '-';
-    if (!ok) c = '_';
-  }
-  if (out.empty() || out[0] == '.') out.insert(out.begin(), '_');
-  return out;
-}
-
-std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt) {
-  // Which sensors, in scenario order (or the order given).
-  std::vector<const SensorSpec*> sensors;
-  if (opt.sensors.empty()) {
-    for (const SensorSpec& s : sc.sensors) sensors.push_back(&s);
-  } else {
-    for (const std::string& name : opt.sensors) {
-      const SensorSpec* s = sc.find_sensor(name);
-      if (s == nullptr) {
-        std::string known;
-        std::vector<std::string> names;
-        for (const SensorSpec& k : sc.sensors) {
-          known += (known.empty() ? "'" : ", '") + k.name + "'";
-          names.push_back(k.name);
-        }
-        throw std::runtime_error("--sensor: unknown sensor '" + name + "' in " + opt.scenario_file +
-                                 did_you_mean(name, names) + "; sensors: " + (known.empty() ? "(none)" : known));
-      }
-      if (std::find(sensors.begin(), sensors.end(), s) == sensors.end()) sensors.push_back(s);
-    }
-  }
-  if (sensors.empty()) throw std::runtime_error(opt.scenario_file + ": the scenario has no sensors to render");
-  // Two sensors must not share file names.
-  for (std::size_t i = 0; i < sensors.size(); ++i)
-    for (std::size_t j = i + 1; j < sensors.size(); ++j)
-      if (file_stem(sensors[i]->name) == file_stem(sensors[j]->name))
-        throw std::runtime_error("sensors '" + sensors[i]->name + "' and '" + sensors[j]->name +
-                                 "' would write the same file names ('" + file_stem(sensors[i]->name) + "_...')");
-  if (opt.times.size() > 9999)
-    throw std::runtime_error("run: " + std::to_string(opt.times.size()) +
-                             " time steps; at most 9999 per run (use a larger --step)");
-
-  make_out_dir(opt.out_dir);
+std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& opt,
+                         const std::vector<const SensorSpec*>& sensors) {
   Session session(engine, sc);
   RunContext ctx(engine, sc);
 
@@ -632,14 +563,115 @@ std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt
   summary["units"] = {{"radiance", kBunitRadiance}, {"electrons", kBunitElectrons}};
   summary["frames"] = frames;
   if (opt.cube) summary["cubes"] = cube_files;
-  write_text_atomically((dir / "summary.json").string(), summary.dump(2) + "\n");
+  summary["complete"] = true;
   if (!opt.save_state.empty()) {
     engine.check(engine.api().state_save(engine.handle(), opt.save_state.c_str()), "--save-state " + opt.save_state);
     if (!opt.quiet) std::fprintf(stderr, "eoir run: saved the engine state to %s\n", opt.save_state.c_str());
   }
+  write_text_atomically((dir / "summary.json").string(), summary.dump(2) + "\n");  // last
   if (!opt.quiet)
     std::fprintf(stderr, "eoir run: wrote %zu frames to %s (summary.json)\n", done, opt.out_dir.c_str());
   return done;
 }
+
+
+}  // namespace
+
+io::FitsHeader frame_fits_header(Engine& engine, const Scenario& sc, const SensorSpec& s, std::size_t index,
+                                 int32_t kind) {
+  RunContext ctx(engine, sc);
+  const std::string where = "FITS header of " + s.name;
+  const eoir_image_info in = ctx.info(s.name, kind, where);
+  switch (kind) {
+    case EOIR_IMAGE_SCENE_RADIANCE:
+      return ctx.header(s, index, in, "scene_radiance", kBunitRadiance);
+    case EOIR_IMAGE_SENSOR_ELECTRONS:
+      return ctx.header(s, index, in, "sensor_electrons", kBunitElectrons);
+    case EOIR_IMAGE_SENSOR_MEAN:
+      return ctx.header(s, index, in, "sensor_mean", kBunitElectrons);
+    default:
+      throw EngineError(where + ": image kind " + std::to_string(kind) + " is not written to FITS",
+                        EOIR_ERR_OUT_OF_RANGE);
+  }
+}
+
+std::string frame_truth_json(Engine& engine, const Scenario& sc, const std::string& sensor) {
+  RunContext ctx(engine, sc);
+  const std::string where = "truth of " + sensor;
+  const eoir_image_info in = ctx.info(sensor, EOIR_IMAGE_SENSOR_ELECTRONS, where);
+  return ctx.truth(sensor, where, in).dump(2) + "\n";
+}
+
+std::string file_stem(const std::string& name) {
+  std::string out = name;
+  for (char& c : out) {
+    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '.' ||
+                    c == '_' || c == '-';
+    if (!ok) c = '_';
+  }
+  if (out.empty() || out[0] == '.') out.insert(out.begin(), '_');
+  return out;
+}
+
+std::size_t run_frames(Engine& engine, const Scenario& sc, const RunOptions& opt) {
+  // Which sensors, in scenario order (or the order given).
+  std::vector<const SensorSpec*> sensors;
+  if (opt.sensors.empty()) {
+    for (const SensorSpec& s : sc.sensors) sensors.push_back(&s);
+  } else {
+    for (const std::string& name : opt.sensors) {
+      const SensorSpec* s = sc.find_sensor(name);
+      if (s == nullptr) {
+        std::string known;
+        std::vector<std::string> names;
+        for (const SensorSpec& k : sc.sensors) {
+          known += (known.empty() ? "'" : ", '") + k.name + "'";
+          names.push_back(k.name);
+        }
+        throw std::runtime_error("--sensor: unknown sensor '" + name + "' in " + opt.scenario_file +
+                                 did_you_mean(name, names) + "; sensors: " + (known.empty() ? "(none)" : known));
+      }
+      if (std::find(sensors.begin(), sensors.end(), s) == sensors.end()) sensors.push_back(s);
+    }
+  }
+  if (sensors.empty()) throw std::runtime_error(opt.scenario_file + ": the scenario has no sensors to render");
+  // Two sensors must not share file names.
+  for (std::size_t i = 0; i < sensors.size(); ++i)
+    for (std::size_t j = i + 1; j < sensors.size(); ++j)
+      if (file_stem(sensors[i]->name) == file_stem(sensors[j]->name))
+        throw std::runtime_error("sensors '" + sensors[i]->name + "' and '" + sensors[j]->name +
+                                 "' would write the same file names ('" + file_stem(sensors[i]->name) + "_...')");
+  if (opt.times.size() > 9999)
+    throw std::runtime_error("run: " + std::to_string(opt.times.size()) +
+                             " time steps; at most 9999 per run (use a larger --step)");
+
+  make_out_dir(opt.out_dir);
+  // A reader tells a complete run from an interrupted or failed one (run.hpp):
+  // INCOMPLETE exists until summary.json, written last, says "complete": true.
+  // A summary left by an earlier run into the same folder goes first.
+  const fs::path dir(opt.out_dir);
+  const std::string marker = (dir / kIncompleteMarker).string();
+  const std::string started = "eoir run of " + opt.scenario_file +
+                              ": frames are being written here; this file is removed once summary.json is written "
+                              "(\"complete\": true). A folder holding it is an interrupted or failed run.\n";
+  write_text_atomically(marker, started);
+  std::error_code ec;
+  fs::remove(dir / "summary.json", ec);
+  if (ec) throw std::runtime_error("cannot remove the earlier " + (dir / "summary.json").string() + ": " + ec.message());
+  try {
+    const std::size_t done = write_frames(engine, sc, opt, sensors);
+    if (!fs::remove(marker, ec) || ec)
+      throw std::runtime_error("cannot remove " + marker + (ec ? ": " + ec.message() : std::string()));
+    return done;
+  } catch (const std::exception& e) {
+    try {
+      write_text_atomically(marker, started + "failed: " + e.what() + "\n");
+    } catch (const std::exception&) {
+      // the marker stays as it was: still incomplete
+    }
+    throw;
+  }
+}
+
 
 }  // namespace eoir::cli

@@ -12,6 +12,9 @@
 
 namespace eoir::cli {
 
+// The marker file of a run in progress (or interrupted) in the output folder.
+constexpr const char* kIncompleteMarker = "INCOMPLETE";
+
 struct RunOptions {
   std::string scenario_file;
   std::string out_dir;
@@ -32,6 +35,11 @@ struct RunOptions {
 //                                    (eoir_truth_get; schemas/truth.schema.json)
 // then summary.json. File names keep [A-Za-z0-9._-] of the sensor name and
 // replace other characters with '_'.
+// Complete or not (issue 25 item 12): DIR/INCOMPLETE is written before the
+// first frame (and an earlier summary.json removed); summary.json, written
+// last, has "complete": true, and INCOMPLETE is removed after it. A failed
+// run leaves INCOMPLETE with a line "failed: WHY"; a killed one leaves it
+// as written. A run is complete iff summary.json exists.
 // Throws EngineError, ScenarioError or std::runtime_error naming the problem.
 // Returns the number of frames written.
 std::size_t run_frames(Engine& engine, const Scenario& scenario, const RunOptions& options);

@@ -10,6 +10,7 @@
 #include "iso_time.hpp"
 #include "json_guard.hpp"
 #include "suggest.hpp"
+#include "time_steps.hpp"
 
 namespace eoir::cli {
 namespace {
@@ -17,6 +18,7 @@ namespace {
 using nlohmann::json;
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kEarthEquatorialRadiusM = 6378137.0;  // WGS84
+constexpr double kMaxOrbitRadiusM = 1e14;               // the engine's positions (README "Bounds")
 
 [[noreturn]] void fail(const std::string& path, const std::string& why) { throw ScenarioError(path + ": " + why); }
 
@@ -96,6 +98,36 @@ void check_perigee(double perigee_m, const std::string& path) {
   }
 }
 
+// A file named by property `path` of the scenario `file` (ScenarioOptions):
+// the path to read, relative to the scenario's folder; refused outside it
+// with one message whether the file exists or not.
+std::string named_file(const std::string& file, const std::string& named, const std::string& path,
+                       const ScenarioOptions& options) {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::path(file).parent_path();
+  const fs::path resolved = (fs::path(named).is_relative() ? folder / named : fs::path(named)).lexically_normal();
+  if (options.allow_paths_outside) return resolved.string();
+  std::error_code folder_error, file_error;
+  const fs::path base = fs::weakly_canonical(fs::absolute(folder.empty() ? fs::path(".") : folder), folder_error);
+  const fs::path real = fs::weakly_canonical(fs::absolute(resolved), file_error);
+  const fs::path inside = real.lexically_relative(base);
+  if (folder_error || file_error || inside.empty() || *inside.begin() == "..")
+    fail(path, "'" + named + "' lies outside the scenario's folder; files a scenario names are relative to it and "
+                             "inside it (eoir --allow-paths-outside, Python allow_paths_outside=True: read others)");
+  return resolved.string();
+}
+
+// Resolves every file-valued property (named *_file) of a properties object.
+void resolve_named_files(json& properties, const std::string& file, const std::string& path,
+                         const ScenarioOptions& options) {
+  for (auto it = properties.begin(); it != properties.end(); ++it) {
+    const std::string& key = it.key();
+    const bool names_file = key.size() > 5 && key.compare(key.size() - 5, 5, "_file") == 0;
+    if (names_file && it->is_string() && !it->get<std::string>().empty())
+      *it = named_file(file, it->get<std::string>(), path + "." + key, options);
+  }
+}
+
 Attitude parse_attitude(const json& j, const std::string& path, bool sensor) {
   need_object(j, path);
   Attitude a;
@@ -172,13 +204,17 @@ Motion parse_motion(const json& j, const std::string& path) {
     if (j.contains("central_body") && get_string(j, path, "central_body") != "Earth")
       fail(path + ".central_body", "only \"Earth\" is supported");
     KeplerElements el;
-    el.semi_major_axis_m = get_number(j, path, "semi_major_axis_km") * 1e3;
+    const double a_km = get_number(j, path, "semi_major_axis_km");
+    el.semi_major_axis_m = a_km * 1e3;
     el.eccentricity = get_number_or(j, path, "eccentricity", 0.0);
     el.inclination = get_number_or(j, path, "inclination_deg", 0.0) * kDeg;
     el.raan = get_number_or(j, path, "raan_deg", 0.0) * kDeg;
     el.arg_perigee = get_number_or(j, path, "arg_perigee_deg", 0.0) * kDeg;
-    if (!(el.semi_major_axis_m > 0)) fail(path + ".semi_major_axis_km", "must be positive");
+    if (!(a_km > 0)) fail(path + ".semi_major_axis_km", "must be positive, got " + json(a_km).dump());
     if (!(el.eccentricity >= 0 && el.eccentricity < 1)) fail(path + ".eccentricity", "must be in [0, 1)");
+    if (!(el.semi_major_axis_m * (1 + el.eccentricity) <= kMaxOrbitRadiusM))
+      fail(path + ".semi_major_axis_km", json(a_km).dump() + " km puts the apogee beyond 1e11 km (the engine places "
+                                         "objects within 1e14 m of the Earth)");
     const bool has_true = j.contains("true_anomaly_deg"), has_mean = j.contains("mean_anomaly_deg");
     if (has_true && has_mean) fail(path, "give true_anomaly_deg or mean_anomaly_deg, not both");
     if (has_mean)
@@ -254,7 +290,7 @@ const SensorSpec* Scenario::find_sensor(const std::string& n) const {
   return nullptr;
 }
 
-Scenario parse_scenario(const json& doc, const std::string& file) {
+Scenario parse_scenario(const json& doc, const std::string& file, const ScenarioOptions& options) {
   Scenario sc;
   sc.file = file;
   const std::string root = "scenario";
@@ -281,7 +317,11 @@ Scenario parse_scenario(const json& doc, const std::string& file) {
   }
   if (sc.stop_s < sc.start_s) fail("stop", "is before start");
   sc.step_s = get_number_or(doc, root, "step_s", 60.0);
-  if (!(sc.step_s > 0)) fail("step_s", "must be positive");
+  try {
+    check_step(sc.step_s, "step_s");
+  } catch (const std::invalid_argument& e) {
+    throw ScenarioError(e.what());
+  }
 
   static const std::set<std::string> bodies{"Sun",     "Mercury", "Venus",  "Earth",   "Mars",
                                             "Jupiter", "Saturn",  "Uranus", "Neptune", "Moon"};
@@ -317,14 +357,7 @@ Scenario parse_scenario(const json& doc, const std::string& file) {
       sc.stars = true;
       if (st.contains("properties")) {
         if (!st["properties"].is_object()) fail("stars.properties", "must be an object");
-        json props = st["properties"];
-        // A relative catalogue path is relative to the scenario file.
-        if (props.contains("catalog_file") && props["catalog_file"].is_string()) {
-          const std::string f = props["catalog_file"].get<std::string>();
-          if (!f.empty() && std::filesystem::path(f).is_relative())
-            props["catalog_file"] = (std::filesystem::path(file).parent_path() / f).lexically_normal().string();
-        }
-        sc.body_properties.push_back({"Stars", props, "stars"});
+        sc.body_properties.push_back({"Stars", st["properties"], "stars"});
       }
     } else if (st.is_boolean()) {
       sc.stars = st.get<bool>();
@@ -390,10 +423,14 @@ Scenario parse_scenario(const json& doc, const std::string& file) {
   };
   for (const auto& o : sc.objects) check_target(o.attitude, o.path + ".attitude", o.name);
   for (const auto& s : sc.sensors) check_target(s.pointing, s.path + ".pointing", s.parent);
+  // Every property object a session applies: the files they name.
+  for (auto& b : sc.body_properties) resolve_named_files(b.properties, file, b.path + ".properties", options);
+  for (auto& o : sc.objects) resolve_named_files(o.properties, file, o.path + ".properties", options);
+  for (auto& s : sc.sensors) resolve_named_files(s.parameters, file, s.path + ".parameters", options);
   return sc;
 }
 
-Scenario load_scenario(const std::string& file) {
+Scenario load_scenario(const std::string& file, const ScenarioOptions& options) {
   json doc;
   try {
     std::string text;
@@ -410,7 +447,7 @@ Scenario load_scenario(const std::string& file) {
     throw ScenarioError(file + ": " + e.what());
   }
   try {
-    return parse_scenario(doc, file);
+    return parse_scenario(doc, file, options);
   } catch (const ScenarioError& e) {
     throw ScenarioError(file + ": " + e.what());
   }

@@ -84,10 +84,20 @@ struct Scenario {
   const SensorSpec* find_sensor(const std::string& name) const;
 };
 
+// Files a scenario names (properties ending in _file: the star field's
+// catalog_file) are relative to the scenario's folder and must lie inside
+// it, `..` and symbolic links resolved, whether they exist or not (README
+// "Bounds"); a path outside is refused before it is opened, naming the
+// field, unless allow_paths_outside (eoir --allow-paths-outside).
+struct ScenarioOptions {
+  bool allow_paths_outside = false;
+};
+
 // Reads and checks a scenario file. Throws ScenarioError ("FILE: PATH: why").
-Scenario load_scenario(const std::string& file);
-// Checks a parsed JSON document (file is used in messages only).
-Scenario parse_scenario(const nlohmann::json& doc, const std::string& file);
+Scenario load_scenario(const std::string& file, const ScenarioOptions& options = {});
+// Checks a parsed JSON document (file locates the files it names, and names
+// it in messages).
+Scenario parse_scenario(const nlohmann::json& doc, const std::string& file, const ScenarioOptions& options = {});
 
 // The object's position and velocity at t in its own frame (J2000 for kepler,
 // tle and j2000 ephemerides, Earth-fixed for earth_fixed ephemerides, geodetic

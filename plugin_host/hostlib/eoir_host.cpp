@@ -100,11 +100,22 @@ EOIR_API const char* eoir_host_last_error(void) { return g_error.c_str(); }
 
 EOIR_API eoir_status eoir_host_session_open(const char* library, const char* scenario_file, uint64_t seed,
                                             uint32_t threads, eoir_host_session* session_out) {
+  return eoir_host_session_open_with(library, scenario_file, seed, threads, 0, session_out);
+}
+
+EOIR_API eoir_status eoir_host_session_open_with(const char* library, const char* scenario_file, uint64_t seed,
+                                                 uint32_t threads, uint32_t options,
+                                                 eoir_host_session* session_out) {
   if (need(scenario_file, "scenario_file") || need(session_out, "session_out")) return EOIR_ERR_NULL_ARGUMENT;
   *session_out = nullptr;
+  if ((options & ~EOIR_HOST_ALLOW_PATHS_OUTSIDE) != 0)
+    return fail(EOIR_ERR_OUT_OF_RANGE,
+                "options: unknown bits " + std::to_string(options & ~EOIR_HOST_ALLOW_PATHS_OUTSIDE));
   return guarded([&] {
     auto s = std::make_unique<eoir_host_session_s>();
-    s->scenario = load_scenario(scenario_file);
+    ScenarioOptions scenario_options;
+    scenario_options.allow_paths_outside = (options & EOIR_HOST_ALLOW_PATHS_OUTSIDE) != 0;
+    s->scenario = load_scenario(scenario_file, scenario_options);
     EngineConfig config;
     config.library = (library != nullptr && library[0] != '\0') ? library : nullptr;
     config.seed = seed;

@@ -31,7 +31,7 @@
 extern "C" {
 #endif
 
-#define EOIR_HOST_VERSION 1
+#define EOIR_HOST_VERSION 2 /* 2: eoir_host_session_open_with */
 
 typedef struct eoir_host_session_s* eoir_host_session;
 
@@ -39,9 +39,18 @@ EOIR_API uint32_t eoir_host_version(void);
 EOIR_API const char* eoir_host_last_error(void);
 
 /* library may be NULL (then EOIR_LIBRARY, the library beside the program,
- * the build's). seed and threads as eoir_engine_desc. */
+ * the build's). seed and threads as eoir_engine_desc. Files the scenario
+ * names must lie in its folder (README "Bounds"): one outside is
+ * EOIR_ERR_CORRUPT_FILE naming the field. */
 EOIR_API eoir_status eoir_host_session_open(const char* library, const char* scenario_file, uint64_t seed,
                                             uint32_t threads, eoir_host_session* session_out);
+/* Option bits of eoir_host_session_open_with (version 2). */
+#define EOIR_HOST_ALLOW_PATHS_OUTSIDE 1u /* the scenario may name files outside its folder */
+/* eoir_host_session_open with options (EOIR_HOST_* bits; others are
+ * EOIR_ERR_OUT_OF_RANGE naming options). */
+EOIR_API eoir_status eoir_host_session_open_with(const char* library, const char* scenario_file, uint64_t seed,
+                                                 uint32_t threads, uint32_t options,
+                                                 eoir_host_session* session_out);
 EOIR_API void eoir_host_session_close(eoir_host_session session);
 /* The session's eoir_engine, and the path of the engine library it loaded. */
 EOIR_API eoir_engine eoir_host_session_engine(eoir_host_session session);

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""Files a scenario names (issue 25 item 10; README "Bounds"): relative to
+the scenario's folder and inside it. A path leading out of it (`..`, an
+absolute path, a symbolic link) is refused naming the field, with the same
+message whether the file exists or not, before it is opened;
+--allow-paths-outside lets every scenario command read it. Paths inside
+(relative, in a subfolder, absolute) are read as before.
+
+usage: check_scenario_paths.py EOIR_EXE WORK_DIR
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+CATALOGUE = ("id,ra_deg,dec_deg,pm_ra_mas_yr,pm_dec_mas_yr,parallax_mas,v_mag,b_v\n"
+             "vega,279.234735,38.783689,200.94,286.23,130.23,0.03,0.00\n")
+FIELD = "stars.properties.catalog_file"
+OUTSIDE = "lies outside the scenario's folder"
+failures = []
+
+
+def check(cond, what):
+    print(("ok   " if cond else "FAIL ") + what)
+    if not cond:
+        failures.append(what)
+
+
+def run(*cmd):
+    r = subprocess.run(list(cmd), capture_output=True, text=True, timeout=300)
+    return r.returncode, r.stdout + r.stderr
+
+
+def scenario(folder, name, catalog_file):
+    """A scenario with the star field naming catalog_file, and a sensor."""
+    doc = {"format": "eoir-scenario", "version": 1, "name": name, "start": "2010-08-25T18:00:00Z",
+           "stars": {"properties": {"catalog_file": catalog_file}},
+           "objects": [{"name": "Sat", "kind": "satellite",
+                        "motion": {"type": "kepler", "semi_major_axis_km": 42164, "epoch": "2010-08-25T18:00:00Z"}}],
+           "sensors": [{"name": "Cam", "parent": "Sat",
+                        "parameters": {"horizontal_pixels": 8, "vertical_pixels": 8}}]}
+    path = os.path.join(folder, name + ".json")
+    with open(path, "w") as f:
+        json.dump(doc, f)
+    return path
+
+
+def main():
+    exe, work = sys.argv[1:3]
+    shutil.rmtree(work, ignore_errors=True)
+    folder = os.path.join(work, "scenarios")
+    os.makedirs(os.path.join(folder, "sub"))
+    for p in (os.path.join(folder, "stars.csv"), os.path.join(folder, "sub", "stars.csv"),
+              os.path.join(work, "outside.csv")):
+        with open(p, "w") as f:
+            f.write(CATALOGUE)
+    os.symlink(os.path.join(work, "outside.csv"), os.path.join(folder, "link.csv"))
+
+    inside = {"same folder": "stars.csv", "subfolder": "sub/stars.csv", "through ..": "sub/../stars.csv",
+              "absolute inside": os.path.join(folder, "stars.csv")}
+    for what, named in inside.items():
+        code, out = run(exe, "validate", scenario(folder, "inside", named))
+        check(code == 0 and "valid" in out, f"{what} ({named}): valid")
+
+    outside = {"..": "../outside.csv", "missing ..": "../missing.csv", "sub/../..": "sub/../../outside.csv",
+               "absolute": os.path.join(work, "outside.csv"), "missing absolute": "/nonexistent/dir/x.csv",
+               "system file": "/etc/passwd", "symbolic link": "link.csv"}
+    messages = set()
+    for what, named in outside.items():
+        code, out = run(exe, "validate", scenario(folder, "outside", named))
+        check(code == 2 and f"{FIELD}: '{named}' {OUTSIDE}" in out, f"{what} ({named}): refused naming the field")
+        check("cannot open" not in out and "No such file" not in out, f"{what}: nothing read or probed")
+        messages.add(out.replace(named, "NAMED"))
+    check(len(messages) == 1, "one message whether the file exists or not")
+
+    # Every scenario command refuses it, and takes --allow-paths-outside.
+    path = scenario(folder, "outside", "../outside.csv")
+    out_dir = os.path.join(work, "run")
+    commands = {
+        "validate": ["validate", path],
+        "report": ["report", path, "--provider", "EOIR Sensor Optics", "--sensor", "Cam", "--quiet"],
+        "run": ["run", path, "--out", out_dir, "--quiet"],
+        "save-state": ["save-state", path, "--out", os.path.join(work, "state.scd")],
+    }
+    for name, args in commands.items():
+        code, out = run(exe, *args)
+        check(code == 2 and OUTSIDE in out, f"{name}: refused")
+        code, out = run(exe, *args, "--allow-paths-outside")
+        check(code == 0, f"{name} --allow-paths-outside: accepted ({out.strip()[-200:]})")
+        code, out = run(exe, name, "--help")
+        check("--allow-paths-outside" in out, f"{name} --help lists --allow-paths-outside")
+    code, out = run(exe, "access", path, "--sensor", "Cam", "--target", "Sat", "--min-snr", "6")
+    check(code == 2 and OUTSIDE in out, "access: refused")
+    # Allowed, a missing file outside is an error of its own.
+    code, out = run(exe, "validate", scenario(folder, "missing", "../missing.csv"), "--allow-paths-outside")
+    check(code == 2 and "missing.csv" in out and OUTSIDE not in out, "allowed: a missing file is reported")
+
+    if failures:
+        sys.exit(f"FAILED: {len(failures)} checks: " + "; ".join(failures))
+    print("all checks passed")
+
+
+if __name__ == "__main__":
+    main()

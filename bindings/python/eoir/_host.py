@@ -21,6 +21,7 @@ _SIGNATURES = {
     "eoir_host_version": (c_uint32, []),
     "eoir_host_last_error": (c_char_p, []),
     "eoir_host_session_open": (c_int32, [c_char_p, c_char_p, c_uint64, c_uint32, POINTER(c_void_p)]),
+    "eoir_host_session_open_with": (c_int32, [c_char_p, c_char_p, c_uint64, c_uint32, c_uint32, POINTER(c_void_p)]),
     "eoir_host_session_close": (None, [c_void_p]),
     "eoir_host_session_engine": (c_void_p, [c_void_p]),
     "eoir_host_session_library": (c_char_p, [c_void_p]),
@@ -33,6 +34,8 @@ _SIGNATURES = {
     "eoir_host_session_truth": (c_int32, [c_void_p, c_char_p, c_char_p, c_size_t, POINTER(c_size_t)]),
     "eoir_host_tle_state": (c_int32, [c_char_p, c_char_p, c_char_p] + [POINTER(c_double * 3)] * 4),
 }
+
+ALLOW_PATHS_OUTSIDE = 1  # EOIR_HOST_ALLOW_PATHS_OUTSIDE
 
 _NAMES = ("libeoir_host.so.1", "libeoir_host.so")
 _host = None

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import ctypes
 import ctypes.util
+import operator
 import os
 from ctypes import (CFUNCTYPE, POINTER, Structure, c_char_p, c_double, c_int32,
                     c_int64, c_size_t, c_uint32, c_uint64, c_void_p)
@@ -393,12 +394,31 @@ def decode(b) -> str:
     return "" if b is None else b.decode("utf-8", "replace")
 
 
-def encode(s) -> bytes:
-    if isinstance(s, bytes):
-        return s
-    if not isinstance(s, str):
-        raise TypeError(f"expected a str, got {type(s).__name__}")
-    return s.encode("utf-8")
+def encode(s, argument: str) -> bytes:
+    """A str (or bytes) argument as the C string the engine reads: UTF-8,
+    refused with ValueError naming the argument if it holds a NUL (C would
+    silently cut it there)."""
+    if isinstance(s, str):
+        s = s.encode("utf-8")
+    elif not isinstance(s, bytes):
+        raise TypeError(f"{argument}: expected a str, got {type(s).__name__}")
+    if b"\0" in s:
+        raise ValueError(f"{argument}: contains a NUL character")
+    return s
+
+
+def encode_path(path, argument: str = "path") -> bytes:
+    """A path (str, bytes or os.PathLike) as the C string the engine opens,
+    refused as encode() refuses it."""
+    return encode(os.fsencode(path), argument)
+
+
+def threads_argument(threads) -> int:
+    """The worker-thread count of eoir_engine_desc: 0 (all cores) to 1024."""
+    value = operator.index(threads)
+    if not 0 <= value <= 1024:
+        raise ValueError(f"threads: must be in [0, 1024] (0 = all cores), got {threads}")
+    return value
 
 
 def status_name(status: int) -> str:

@@ -16,7 +16,7 @@ import numpy as np
 
 from . import _lib
 from . import errors
-from ._lib import check, decode, encode, lib
+from ._lib import check, decode, encode, encode_path, lib
 
 __all__ = [
     "Engine",
@@ -141,7 +141,7 @@ def provider_groups() -> List[str]:
 @functools.lru_cache(maxsize=None)
 def _elements(group: str) -> Tuple[Tuple[str, int, str, str], ...]:
     out = []
-    g = encode(group)
+    g = encode(group, "group")
     index = 0
     while True:
         info = _lib.eoir_element_info()
@@ -175,7 +175,7 @@ def _element(group: str, element: str):
 def time_from_iso(iso_utc: str) -> Tuple[float, float, str]:
     """ISO-8601 UTC to a two-part UTC Julian date (jd1, jd2, "utc")."""
     t = _lib.eoir_time()
-    check(lib.eoir_time_from_iso(encode(iso_utc), byref(t)))
+    check(lib.eoir_time_from_iso(encode(iso_utc, "iso_utc"), byref(t)))
     return (t.jd1, t.jd2, _SCALE_NAMES.get(t.scale, t.scale))
 
 
@@ -205,7 +205,7 @@ def _to_c_time(value) -> "_lib.eoir_time":
             value = value.astimezone(_dt.timezone.utc).replace(tzinfo=None)
         value = value.isoformat() + "Z"
     if isinstance(value, (str, bytes)):
-        check(lib.eoir_time_from_iso(encode(value), byref(t)))
+        check(lib.eoir_time_from_iso(encode(value, "time"), byref(t)))
         return t
     try:
         parts = tuple(value)
@@ -259,11 +259,9 @@ class Engine(_Closing):
     """
 
     def __init__(self, threads: int = 0, seed: int = 1):
-        if threads < 0:
-            raise ValueError("threads must be >= 0 (0 = all cores)")
         desc = _lib.eoir_engine_desc()
         desc.struct_size = ctypes.sizeof(desc)
-        desc.threads = int(threads)
+        desc.threads = _lib.threads_argument(threads)
         desc.seed = int(seed) & 0xFFFFFFFFFFFFFFFF
         handle = _lib.eoir_engine()
         self._handle = None
@@ -335,15 +333,15 @@ class Engine(_Closing):
         latitude_deg, longitude_deg and height_m (WGS84), carries sensors,
         images nothing and takes no state."""
         code = _lookup(KINDS, kind, "object kind")
-        check(lib.eoir_object_add(self.handle, code, encode(name)))
+        check(lib.eoir_object_add(self.handle, code, encode(name, "name")))
 
     def add_sensor(self, name: str, parent: str) -> None:
         """Add a scene-generator/sensor-model pair attached to parent."""
-        check(lib.eoir_sensor_add(self.handle, encode(name), encode(parent)))
+        check(lib.eoir_sensor_add(self.handle, encode(name, "name"), encode(parent, "parent")))
 
     def remove(self, name: str) -> None:
         """Remove an object (its sensors go with it)."""
-        check(lib.eoir_object_remove(self.handle, encode(name)))
+        check(lib.eoir_object_remove(self.handle, encode(name, "name")))
 
     def object_count(self) -> int:
         n = c_size_t()
@@ -379,7 +377,7 @@ class Engine(_Closing):
         st.attitude[:] = _vector(attitude, 4, "attitude")
         st.angular_velocity[:] = _vector(angular_velocity, 3, "angular_velocity")
         t = None if time is None else byref(_to_c_time(time))
-        check(lib.eoir_object_set_state(self.handle, encode(name), t, byref(st)))
+        check(lib.eoir_object_set_state(self.handle, encode(name, "name"), t, byref(st)))
 
     def get_state(self, name: str, frame="j2000") -> Dict[str, Any]:
         """The state at the engine time as a dict with numpy arrays position,
@@ -387,7 +385,7 @@ class Engine(_Closing):
         st = _lib.eoir_state()
         st.struct_size = ctypes.sizeof(st)
         st.frame = _lookup(FRAMES, frame, "frame")
-        check(lib.eoir_object_get_state(self.handle, encode(name), byref(st)))
+        check(lib.eoir_object_get_state(self.handle, encode(name, "name"), byref(st)))
         return {
             "frame": _FRAME_NAMES.get(st.frame, st.frame),
             "position": np.array(st.position[:], dtype=np.float64),
@@ -420,11 +418,11 @@ class Engine(_Closing):
         if target is not None:
             if azimuth_deg is not None or elevation_deg is not None:
                 raise ValueError("point_at: give target or azimuth_deg and elevation_deg, not both")
-            check(lib.eoir_sensor_point_at(self.handle, encode(sensor), encode(target)))
+            check(lib.eoir_sensor_point_at(self.handle, encode(sensor, "sensor"), encode(target, "target")))
             return
         if azimuth_deg is None or elevation_deg is None:
             raise ValueError("point_at: give target, or both azimuth_deg and elevation_deg")
-        check(lib.eoir_sensor_point_azel(self.handle, encode(sensor), float(azimuth_deg),
+        check(lib.eoir_sensor_point_azel(self.handle, encode(sensor, "sensor"), float(azimuth_deg),
                                          float(elevation_deg)))
 
     # -------------------------------------------------------- properties
@@ -438,7 +436,7 @@ class Engine(_Closing):
 
     def _property_infos(self, obj: str):
         out = []
-        o = encode(obj)
+        o = encode(obj, "obj")
         index = 0
         while True:
             info = _lib.eoir_property_info()
@@ -483,7 +481,7 @@ class Engine(_Closing):
     def set(self, obj: str, prop: str, value) -> None:
         """Set a property, converting value to the property's type (numbers,
         integers, bools, strings; arrays from lists or numpy arrays, flattened)."""
-        h, o, p = self.handle, encode(obj), encode(prop)
+        h, o, p = self.handle, encode(obj, "obj"), encode(prop, "prop")
         t = self._type_code(obj, prop, value)
         if t == _lib.EOIR_TYPE_NUMBER:
             check(lib.eoir_set_number(h, o, p, float(value)))
@@ -496,7 +494,7 @@ class Engine(_Closing):
         elif t == _lib.EOIR_TYPE_STRING:
             if not isinstance(value, (str, bytes)):
                 raise TypeError(f"{prop}: expected a str, got {type(value).__name__}")
-            check(lib.eoir_set_string(h, o, p, encode(value)))
+            check(lib.eoir_set_string(h, o, p, encode(value, "value")))
         elif t == _lib.EOIR_TYPE_ARRAY:
             arr = np.ascontiguousarray(np.asarray(value, dtype=np.float64).ravel())
             ptr = arr.ctypes.data_as(ctypes.POINTER(c_double))
@@ -507,7 +505,7 @@ class Engine(_Closing):
 
     def get(self, obj: str, prop: str):
         """A property's value: float, int, bool, str or a numpy float64 array."""
-        h, o, p = self.handle, encode(obj), encode(prop)
+        h, o, p = self.handle, encode(obj, "obj"), encode(prop, "prop")
         t = self._type_code(obj, prop)
         if t == _lib.EOIR_TYPE_NUMBER:
             v = c_double()
@@ -555,8 +553,8 @@ class Engine(_Closing):
         for curves."""
         info = _element(group, element)
         etype = info[1] if info is not None else _lib.EOIR_TYPE_NUMBER
-        g, e, s = encode(group), encode(element), encode(sensor)
-        tg = None if target is None else encode(target)
+        g, e, s = encode(group, "group"), encode(element, "element"), encode(sensor, "sensor")
+        tg = None if target is None else encode(target, "target")
         if etype == _lib.EOIR_TYPE_CURVE:
             return self._curve(g, e, s, tg)
         v = c_double()
@@ -588,15 +586,18 @@ class Engine(_Closing):
         check(status)
 
     def provider_series(self, group: str, element: str, sensor: str, times, target: Optional[str] = None) -> np.ndarray:
-        """A scalar element at each of `times` (ISO-8601 UTC strings) in one
+        """A scalar element at each of `times` (each an ISO-8601 UTC string,
+        a datetime or (jd1, jd2[, scale]), as set_time takes it) in one
         engine call (eoir_provider_series); the engine time is left at the last."""
+        times = list(times)
         ts = (_lib.eoir_time * len(times))()
         for i, t in enumerate(times):
-            check(lib.eoir_time_from_iso(encode(t), byref(ts[i])))
+            ts[i] = _to_c_time(t)
         out = np.zeros(len(times), dtype=np.float64)
-        tg = None if target is None else encode(target)
-        check(lib.eoir_provider_series(self.handle, encode(group), encode(element), encode(sensor), tg, ts,
-                                       len(times), out.ctypes.data_as(ctypes.POINTER(c_double))))
+        tg = None if target is None else encode(target, "target")
+        check(lib.eoir_provider_series(self.handle, encode(group, "group"), encode(element, "element"),
+                                       encode(sensor, "sensor"), tg, ts, len(times),
+                                       out.ctypes.data_as(ctypes.POINTER(c_double))))
         return out
 
     def report(self, group: str, sensor: str, target: Optional[str] = None) -> Dict[str, Tuple[Any, str]]:
@@ -615,7 +616,8 @@ class Engine(_Closing):
         target and NotAllowedError for a target equal to the sensor's parent."""
         t = None if time is None else byref(_to_c_time(time))
         v = c_double()
-        check(lib.eoir_snr_constraint(self.handle, encode(sensor), encode(target), t, byref(v)))
+        check(lib.eoir_snr_constraint(self.handle, encode(sensor, "sensor"), encode(target, "target"), t,
+                                      byref(v)))
         return float(v.value)
 
     def truth(self, sensor: str) -> List[Dict[str, Any]]:
@@ -637,7 +639,7 @@ class Engine(_Closing):
         positions of stars and of point sources beyond it are raised by the
         refraction, as in the image. Raises NoStateError if no frame was
         rendered."""
-        s = encode(sensor)
+        s = encode(sensor, "sensor")
         n = c_size_t()
         check(lib.eoir_truth_count(self.handle, s, byref(n)))
         out = []
@@ -691,24 +693,24 @@ class Engine(_Closing):
     # -------------------------------------------------------- save, load
     def save(self, path) -> None:
         """Save the whole engine state as a .scd file."""
-        check(lib.eoir_state_save(self.handle, os.fsencode(path)))
+        check(lib.eoir_state_save(self.handle, encode_path(path)))
 
     def load(self, path) -> None:
         """Replace the engine state by a .scd file (unchanged on error)."""
-        check(lib.eoir_state_load(self.handle, os.fsencode(path)))
+        check(lib.eoir_state_load(self.handle, encode_path(path)))
 
     def save_sensor(self, sensor: str, path) -> None:
         """Save one sensor's parameters."""
-        check(lib.eoir_sensor_save(self.handle, encode(sensor), os.fsencode(path)))
+        check(lib.eoir_sensor_save(self.handle, encode(sensor, "sensor"), encode_path(path)))
 
     def load_sensor(self, sensor: str, path) -> None:
         """Replace an existing sensor's parameters from a sensor file."""
-        check(lib.eoir_sensor_load(self.handle, encode(sensor), os.fsencode(path)))
+        check(lib.eoir_sensor_load(self.handle, encode(sensor, "sensor"), encode_path(path)))
 
     # ------------------------------------------------------------ images
     def render(self, sensor: str) -> None:
         """Render the frame of a sensor at the engine time (eoir_render)."""
-        check(lib.eoir_render(self.handle, encode(sensor)))
+        check(lib.eoir_render(self.handle, encode(sensor, "sensor")))
 
     def frame_fidelity(self, sensor: str) -> Dict[str, Any]:
         """The fidelity settings the last frame of a sensor was rendered with
@@ -716,15 +718,15 @@ class Engine(_Closing):
         spectral_intervals and every fidelity knob; with error_budget > 0 the
         settings the engine chose for that frame (README "Adaptive fidelity")."""
         n = c_size_t()
-        check(lib.eoir_frame_fidelity_get(self.handle, encode(sensor), None, 0, byref(n)))
+        check(lib.eoir_frame_fidelity_get(self.handle, encode(sensor, "sensor"), None, 0, byref(n)))
         buf = ctypes.create_string_buffer(n.value + 1)
-        check(lib.eoir_frame_fidelity_get(self.handle, encode(sensor), buf, n.value + 1, byref(n)))
+        check(lib.eoir_frame_fidelity_get(self.handle, encode(sensor, "sensor"), buf, n.value + 1, byref(n)))
         return json.loads(buf.value.decode("utf-8"))
 
     def _image_info(self, sensor: str, code: int) -> "_lib.eoir_image_info":
         info = _lib.eoir_image_info()
         info.struct_size = ctypes.sizeof(info)
-        check(lib.eoir_image_info_get(self.handle, encode(sensor), code, byref(info)))
+        check(lib.eoir_image_info_get(self.handle, encode(sensor, "sensor"), code, byref(info)))
         return info
 
     def image_info(self, sensor: str, kind) -> Dict[str, Any]:
@@ -759,7 +761,7 @@ class Engine(_Closing):
         code = _lookup(IMAGE_KINDS, kind, "image kind")
         info = self._image_info(sensor, code)
         h, w = int(info.height), int(info.width)
-        s = encode(sensor)
+        s = encode(sensor, "sensor")
         if code in _DISPLAY_KINDS:
             out = np.zeros((h, w), dtype=np.uint8)
             ptr = out.ctypes.data_as(ctypes.POINTER(ctypes.c_uint8))
@@ -783,7 +785,7 @@ class Engine(_Closing):
             raise TypeError("pick: x and y are integer sample or pixel indices")
         if x < 0 or y < 0 or x > 0xFFFFFFFF or y > 0xFFFFFFFF:
             raise ValueError(f"pick: x and y must be non-negative, got ({x}, {y})")
-        s = encode(sensor)
+        s = encode(sensor, "sensor")
         dp = ctypes.POINTER(c_double)
         n = c_size_t()
         pick = _lib.eoir_pick()

@@ -25,7 +25,7 @@ from typing import Any, Dict, List, Optional
 import numpy as np
 
 from . import _host, _lib
-from ._lib import encode
+from ._lib import encode, encode_path
 from .engine import IMAGE_KINDS, Engine, _Closing, _lookup, _to_c_time
 
 
@@ -46,18 +46,21 @@ class Scenario(_Closing):
         raise TypeError("use eoir.Scenario.load(path)")
 
     @classmethod
-    def load(cls, path, seed: int = 1, threads: int = 0) -> "Scenario":
+    def load(cls, path, seed: int = 1, threads: int = 0, allow_paths_outside: bool = False) -> "Scenario":
         """Reads and checks the scenario file (as `eoir validate` does),
         creates an engine with `seed` and `threads`, registers every body,
         object, sensor and property, and sets the scenario's start time.
-        Raises the eoir error of the problem (CorruptFileError naming the file
-        and JSON path for a bad scenario)."""
+        Files the scenario names (a star catalogue) must lie in its folder
+        unless allow_paths_outside (`eoir --allow-paths-outside`; README
+        "Bounds"). Raises the eoir error of the problem (CorruptFileError
+        naming the file and JSON path for a bad scenario)."""
         h = _host.host()
-        if threads < 0:
-            raise ValueError("threads must be >= 0 (0 = all cores)")
+        threads = _lib.threads_argument(threads)
+        options = _host.ALLOW_PATHS_OUTSIDE if allow_paths_outside else 0
         session = c_void_p()
-        _host.check(h.eoir_host_session_open(encode(_lib.library_path), encode(os.fspath(path)),
-                                             int(seed) & 0xFFFFFFFFFFFFFFFF, int(threads), byref(session)))
+        _host.check(h.eoir_host_session_open_with(encode(_lib.library_path, "library_path"), encode_path(path),
+                                                  int(seed) & 0xFFFFFFFFFFFFFFFF, threads, options,
+                                                  byref(session)))
         self = cls.__new__(cls)
         self._session = session
         self._close = h.eoir_host_session_close
@@ -97,21 +100,22 @@ class Scenario(_Closing):
         (default: the scenario's), every step_s (default: the scenario's),
         stop included, as ISO-8601 UTC strings."""
         h = _host.host()
-        a = encode(_iso(start)) if start is not None else None
-        b = encode(_iso(stop)) if stop is not None else None
+        a = encode(_iso(start), "start") if start is not None else None
+        b = encode(_iso(stop), "stop") if stop is not None else None
         return json.loads(_host.json_out(h.eoir_host_session_times, self.session, a, b,
                                          float(step_s) if step_s is not None else 0.0))
 
     def set_time(self, time) -> None:
         """Sets the engine time and pushes every object's state and attitude
         (the scenario's motion and pointing models)."""
-        _host.check(_host.host().eoir_host_session_set_time(self.session, encode(_iso(time))))
+        _host.check(_host.host().eoir_host_session_set_time(self.session, encode(_iso(time), "time")))
 
     # ------------------------------------------------- truth and FITS files
     def truth(self, sensor: str) -> List[Dict[str, Any]]:
         """The per-frame truth `eoir run` writes for the last frame of
         sensor: FITS pixels (x_fits, y_fits), ICRS ra_deg/dec_deg, range, SNR."""
-        return json.loads(_host.json_out(_host.host().eoir_host_session_truth, self.session, encode(sensor)))
+        return json.loads(_host.json_out(_host.host().eoir_host_session_truth, self.session,
+                                         encode(sensor, "sensor")))
 
     def fits_header(self, sensor: str, kind="sensor_electrons", frame: int = 0):
         """The astropy.io.fits.Header `eoir run` writes for the last frame of
@@ -119,7 +123,7 @@ class Scenario(_Closing):
         from astropy.io import fits
         code = _lookup(IMAGE_KINDS, kind, "image kind")
         cards = json.loads(_host.json_out(_host.host().eoir_host_session_fits_header, self.session,
-                                          encode(sensor), code, int(frame)))
+                                          encode(sensor, "sensor"), code, int(frame)))
         header = fits.Header()
         for key, value, comment in cards:
             if key in ("COMMENT", "HISTORY"):
@@ -161,7 +165,8 @@ def tle_state(line1: str, line2: str, time) -> Dict[str, np.ndarray]:
     velocity (m/s) as scenarios push them. Raises OutOfRangeError for a bad
     TLE (naming the line and field) or an SGP4 error (decayed...)."""
     arrays = [(c_double * 3)() for _ in range(4)]
-    _host.check(_host.host().eoir_host_tle_state(encode(line1), encode(line2), encode(_iso(time)),
+    _host.check(_host.host().eoir_host_tle_state(encode(line1, "line1"), encode(line2, "line2"),
+                                                 encode(_iso(time), "time"),
                                                  *[byref(a) for a in arrays]))
     names = ("teme_position_km", "teme_velocity_km_s", "position_m", "velocity_m_s")
     return {n: np.array(list(a)) for n, a in zip(names, arrays)}

@@ -252,6 +252,9 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
   // The background light (eq. 4): E_bkg / pi, reflected whatever the BRDF.
   if (w.sky.background)
     for (std::size_t i = 0; i < count; ++i) out[i] += w.sky.background_irradiance[i] / constants::pi;
+  // Eq. 9's DownWelling / pi on the Earth's surface, likewise.
+  if (under_atmosphere_ && w.atmosphere.downwelling)
+    w.atmosphere.downwelling->add_over_pi(n.dot(w.atmosphere.to_sun), w.atmosphere.sun_irradiance, out);
   // Every other object: a Lambertian sphere (eq. 7) or its tessellation (eq. 8).
   for (std::size_t k = 0; k < w.lights.size(); ++k) {
     const ObjectLight& src = w.lights[k];
@@ -700,33 +703,42 @@ std::shared_ptr<const atmosphere::PathOptics> WorldCache::optics(const universe:
   return made;
 }
 
+namespace {
+// The entry of a cache map for key, made by `make` if new (the map is
+// cleared when full: worlds keep what they hold; an aircraft's altitude
+// changes every frame).
+template <class Key, class T>
+std::shared_ptr<const T> cached(std::map<Key, std::shared_ptr<const T>>& map, const Key& key,
+                                const std::function<T()>& make) {
+  auto it = map.find(key);
+  if (it != map.end()) return it->second;
+  if (map.size() >= kWorldCacheEntries) map.clear();
+  return map.emplace(key, std::make_shared<const T>(make())).first->second;
+}
+}  // namespace
+
 std::shared_ptr<const SurfacePaths> WorldCache::surface(const std::shared_ptr<const atmosphere::PathOptics>& optics,
                                                         double altitude_m, const std::function<SurfacePaths()>& make) {
   std::lock_guard<std::mutex> lock(mutex_);
-  const auto key = std::make_pair(optics.get(), altitude_m);
-  auto it = surface_.find(key);
-  if (it != surface_.end()) return it->second;
-  if (surface_.size() >= kWorldCacheEntries) surface_.clear();  // (an aircraft's altitude changes every frame)
-  return surface_.emplace(key, std::make_shared<const SurfacePaths>(make())).first->second;
+  return cached(surface_, std::make_pair(optics.get(), altitude_m), make);
 }
 
 std::shared_ptr<const SightLines> WorldCache::sight_lines(const std::shared_ptr<const atmosphere::PathOptics>& optics,
                                                           double altitude_m, const std::function<SightLines()>& make) {
   std::lock_guard<std::mutex> lock(mutex_);
-  const auto key = std::make_pair(optics.get(), altitude_m);
-  auto it = sight_lines_.find(key);
-  if (it != sight_lines_.end()) return it->second;
-  if (sight_lines_.size() >= kWorldCacheEntries) sight_lines_.clear();
-  return sight_lines_.emplace(key, std::make_shared<const SightLines>(make())).first->second;
+  return cached(sight_lines_, std::make_pair(optics.get(), altitude_m), make);
 }
 
 std::shared_ptr<const atmosphere::SunlightTable> WorldCache::sunlight(
     const std::shared_ptr<const atmosphere::PathOptics>& optics, const std::function<atmosphere::SunlightTable()>& make) {
   std::lock_guard<std::mutex> lock(mutex_);
-  auto it = sunlight_.find(optics.get());
-  if (it != sunlight_.end()) return it->second;
-  if (sunlight_.size() >= kWorldCacheEntries) sunlight_.clear();
-  return sunlight_.emplace(optics.get(), std::make_shared<const atmosphere::SunlightTable>(make())).first->second;
+  return cached(sunlight_, optics.get(), make);
+}
+
+std::shared_ptr<const Downwelling> WorldCache::downwelling(const std::shared_ptr<const atmosphere::PathOptics>& optics,
+                                                           const std::function<Downwelling()>& make) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return cached(downwelling_, optics.get(), make);
 }
 
 std::shared_ptr<const World> build_world(const universe::Universe& universe, const universe::Library& library,
@@ -853,6 +865,14 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     const auto make = [&a, altitude] { return surface_paths(a, altitude); };
     world->atmosphere.surface = cache ? cache->surface(a.optics, altitude, make)
                                       : std::make_shared<const SurfacePaths>(make());
+    if (a.settings.downwelling && a.sunlight) {
+      const auto optics = a.optics;
+      const auto sunlight = a.sunlight;
+      const atmosphere::EarthFigure figure = a.earth;
+      const auto tables = [optics, sunlight, figure] { return Downwelling(*optics, *sunlight, figure); };
+      world->atmosphere.downwelling =
+          cache ? cache->downwelling(a.optics, tables) : std::make_shared<const Downwelling>(tables());
+    }
     world->objects[static_cast<std::size_t>(earth_id)]->under_atmosphere_ = true;
   }
   if (world->atmosphere.on())

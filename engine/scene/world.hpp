@@ -31,6 +31,7 @@
 #include "geometry/sample_grid.hpp"
 #include "geometry/scene_geometry.hpp"
 #include "radiometry/spectral_view.hpp"
+#include "scene/downwelling.hpp"
 #include "scene/light_environment.hpp"
 #include "scene/sight_lines.hpp"
 #include "scene/sky.hpp"
@@ -134,6 +135,7 @@ struct WorldAtmosphere {
   Vec3 to_sun = Vec3::UnitX();
   std::vector<double> sun_irradiance;
   std::shared_ptr<const SkyView> sky;
+  std::shared_ptr<const Downwelling> downwelling;  // on the Earth's surface, when the setting has it
 };
 
 // What the worlds of one engine build once and share (thread-safe): the
@@ -152,6 +154,8 @@ class WorldCache {
                                                 double altitude_m, const std::function<SightLines()>& make);
   std::shared_ptr<const atmosphere::SunlightTable> sunlight(const std::shared_ptr<const atmosphere::PathOptics>& optics,
                                                             const std::function<atmosphere::SunlightTable()>& make);
+  std::shared_ptr<const Downwelling> downwelling(const std::shared_ptr<const atmosphere::PathOptics>& optics,
+                                                 const std::function<Downwelling()>& make);
 
  private:
   std::mutex mutex_;
@@ -161,6 +165,7 @@ class WorldCache {
   std::map<std::pair<const atmosphere::PathOptics*, double>, std::shared_ptr<const SurfacePaths>> surface_;
   std::map<std::pair<const atmosphere::PathOptics*, double>, std::shared_ptr<const SightLines>> sight_lines_;
   std::map<const atmosphere::PathOptics*, std::shared_ptr<const atmosphere::SunlightTable>> sunlight_;
+  std::map<const atmosphere::PathOptics*, std::shared_ptr<const Downwelling>> downwelling_;
 };
 
 class World;

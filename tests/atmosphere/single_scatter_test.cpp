@@ -10,7 +10,11 @@
 //     L = E P / (4 pi) mu_s / (mu_s + mu_v) [1 - exp(-tau (1/mu_s + 1/mu_v))]
 // At 0.45 um without aerosol (air alone; ozone adds 2 % of the depth there)
 // near the zenith, where the Earth's curvature changes nothing measurable:
-// within 1.5 %. The Earth's shadow: no scatter at night.
+// within 1.5 %. The Earth's shadow: no scatter at night. DownWelling, the
+// sky's irradiance on the ground, against the same solution integrated over
+// the hemisphere (Liou eq. 6.5.5 with the azimuth-averaged Rayleigh phase
+// function 3 / (4 (1 + 2 gamma)) ((1 + 3 gamma) + (1 - gamma) (mu^2 mu0^2 +
+// (1 - mu^2)(1 - mu0^2) / 2)), by 2000-point quadrature): within 2 %.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,6 +25,7 @@
 #include "atmosphere/single_scatter.hpp"
 #include "core/constants.hpp"
 #include "core/data_dir.hpp"
+#include "scene/downwelling.hpp"
 
 namespace eoir::atmosphere {
 namespace {
@@ -107,6 +112,29 @@ TEST(SingleScatter, NoScatterInTheEarthsShadowAndContinuousAtSunset) {
       EXPECT_GE(L, previous * 0.7) << "a jump at Sun zenith " << z;
     }
     previous = L;
+  }
+}
+
+TEST(SingleScatter, DownwellingAgainstPlaneParallel) {
+  const Air air;
+  const scene::Downwelling down(*air.optics, *air.sunlight, kEarth);
+  constexpr double rho = 0.0279, gamma = rho / (2.0 - rho);
+  for (const double sun_deg : {0.0, 30.0, 60.0}) {
+    const double mu0 = std::cos(sun_deg * constants::pi / 180.0), tau = air.tau;
+    double expected = 0;
+    const int n = 2000;
+    for (int k = 0; k < n; ++k) {  // midpoint rule in mu over (0, 1)
+      const double mu = (k + 0.5) / n;
+      const double phase = 3.0 / (4.0 * (1.0 + 2.0 * gamma)) *
+                           ((1.0 + 3.0 * gamma) + (1.0 - gamma) * (mu * mu * mu0 * mu0 + 0.5 * (1 - mu * mu) * (1 - mu0 * mu0)));
+      const double L = std::fabs(mu0 - mu) > 1e-9
+                           ? phase / (4.0 * constants::pi) * mu0 / (mu0 - mu) * (std::exp(-tau / mu0) - std::exp(-tau / mu))
+                           : phase / (4.0 * constants::pi) * tau / mu0 * std::exp(-tau / mu0);
+      expected += 2.0 * constants::pi * mu * L / n;
+    }
+    std::vector<double> got;
+    down.scatter_per_sun(mu0, got);
+    EXPECT_NEAR(got[0] / expected, 1.0, 0.02) << "Sun zenith " << sun_deg << " deg: " << got[0] << " vs " << expected;
   }
 }
 

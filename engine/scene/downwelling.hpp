@@ -1,0 +1,39 @@
+// DownWelling (spec 4.1.5.3 eq. 9; ERRATA 4.1.5.3: on by default, the
+// Earth's `downwelling` property switches it off to reproduce single-scatter
+// references): the diffuse irradiance of the sky on a horizontal surface of
+// the ground, E_down = integral over the upper hemisphere of L_sky cos(z)
+// dOmega, with L_sky the sunlight the air scatters (single scatter,
+// atmosphere/single_scatter.hpp) and the air's thermal emission. Surfaces
+// reflect it as eq. 9 says, DownWelling / pi times their SRF: the blue
+// sky's light in shadows and on lit ground, twilight on the ground after
+// sunset, and the sky's emission reflected in the thermal bands. Made once
+// per atmosphere and band from a ground observer's lines of sight
+// (SightLines), per unit solar irradiance over the Sun's elevation (every
+// 3 deg from -12 deg up; linear between).
+#pragma once
+#include <vector>
+
+#include "atmosphere/path_optics.hpp"
+#include "atmosphere/single_scatter.hpp"
+
+namespace eoir::scene {
+
+class Downwelling {
+ public:
+  Downwelling(const atmosphere::PathOptics& optics, const atmosphere::SunlightTable& sunlight,
+              const atmosphere::EarthFigure& earth);
+  // Adds E_down / pi per interval (what a reflector of unit SRF returns of
+  // it, W cm^-2 sr^-1 um^-1) for a Sun whose zenith cosine is mu_sun over
+  // the surface, of irradiance sun_irradiance per interval above the air.
+  void add_over_pi(double mu_sun, const std::vector<double>& sun_irradiance, std::vector<double>& out) const;
+  // Its parts: per unit solar irradiance (scatter), and the air's emission.
+  void scatter_per_sun(double mu_sun, std::vector<double>& out) const;
+  const std::vector<double>& thermal() const { return thermal_; }
+
+ private:
+  std::vector<double> sun_elevation_rad_;
+  std::vector<std::vector<double>> scatter_;  // [node][interval], per unit solar irradiance
+  std::vector<double> thermal_;
+};
+
+}  // namespace eoir::scene

@@ -142,3 +142,21 @@ EOIR_API eoir_status eoir_pick_get(eoir_engine engine, const char* sensor, int32
   });
 }
 }
+
+EOIR_API eoir_status eoir_pick_term_get(eoir_engine engine, const char* sensor, int32_t space, uint32_t x, uint32_t y,
+                                        int32_t term, double* values, size_t capacity, size_t* count_out) {
+  return with_engine(engine, [&](Engine& e) {
+    const std::string name = str(sensor, "sensor");
+    if (term < EOIR_PICK_TERM_SURFACE || term > EOIR_PICK_TERM_AT_SENSOR)
+      throw Error(Status::out_of_range, "term: " + std::to_string(term) + " is not an eoir_pick_term (0-5)");
+    const scene::Pick p = e.pick(name, space, x, y);
+    const scene::Eq9Terms& t = p.terms;
+    const std::vector<double>* chosen[] = {&t.surface,      &t.downwelling,  &t.transmittance,
+                                           &t.path_thermal, &t.path_scatter, &t.at_sensor};
+    const std::vector<double>& v = *chosen[term];
+    if (count_out) *count_out = v.size();
+    if (!values) return;
+    if (capacity < v.size()) throw Error(Status::buffer_too_small, "capacity: " + std::to_string(v.size()) + " values needed");
+    std::copy(v.begin(), v.end(), values);
+  });
+}

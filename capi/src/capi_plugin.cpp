@@ -65,6 +65,7 @@ const eoir_api_v1 api_v1 = {
     eoir_frame_fidelity_get,
     eoir_sensor_point_azel,
     eoir_sensor_point_at,
+    eoir_pick_term_get,
 };
 }  // namespace
 

@@ -25,12 +25,17 @@ Pick pick_sample(const World& world, const SceneImage& scene, std::int64_t c, st
   pick.spectral_radiance_W_cm2_sr_um.assign(pick.wavelengths_um.size(), 0.0);
   pick.range_m = geometry::sky_range_m;
   if (scene.hits[i].object_id < 0) {
-    world.sky_spectrum(d, pick.spectral_radiance_W_cm2_sr_um);
+    pick.terms = world.sky_terms(d);
+    pick.spectral_radiance_W_cm2_sr_um = pick.terms.at_sensor;
     return pick;
   }
   // Cast this one sample's ray again, with range, point and normal.
   const geometry::Hit hit = world.caster.cast(d, geometry::RayQuery{geometry::ray_mask_extended, -1});
-  if (hit.object_id < 0) return pick;
+  if (hit.object_id < 0) {
+    pick.terms = world.sky_terms(d);
+    pick.spectral_radiance_W_cm2_sr_um = pick.terms.at_sensor;
+    return pick;
+  }
   const WorldObject& o = *world.objects[static_cast<std::size_t>(hit.object_id)];
   pick.hit = true;
   pick.object = o.name;
@@ -41,9 +46,8 @@ Pick pick_sample(const World& world, const SceneImage& scene, std::int64_t c, st
   Vec3 point_body, shading_normal;
   o.shading_point(hit.part, hit.point_body_m, normal_body, point_body, shading_normal);
   pick.temperature_K = o.surface->temperature_K(o.surface->at(SurfaceSite{hit.part, point_body, shading_normal}));
-  pick.spectral_radiance_W_cm2_sr_um =
-      o.at_sensor(o.spectral_radiance(hit.part, point_body, shading_normal, -o.to_frame(point_body).normalized()),
-                  point_body, shading_normal);
+  pick.terms = o.eq9_terms(hit.part, point_body, shading_normal);
+  pick.spectral_radiance_W_cm2_sr_um = pick.terms.at_sensor;
   if (o.central_body) {
     // Geodetic latitude/longitude on the body's ellipsoid (GeographicLib):
     // WGS84 on the Earth-fixed Earth; planetocentric on the others (IAU axes).

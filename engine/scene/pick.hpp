@@ -24,6 +24,7 @@ struct Pick {
   double temperature_K = 0;
   std::vector<double> wavelengths_um;                   // the view's sample wavelengths
   std::vector<double> spectral_radiance_W_cm2_sr_um;    // eq. 4 (eq. 9 under the atmosphere) at those wavelengths; the sky's for the sky
+  Eq9Terms terms;                                       // the same term by term (its at_sensor is that vector)
 };
 
 // Sample (c, r) of the full grid (guard band included).

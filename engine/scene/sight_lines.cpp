@@ -173,4 +173,19 @@ bool SkyView::sky(const Vec3& d, std::vector<double>& out) const {
   return true;
 }
 
+bool SkyView::path(const Vec3& d, std::vector<double>& T, std::vector<double>& thermal) const {
+  const Cell c = cell_of(d);
+  if (!c.inside) return false;
+  const double w0 = c.weight[0] + c.weight[2], w1 = c.weight[1] + c.weight[3];
+  const atmosphere::PathTerms& a = lines_->paths[c.node].terms;
+  const atmosphere::PathTerms& b = lines_->paths[c.node + 1].terms;
+  T.resize(intervals_);
+  thermal.resize(intervals_);
+  for (std::size_t i = 0; i < intervals_; ++i) {
+    T[i] = w0 * a.transmittance[i] + w1 * b.transmittance[i];
+    thermal[i] = w0 * a.thermal[i] + w1 * b.thermal[i];
+  }
+  return true;
+}
+
 }  // namespace eoir::scene

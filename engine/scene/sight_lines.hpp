@@ -64,6 +64,9 @@ class SkyView {
   // The same per interval, into out.
   void scatter(const Vec3& d, std::vector<double>& out) const;
   bool sky(const Vec3& d, std::vector<double>& out) const;
+  // A line's own terms per interval: its transmittance and thermal emission
+  // (false, untouched, for a line that crosses no air).
+  bool path(const Vec3& d, std::vector<double>& transmittance, std::vector<double>& thermal) const;
 
  private:
   struct Cell {

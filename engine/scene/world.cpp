@@ -526,6 +526,39 @@ void WorldObject::to_sensor(std::vector<double>& spectrum, const Vec3& point_bod
     for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] += path_spectral_[i];
 }
 
+Eq9Terms WorldObject::eq9_terms(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body) const {
+  Eq9Terms t;
+  const World& w = *world_;
+  const std::size_t n = w.view.spectral.sample_wavelengths_um.size();
+  const Vec3 point = to_frame(point_body_m), toward = -point.normalized();
+  t.surface = spectral_radiance(part, point_body_m, normal_body, toward);
+  t.downwelling.assign(n, 0.0);
+  t.transmittance.assign(n, 1.0);
+  t.path_thermal.assign(n, 0.0);
+  t.path_scatter.assign(n, 0.0);
+  if (under_atmosphere_) {
+    if (w.atmosphere.downwelling) {
+      const SurfacePoint p = surface->at(SurfaceSite{part, point_body_m, normal_body});
+      if (surface->reflects(p)) {
+        w.atmosphere.downwelling->add_over_pi((placed.body_to_frame * normal_body).dot(w.atmosphere.to_sun),
+                                              w.atmosphere.sun_irradiance, t.downwelling);
+        for (std::size_t i = 0; i < n; ++i) t.downwelling[i] *= p.spectrum->srf()[i];
+      }
+    }
+    w.atmosphere.surface->view_at((placed.body_to_frame * normal_body).dot(toward), t.transmittance, t.path_thermal);
+    if (w.atmosphere.sky) w.atmosphere.sky->scatter(-toward, t.path_scatter);
+  } else {
+    if (!view().transmittance.empty()) t.transmittance = view().transmittance;
+    if (!path_spectral_.empty())
+      for (std::size_t i = 0; i < n; ++i) {
+        t.path_scatter[i] = path_scatter_[i];
+        t.path_thermal[i] = path_spectral_[i] - path_scatter_[i];
+      }
+  }
+  t.at_sensor = at_sensor(t.surface, point_body_m, normal_body);
+  return t;
+}
+
 const radiometry::SpectralView& WorldObject::view() const {
   return seen_through_ ? *seen_through_ : world_->view.spectral;
 }
@@ -609,16 +642,19 @@ atmosphere::PathColumns WorldAtmosphere::path_to(const Vec3& point_m) const {
   return c;
 }
 
-void WorldAtmosphere::seen_from(const Vec3& point_m, std::vector<double>& T, std::vector<double>& L) const {
+void WorldAtmosphere::seen_from(const Vec3& point_m, std::vector<double>& T, std::vector<double>& L,
+                                std::vector<double>& S) const {
   T.clear();
   L.clear();
+  S.clear();
   const atmosphere::PathColumns c = path_to(point_m);
   if (!c.crosses) return;
   const atmosphere::ScatterPath path = atmosphere::ScatterPath::make(*optics, c);
   T = path.terms.transmittance;
   L = path.terms.thermal;
+  S.assign(L.size(), 0.0);
   if (sunlight)
-    atmosphere::add_single_scatter(path, -earth.centre_m, point_m.normalized(), to_sun, sun_irradiance, *sunlight, L);
+    atmosphere::add_single_scatter(path, -earth.centre_m, point_m.normalized(), to_sun, sun_irradiance, *sunlight, S);
 }
 
 double WorldAtmosphere::air_mass(const atmosphere::PathColumns& path) const {
@@ -678,6 +714,21 @@ void World::sky_spectrum(const Vec3& d, std::vector<double>& out) const {
   out.assign(view.spectral.sample_wavelengths_um.size(), 0.0);
   if (sky.background)
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = sky.background_irradiance[i] / constants::pi;
+}
+
+Eq9Terms World::sky_terms(const Vec3& d) const {
+  Eq9Terms t;
+  const std::size_t n = view.spectral.sample_wavelengths_um.size();
+  t.surface.assign(n, 0.0);
+  if (sky.background)
+    for (std::size_t i = 0; i < n; ++i) t.surface[i] = sky.background_irradiance[i] / constants::pi;
+  t.downwelling.assign(n, 0.0);
+  t.transmittance.assign(n, 1.0);
+  t.path_thermal.assign(n, 0.0);
+  t.path_scatter.assign(n, 0.0);
+  if (atmosphere.sky && atmosphere.sky->path(d, t.transmittance, t.path_thermal)) atmosphere.sky->scatter(d, t.path_scatter);
+  sky_spectrum(d, t.at_sensor);
+  return t;
 }
 
 const WorldObject* World::find(const std::string& name) const {
@@ -879,11 +930,13 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     for (const auto& wp : world->objects) {
       WorldObject& w = *wp;
       if (w.id == earth_id) continue;
-      std::vector<double> out, path;
-      world->atmosphere.seen_from(w.placed.position_m, out, path);
+      std::vector<double> out, path, scatter;
+      world->atmosphere.seen_from(w.placed.position_m, out, path, scatter);
       if (!out.empty()) {
+        for (std::size_t i = 0; i < path.size(); ++i) path[i] += scatter[i];
         w.path_radiance_W_cm2_sr_ = world->view.spectral.integrate(path);
         w.path_spectral_ = std::move(path);
+        w.path_scatter_ = std::move(scatter);
         w.seen_through_ = std::make_unique<radiometry::SpectralView>(
             radiometry::SpectralView::through(world->view.spectral, std::move(out)));
       }

@@ -83,6 +83,17 @@ struct SunLight {
 // symmetry: for an observer at a given altitude these angles fix the
 // paths), on nodes dense toward the horizon (mu = (k / (n - 1))^2),
 // linear between them.
+// Eq. 9's terms of one line of sight per interval of the view (spec
+// 4.1.5.3; the components of 6.2.5.4): what leaves the surface (eq. 9's
+// bracket: reflected light, DownWelling and emission; for the sky, the
+// background light), of which DownWelling / pi x SRF, the path's
+// transmittance T_out, its thermal radiance L_path and the sunlight its
+// air scatters L_scatter; at the sensor: surface x T_out + L_path +
+// L_scatter. In vacuum T_out is 1 and the path's terms 0.
+struct Eq9Terms {
+  std::vector<double> surface, downwelling, transmittance, path_thermal, path_scatter, at_sensor;
+};
+
 struct SurfacePaths {
   std::vector<double> mu;                      // nodes, 0..1
   std::vector<std::vector<double>> view_T, view_L, sun_T;  // [node][interval]
@@ -103,9 +114,11 @@ struct WorldAtmosphere {
   bool observer_inside = false;  // the observer lies below the top of the atmosphere
   bool on() const { return profile != nullptr; }
   // Eq. 9's path terms per interval between a point and the observer: the
-  // transmittance, and the path's radiance toward the observer (its thermal
-  // emission and the sunlight its air scatters); empty in vacuum.
-  void seen_from(const Vec3& point_m, std::vector<double>& transmittance, std::vector<double>& path_radiance) const;
+  // transmittance, and the path's radiance toward the observer: its thermal
+  // emission (L_path) and the sunlight its air scatters (L_scatter); empty
+  // in vacuum.
+  void seen_from(const Vec3& point_m, std::vector<double>& transmittance, std::vector<double>& thermal,
+                 std::vector<double>& scatter) const;
   // The transmittance per interval of the view from a point toward space
   // along a unit direction (toward the Sun, a star); empty where the path
   // crosses no air. A path from an observer inside the atmosphere to space
@@ -243,6 +256,8 @@ class WorldObject {
   std::vector<double> at_sensor(std::vector<double> spectrum, const Vec3& point_body_m = Vec3::Zero(),
                                 const Vec3& normal_body = Vec3::UnitZ()) const;
   void to_sensor(std::vector<double>& spectrum, const Vec3& point_body_m, const Vec3& normal_body) const;
+  // Eq. 9 term by term at a point of `part` (body frame, outward normal there).
+  Eq9Terms eq9_terms(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body) const;
   // The band radiance of a plain part at the sensor (eq. 9 with L_path).
   double plain_radiance(std::int32_t part) const { return surface->part_radiance(part) + path_radiance_W_cm2_sr_; }
   // One radiance per part, whatever the point (false for the Earth seen
@@ -288,7 +303,8 @@ class WorldObject {
   const World* world_ = nullptr;
   std::unique_ptr<radiometry::SpectralView> seen_through_;  // the atmosphere's T_out, if its path crosses air
   std::vector<double> sun_transmittance_;  // eq. 9's T_in of the Sun's light at the centre; empty: 1
-  std::vector<double> path_spectral_;      // eq. 9's L_path from the centre to the sensor; empty: none
+  std::vector<double> path_spectral_;      // eq. 9's L_path + L_scatter from the centre to the sensor; empty: none
+  std::vector<double> path_scatter_;       // of which L_scatter
   double path_radiance_W_cm2_sr_ = 0;      // its band integral (eq. 48)
   bool under_atmosphere_ = false;          // the Earth: its points see World::atmosphere.surface's paths
   std::int32_t light_ = -1;  // index in World::lights, -1 if not a source
@@ -336,8 +352,9 @@ class World {
   // the sky's (SkyView: its scatter and emission, the background through
   // it).
   double sky_radiance(const Vec3& d) const;
-  // The same per interval.
+  // The same per interval, and term by term.
   void sky_spectrum(const Vec3& d, std::vector<double>& out) const;
+  Eq9Terms sky_terms(const Vec3& d) const;
 };
 
 // Builds the world of `sensor` at t with the library's materials and spectra.

@@ -107,5 +107,6 @@ int main(void) {
   CHECK_LAYOUT(eoir_api_v1, frame_fidelity_get, 392); /* 1.4 */
   CHECK_LAYOUT(eoir_api_v1, sensor_point_azel, 400);  /* 1.5 */
   CHECK_LAYOUT(eoir_api_v1, sensor_point_at, 408);
+  CHECK_LAYOUT(eoir_api_v1, pick_term_get, 416);  /* 1.6 */
   return CHECK_SUMMARY();
 }

@@ -262,6 +262,8 @@ _SIGNATURES = {
     "eoir_target_spectrum_get": (eoir_status, [eoir_engine, _c_str, _c_str, _c_dblp, _c_dblp, c_size_t, _c_sizep]),
     "eoir_frame_fidelity_get": (eoir_status, [eoir_engine, _c_str, c_char_p, c_size_t, _c_sizep]),
     "eoir_sensor_point_azel": (eoir_status, [eoir_engine, _c_str, c_double, c_double]),
+    "eoir_pick_term_get": (eoir_status, [eoir_engine, _c_str, c_int32, c_uint32, c_uint32, c_int32,
+                                         POINTER(c_double), c_size_t, POINTER(c_size_t)]),
     "eoir_sensor_point_at": (eoir_status, [eoir_engine, _c_str, _c_str]),
     "eoir_plugin_entry": (eoir_status, [c_uint32, POINTER(eoir_host_api), POINTER(c_void_p)]),
 }
@@ -331,7 +333,9 @@ class eoir_api_v1(Structure):
                 ("frame_fidelity_get", _fn("eoir_frame_fidelity_get")),
                 # appended in 1.5 (pointing)
                 ("sensor_point_azel", _fn("eoir_sensor_point_azel")),
-                ("sensor_point_at", _fn("eoir_sensor_point_at"))]
+                ("sensor_point_at", _fn("eoir_sensor_point_at")),
+                # appended in 1.6 (eq. 9's terms)
+                ("pick_term_get", _fn("eoir_pick_term_get"))]
 
 
 # ------------------------------------------------------------------- loading

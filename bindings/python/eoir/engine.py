@@ -82,6 +82,8 @@ IMAGE_KINDS = {
 _IMAGE_KIND_NAMES = {v: k for k, v in IMAGE_KINDS.items()}
 _DISPLAY_KINDS = (_lib.EOIR_IMAGE_SCENE_DISPLAY, _lib.EOIR_IMAGE_SENSOR_DISPLAY)
 _PICK_SPACES = {"sample": 0, "pixel": 1}
+# Eq. 9's terms of a pick (C ABI 1.6, eoir_pick_term), in the order of the enum.
+PICK_TERMS = ("surface", "downwelling", "transmittance", "path_thermal", "path_scatter", "at_sensor")
 
 _INITIAL_STRING_CAPACITY = 256
 _INITIAL_ARRAY_CAPACITY = 64
@@ -820,6 +822,32 @@ class Engine(_Closing):
                 "spectral_radiance": rad[:m].copy(),
             }
         check(status)
+
+    def pick_terms(self, sensor: str, x: int, y: int, space: str = "sample") -> Dict[str, np.ndarray]:
+        """Eq. 9 term by term for the sample pick() reads (spec 4.1.5.3; the
+        components of 6.2.5.4), each a numpy array on the sensor's spectral
+        grid: surface (what leaves the surface: reflected light, DownWelling
+        and emission; the background light for the sky), downwelling (of
+        which DownWelling / pi x SRF), transmittance (T_out), path_thermal
+        (L_path), path_scatter (L_scatter) and at_sensor (surface x T_out +
+        L_path + L_scatter, pick()'s spectral_radiance); radiances in
+        W/(cm^2 sr um), plus wavelengths_um. In vacuum transmittance is 1 and
+        the path terms 0."""
+        code = _lookup(_PICK_SPACES, space, "pick space")
+        if not isinstance(x, numbers.Integral) or not isinstance(y, numbers.Integral):
+            raise TypeError("pick_terms: x and y are integer sample or pixel indices")
+        if x < 0 or y < 0 or x > 0xFFFFFFFF or y > 0xFFFFFFFF:
+            raise ValueError(f"pick_terms: x and y must be non-negative, got ({x}, {y})")
+        s = encode(sensor, "sensor")
+        out = {"wavelengths_um": self.pick(sensor, x, y, space)["wavelengths_um"]}
+        n = c_size_t()
+        for term, name in enumerate(PICK_TERMS):
+            check(lib.eoir_pick_term_get(self.handle, s, code, int(x), int(y), term, None, 0, byref(n)))
+            values = np.zeros(max(int(n.value), 1), dtype=np.float64)
+            check(lib.eoir_pick_term_get(self.handle, s, code, int(x), int(y), term,
+                                         values.ctypes.data_as(ctypes.POINTER(c_double)), values.size, byref(n)))
+            out[name] = values[:int(n.value)].copy()
+        return out
 
 
 def _as_integer(value, prop: str) -> int:

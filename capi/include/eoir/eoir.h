@@ -45,7 +45,7 @@ extern "C" {
 
 /* ------------------------------------------------------------------ version */
 #define EOIR_VERSION_MAJOR 1
-#define EOIR_VERSION_MINOR 5
+#define EOIR_VERSION_MINOR 6
 #define EOIR_VERSION_PATCH 0
 
 /* Returns EOIR_VERSION_MAJOR*10000 + MINOR*100 + PATCH of the loaded library. */
@@ -423,6 +423,24 @@ EOIR_API eoir_status eoir_pick_get(eoir_engine engine, const char* sensor, int32
                                    eoir_pick* pick_out, double* wavelengths_um, double* spectral_radiance,
                                    size_t capacity, size_t* count_out);
 
+/* Eq. 9's terms of the same sample, one per call (1.6; spec 4.1.5.3, the
+ * components of 6.2.5.4), per interval of the sensor's spectral grid into
+ * values (capacity values; *count_out the grid size; values may be NULL to
+ * ask the size). Radiances in W/(cm^2 sr um). In vacuum T_out is 1 and the
+ * path's terms are 0. Unknown term: EOIR_ERR_OUT_OF_RANGE naming "term". */
+typedef enum eoir_pick_term {
+  EOIR_PICK_TERM_SURFACE = 0,       /* leaving the surface: eq. 9's bracket (reflected light, DownWelling,
+                                       emission); for the sky, the background light */
+  EOIR_PICK_TERM_DOWNWELLING = 1,   /* of which DownWelling / pi x SRF */
+  EOIR_PICK_TERM_TRANSMITTANCE = 2, /* T_out of the path to the sensor (dimensionless) */
+  EOIR_PICK_TERM_PATH_THERMAL = 3,  /* L_path: the path's thermal emission */
+  EOIR_PICK_TERM_PATH_SCATTER = 4,  /* L_scatter: sunlight its air scatters into the line of sight */
+  EOIR_PICK_TERM_AT_SENSOR = 5      /* surface x T_out + L_path + L_scatter (eoir_pick_get's spectral radiance) */
+} eoir_pick_term;
+EOIR_API eoir_status eoir_pick_term_get(eoir_engine engine, const char* sensor, int32_t space, uint32_t x,
+                                        uint32_t y, int32_t term, double* values, size_t capacity,
+                                        size_t* count_out);
+
 /* ------------------------------------------------------ targets and truth */
 /* Sensor-to-target metrics (spec 5.13, Table 2) are data providers of group
  * "EOIR Sensor-to-Target Metrics" read with eoir_provider_get and a target.
@@ -567,6 +585,9 @@ typedef struct eoir_api_v1 {
   /* appended in 1.5 (pointing) */
   eoir_status (*sensor_point_azel)(eoir_engine, const char*, double, double);
   eoir_status (*sensor_point_at)(eoir_engine, const char*, const char*);
+  /* appended in 1.6 (eq. 9's terms) */
+  eoir_status (*pick_term_get)(eoir_engine, const char*, int32_t, uint32_t, uint32_t, int32_t, double*, size_t,
+                               size_t*);
 } eoir_api_v1;
 
 /* The plugin's one entry point (resolved by name with dlsym). Returns, in

@@ -444,7 +444,7 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                   }
                 }
                 if (best_part < 0)
-                  emit(c, r, -1, -1, sky_range_m, Vec3::Zero(), Vec3::Zero());
+                  emit(c, r, -1, -1, sky_range_m, d, Vec3::Zero());
                 else
                   emit(c, r, od.object->object_id, best_part, best, d,
                        od.parts[static_cast<std::size_t>(best_part)].part_to_frame * best_normal_part);
@@ -452,7 +452,7 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
               }
               cast_one(scene, rc, rh, d, 0, query);
               if (rc.object < 0) {
-                emit(c, r, -1, -1, sky_range_m, Vec3::Zero(), Vec3::Zero());
+                emit(c, r, -1, -1, sky_range_m, d, Vec3::Zero());
               } else {
                 const ObjectData& od = objects[static_cast<std::size_t>(rc.object)];
                 emit(c, r, od.object->object_id, rc.part, rc.best_t, d,

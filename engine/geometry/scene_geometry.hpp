@@ -118,8 +118,8 @@ class RayCaster {
   // goes along direction(c, r), a pinhole projection (the rays of a
   // rectangle of samples lie in the cone of its corner rays), and its nearest
   // surface goes to emit(c, r, object_id, part, range_m, direction,
-  // normal_frame) (object_id -1: the sky, with a zero direction and normal, as
-  // sky tiles compute none): normal_frame is the hit's outward unit normal,
+  // normal_frame) (object_id -1: the sky, with a zero normal, and a zero
+  // direction where a tile near no object computed none): normal_frame is the hit's outward unit normal,
   // observer frame, the one cast() gives (the intersection computes it). Cast in tiles of 8 x 8 samples: a
   // tile whose bounding cone meets no part's bounding sphere is sky, one
   // whose nearby parts are all of one object is intersected with them

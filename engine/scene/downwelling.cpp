@@ -9,7 +9,8 @@
 
 namespace eoir::scene {
 namespace {
-constexpr double kLowestSun_deg = -12.0, kSunStep_deg = 3.0;
+constexpr double kLowestSun_deg = -12.0;
+constexpr int kSunNodes = 40;  // uniform in the Sun's zenith cosine, from sin(-12 deg) to 1
 constexpr int kAzimuths = 25;  // 0..pi, 7.5 deg apart (the hemisphere's integral)
 
 // Trapezoid weights of nodes x over [x.front(), x.back()].
@@ -52,10 +53,11 @@ Downwelling::Downwelling(const atmosphere::PathOptics& optics, const atmosphere:
       thermal_[i] += 2.0 * constants::pi * we[k] * lines.paths[upward[k]].terms.thermal[i];
   const std::vector<double> unit(n, 1.0);
   std::vector<double> L(n);
-  for (double e_deg = kLowestSun_deg; e_deg <= 90.0 + 1e-9; e_deg += kSunStep_deg) {
-    const double es = e_deg * constants::pi / 180.0;
-    sun_elevation_rad_.push_back(es);
-    const Vec3 to_sun = std::sin(es) * up + std::cos(es) * across;
+  const double mu_low = std::sin(kLowestSun_deg * constants::pi / 180.0);
+  for (int node = 0; node < kSunNodes; ++node) {
+    const double mu = mu_low + (1.0 - mu_low) * node / (kSunNodes - 1);
+    sun_mu_.push_back(mu);
+    const Vec3 to_sun = mu * up + std::sqrt(1.0 - mu * mu) * across;
     std::vector<double> E(n, 0.0);
     for (std::size_t k = 0; k < upward.size(); ++k) {
       if (!(we[k] > 0)) continue;
@@ -74,10 +76,9 @@ Downwelling::Downwelling(const atmosphere::PathOptics& optics, const atmosphere:
 void Downwelling::scatter_per_sun(double mu_sun, std::vector<double>& out) const {
   const std::size_t n = thermal_.size();
   out.assign(n, 0.0);
-  const double e = std::asin(std::clamp(mu_sun, -1.0, 1.0));
-  const std::vector<double>& x = sun_elevation_rad_;
-  if (e <= x.front()) return;  // night (nautical twilight's end)
-  const double node = std::min((e - x.front()) / (x[1] - x[0]), static_cast<double>(x.size() - 1) - 1e-12);
+  const std::vector<double>& x = sun_mu_;
+  if (mu_sun <= x.front()) return;  // night (nautical twilight's end)
+  const double node = std::min((mu_sun - x.front()) / (x[1] - x[0]), static_cast<double>(x.size() - 1) - 1e-12);
   const std::size_t k = static_cast<std::size_t>(node);
   const double f = node - static_cast<double>(k);
   for (std::size_t i = 0; i < n; ++i) out[i] = (1.0 - f) * scatter_[k][i] + f * scatter_[k + 1][i];

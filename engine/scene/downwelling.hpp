@@ -8,8 +8,8 @@
 // sky's light in shadows and on lit ground, twilight on the ground after
 // sunset, and the sky's emission reflected in the thermal bands. Made once
 // per atmosphere and band from a ground observer's lines of sight
-// (SightLines), per unit solar irradiance over the Sun's elevation (every
-// 3 deg from -12 deg up; linear between).
+// (SightLines), per unit solar irradiance over the Sun's zenith cosine (40
+// nodes from 12 deg below the horizon to the zenith; linear between).
 #pragma once
 #include <vector>
 
@@ -31,7 +31,7 @@ class Downwelling {
   const std::vector<double>& thermal() const { return thermal_; }
 
  private:
-  std::vector<double> sun_elevation_rad_;
+  std::vector<double> sun_mu_;  // nodes: the Sun's zenith cosine
   std::vector<std::vector<double>> scatter_;  // [node][interval], per unit solar irradiance
   std::vector<double> thermal_;
 };

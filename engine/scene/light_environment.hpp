@@ -1,7 +1,8 @@
 // The light that can reach a surface of the world (spec 4.1.5.3, eq. 4): the
 // Sun (eq. 6, E = L_tab dOmega_sun, times the visible fraction of its disc),
 // and every other object as a source: reduced to a Lambertian sphere of equal
-// volume with the phase law (eq. 7) or, when it looks larger than the Sun or
+// volume with its phase law (eq. 7; natural bodies' observed laws,
+// radiometry/disk_photometry.hpp) or, when it looks larger than the Sun or
 // the Moon from the Earth, summed over its tessellation (eq. 8). The
 // background term E_bkg / pi joins here with the sky's background light.
 // Single bounce: the light a source reflects is the Sun's only (4.1.6.1).
@@ -12,6 +13,7 @@
 
 #include "geometry/eclipse.hpp"
 #include "radiometry/brdf.hpp"
+#include "radiometry/disk_photometry.hpp"
 
 namespace eoir::scene {
 
@@ -29,7 +31,8 @@ struct ObjectLight {
 
 // The spectra of an eq. 7 source (WorldObject::light_spectra, made on first use).
 struct LightSpectra {
-  // E_sun(lambda) SRF(lambda) 2 / (3 pi) at the source, times its visible
+  // E_sun(lambda) p(lambda) / pi at the source (p = 2/3 SRF for a
+  // Lambertian sphere, radiometry/disk_photometry.hpp), times its visible
   // fraction of the Sun: multiply by Phase(psi) dOmega (W cm^-2 sr^-1 um^-1).
   std::vector<double> reflected;
   // Overall emittance times B(T_eff): multiply by dOmega.
@@ -37,9 +40,5 @@ struct LightSpectra {
   bool reflects = false;  // some reflected value is not 0 (not eclipsed, not black)
 };
 
-// The phase function of a Lambertian sphere, eq. 7: (sin psi + (pi - psi)
-// cos psi) / pi, psi the Sun-source-observer angle, from cos psi (clamped
-// to [-1, 1]).
-double lambertian_sphere_phase(double cos_psi);
 
 }  // namespace eoir::scene

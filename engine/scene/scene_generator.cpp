@@ -48,6 +48,8 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
   out.hits.resize(count);  // cast_grid emits every sample once
   out.image.radiance_W_cm2_sr.resize(count);
   const auto direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r); };
+  const bool sky_varies = world.atmosphere.sky != nullptr;  // under the atmosphere, with the line of sight
+  const double background = world.sky.background_radiance_W_cm2_sr;
   const geometry::RayQuery extended{geometry::ray_mask_extended, -1};
   world.caster.cast_grid(
       w, h, direction,
@@ -56,7 +58,9 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
         const auto i = static_cast<std::size_t>(r * w + c);
         out.hits[i] = SampleHit{object, part};
         if (object < 0) {
-          out.image.radiance_W_cm2_sr[i] = world.sky_radiance(direction(c, r));  // the background light (spec 4.1.4), the sky's
+          // the background light (spec 4.1.4), or the sky's
+          out.image.radiance_W_cm2_sr[i] =
+              sky_varies ? world.sky_radiance(d.squaredNorm() > 0 ? d : direction(c, r)) : background;
           return;
         }
         const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];
@@ -120,7 +124,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
               for (std::size_t m = 0; m < sub; ++m) {
                 const geometry::Hit& hit = sub_hits[static_cast<std::size_t>(k) * sub + m];
                 if (hit.object_id < 0) {
-                  sum += world.sky_radiance(directions[static_cast<std::size_t>(k) * sub + m]);
+                  sum += sky_varies ? world.sky_radiance(directions[static_cast<std::size_t>(k) * sub + m]) : background;
                   continue;
                 }
                 const WorldObject& o = *world.objects[static_cast<std::size_t>(hit.object_id)];

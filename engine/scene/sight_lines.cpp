@@ -12,6 +12,18 @@ constexpr int kGroundNodes = 33;     // lines that meet the ground, from above: 
 constexpr int kLimbNodes = 25;       // lines through the limb: tangent altitude top (k / 24)^2
 constexpr int kElevationNodes = 25;  // from inside, each side of the horizon: (pi / 2) (k / 24)^1.6
 constexpr std::size_t kAzimuths = 49;  // 0..pi from the Sun's vertical plane, 3.75 deg apart
+
+// atan2(y, x) for y >= 0, in [0, pi], within 1e-5 rad (Abramowitz and
+// Stegun 4.4.49): a per-sample lookup's azimuth.
+double azimuth_rad(double y, double x) {
+  const double ax = std::fabs(x);
+  const double big = std::max(ax, y), small = std::min(ax, y);
+  if (!(big > 0)) return 0.0;
+  const double t = small / big, t2 = t * t;
+  double a = t * (0.9998660 + t2 * (-0.3302995 + t2 * (0.1801410 + t2 * (-0.0851330 + t2 * 0.0208351))));
+  if (y > ax) a = 0.5 * constants::pi - a;
+  return x < 0 ? constants::pi - a : a;
+}
 }  // namespace
 
 SightLines SightLines::make(const atmosphere::PathOptics& optics, const atmosphere::EarthFigure& figure,
@@ -60,39 +72,25 @@ SightLines SightLines::make(const atmosphere::PathOptics& optics, const atmosphe
 SkyView::SkyView(std::shared_ptr<const SightLines> lines, std::shared_ptr<const atmosphere::SunlightTable> sunlight,
                  const atmosphere::EarthFigure& earth, const Vec3& to_sun, const std::vector<double>& sun_irradiance,
                  const std::vector<double>& background_radiance, const radiometry::SpectralView& view)
-    : lines_(std::move(lines)), intervals_(sunlight->intervals()), earth_(earth), azimuths_(kAzimuths) {
+    : lines_(std::move(lines)),
+      intervals_(sunlight->intervals()),
+      earth_(earth),
+      azimuths_(kAzimuths),
+      sunlight_(std::move(sunlight)),
+      sun_irradiance_(sun_irradiance),
+      view_(view) {
   const SightLines& L = *lines_;
   centre_ = atmosphere::to_sphere_space(earth, -earth.centre_m);
   vertical_ = centre_.normalized();
-  const Vec3 sun = atmosphere::to_sphere_space(earth, to_sun).normalized();
-  x_ = sun - sun.dot(vertical_) * vertical_;
+  sun_ = atmosphere::to_sphere_space(earth, to_sun).normalized();
+  x_ = sun_ - sun_.dot(vertical_) * vertical_;
   x_ = x_.norm() > 1e-9 ? x_.normalized() : vertical_.unitOrthogonal();
   y_ = vertical_.cross(x_);
-  const double r_o = centre_.norm();
-  std::vector<double> out(intervals_);
+  for (const double node : L.node) coordinate_.push_back(L.above ? node : std::sin(node));
   scatter_.resize(L.node.size() * azimuths_);
   scatter_band_.resize(scatter_.size());
+  made_ = std::make_unique<std::once_flag[]>(scatter_.size());
   for (std::size_t j = 0; j < L.node.size(); ++j) {
-    for (std::size_t m = 0; m < azimuths_; ++m) {
-      const double psi = constants::pi * static_cast<double>(m) / static_cast<double>(azimuths_ - 1);
-      const Vec3 horizontal = std::cos(psi) * x_ + std::sin(psi) * y_;
-      Vec3 d, start = centre_;
-      if (L.above) {
-        const double p = L.node[j];
-        const double mu = -std::sqrt(std::max(0.0, 1.0 - (p / r_o) * (p / r_o)));
-        d = mu * vertical_ + std::sqrt(std::max(0.0, 1.0 - mu * mu)) * horizontal;
-        // (the path begins where the line enters the top of the air)
-        const double r_top = L.top_radius_m;
-        start = centre_ + (-centre_.dot(d) - std::sqrt(std::max(0.0, r_top * r_top - p * p))) * d;
-      } else {
-        const double e = L.node[j];
-        d = std::sin(e) * vertical_ + std::cos(e) * horizontal;
-      }
-      std::fill(out.begin(), out.end(), 0.0);
-      atmosphere::add_single_scatter(L.paths[j], start, d, sun, sun_irradiance, *sunlight, out);
-      scatter_band_[j * azimuths_ + m] = view.integrate(out);
-      scatter_[j * azimuths_ + m] = out;
-    }
     // What the line's air adds without the Sun: its emission and the background seen through it.
     std::vector<double> sky = L.paths[j].terms.thermal;
     if (!background_radiance.empty())
@@ -100,6 +98,39 @@ SkyView::SkyView(std::shared_ptr<const SightLines> lines, std::shared_ptr<const 
     sky_band_.push_back(view.integrate(sky));
     sky_.push_back(std::move(sky));
   }
+}
+
+void SkyView::make_cell(std::size_t k) const {
+  const SightLines& L = *lines_;
+  const std::size_t j = k / azimuths_, m = k % azimuths_;
+  const double psi = constants::pi * static_cast<double>(m) / static_cast<double>(azimuths_ - 1);
+  const Vec3 horizontal = std::cos(psi) * x_ + std::sin(psi) * y_;
+  Vec3 d, start = centre_;
+  if (L.above) {
+    const double p = L.node[j], r_o = centre_.norm();
+    const double mu = -std::sqrt(std::max(0.0, 1.0 - (p / r_o) * (p / r_o)));
+    d = mu * vertical_ + std::sqrt(std::max(0.0, 1.0 - mu * mu)) * horizontal;
+    // (the path begins where the line enters the top of the air)
+    const double r_top = L.top_radius_m;
+    start = centre_ + (-centre_.dot(d) - std::sqrt(std::max(0.0, r_top * r_top - p * p))) * d;
+  } else {
+    const double e = L.node[j];
+    d = std::sin(e) * vertical_ + std::cos(e) * horizontal;
+  }
+  std::vector<double> out(intervals_, 0.0);
+  atmosphere::add_single_scatter(L.paths[j], start, d, sun_, sun_irradiance_, *sunlight_, out);
+  scatter_band_[k] = view_.integrate(out);
+  scatter_[k] = std::move(out);
+}
+
+const std::vector<double>& SkyView::cell_scatter(std::size_t k) const {
+  std::call_once(made_[k], [this, k] { make_cell(k); });
+  return scatter_[k];
+}
+
+double SkyView::cell_band(std::size_t k) const {
+  std::call_once(made_[k], [this, k] { make_cell(k); });
+  return scatter_band_[k];
 }
 
 SkyView::Cell SkyView::cell_of(const Vec3& direction) const {
@@ -112,16 +143,16 @@ SkyView::Cell SkyView::cell_of(const Vec3& direction) const {
     x = centre_.cross(d).norm();
     if (x >= L.node.back()) return c;
   } else {
-    x = std::asin(std::clamp(d.dot(vertical_), -1.0, 1.0));
+    x = d.dot(vertical_);  // the sine of the elevation
   }
   c.inside = true;
-  const std::vector<double>& n = L.node;
+  const std::vector<double>& n = coordinate_;
   const double xc = std::clamp(x, n.front(), n.back());
   const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(std::upper_bound(n.begin(), n.end(), xc) - n.begin()),
                                               n.size() - 1);
   c.node = k == 0 ? 0 : k - 1;
   const double fn = n[c.node + 1] > n[c.node] ? (xc - n[c.node]) / (n[c.node + 1] - n[c.node]) : 0.0;
-  const double psi = std::atan2(std::fabs(d.dot(y_)), d.dot(x_));  // 0..pi
+  const double psi = azimuth_rad(std::fabs(d.dot(y_)), d.dot(x_));  // 0..pi
   const double a = psi / constants::pi * static_cast<double>(azimuths_ - 1);
   c.azimuth = std::min<std::size_t>(static_cast<std::size_t>(a), azimuths_ - 2);
   const double fa = std::clamp(a - static_cast<double>(c.azimuth), 0.0, 1.0);
@@ -136,21 +167,24 @@ template <class Value>
 double SkyView::blend(const Cell& c, Value value) const {
   const std::size_t A = azimuths_;
   const std::size_t i00 = c.node * A + c.azimuth;
-  return c.weight[0] * value(i00) + c.weight[1] * value(i00 + A) + c.weight[2] * value(i00 + 1) +
-         c.weight[3] * value(i00 + A + 1);
+  const std::size_t idx[4] = {i00, i00 + A, i00 + 1, i00 + A + 1};
+  double sum = 0;
+  for (int q = 0; q < 4; ++q)
+    if (c.weight[q] != 0) sum += c.weight[q] * value(idx[q]);
+  return sum;
 }
 
 double SkyView::scatter_band(const Vec3& d) const {
   const Cell c = cell_of(d);
   if (!c.inside) return 0.0;
-  return blend(c, [&](std::size_t i) { return scatter_band_[i]; });
+  return blend(c, [&](std::size_t i) { return cell_band(i); });
 }
 
 bool SkyView::sky_band(const Vec3& d, double& out) const {
   const Cell c = cell_of(d);
   if (!c.inside) return false;
   const double own = (c.weight[0] + c.weight[2]) * sky_band_[c.node] + (c.weight[1] + c.weight[3]) * sky_band_[c.node + 1];
-  out = own + blend(c, [&](std::size_t i) { return scatter_band_[i]; });
+  out = own + blend(c, [&](std::size_t i) { return cell_band(i); });
   return true;
 }
 
@@ -160,8 +194,11 @@ void SkyView::scatter(const Vec3& d, std::vector<double>& out) const {
   if (!c.inside) return;
   const std::size_t A = azimuths_, i00 = c.node * A + c.azimuth;
   const std::size_t idx[4] = {i00, i00 + A, i00 + 1, i00 + A + 1};
-  for (int q = 0; q < 4; ++q)
-    for (std::size_t i = 0; i < intervals_; ++i) out[i] += c.weight[q] * scatter_[idx[q]][i];
+  for (int q = 0; q < 4; ++q) {
+    if (c.weight[q] == 0) continue;
+    const std::vector<double>& v = cell_scatter(idx[q]);
+    for (std::size_t i = 0; i < intervals_; ++i) out[i] += c.weight[q] * v[i];
+  }
 }
 
 bool SkyView::sky(const Vec3& d, std::vector<double>& out) const {

@@ -16,10 +16,12 @@
 // observer's altitude. The paths' terms on those nodes (SightLines) are
 // made once per atmosphere, band and observer altitude; per frame only the
 // Sun's geometry: the scatter on (node, azimuth from the Sun's vertical
-// plane) cells (SkyView), interpolated bilinearly.
+// plane) cells (SkyView), each made when a line of sight first needs it (a
+// narrow field reads a few), interpolated bilinearly.
 #pragma once
 #include <Eigen/Core>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "atmosphere/path_optics.hpp"
@@ -75,16 +77,26 @@ class SkyView {
     bool inside = false;              // the line crosses the air
   };
   Cell cell_of(const Vec3& d) const;
+  // Cell k's scatter (made on first use, thread-safe).
+  void make_cell(std::size_t k) const;
+  const std::vector<double>& cell_scatter(std::size_t k) const;
+  double cell_band(std::size_t k) const;
   template <class Value>
   double blend(const Cell& c, Value value) const;
   std::shared_ptr<const SightLines> lines_;
+  std::vector<double> coordinate_;  // the nodes as looked up: p, or the sine of the elevation
   std::size_t intervals_ = 0;
   Vec3 centre_;              // the observer relative to the Earth's centre, sphere space
   Vec3 vertical_, x_, y_;    // x_: toward the Sun's azimuth
   atmosphere::EarthFigure earth_;
   std::size_t azimuths_ = 0;
-  std::vector<std::vector<double>> scatter_;  // [node * azimuths + azimuth][interval]
-  std::vector<double> scatter_band_;
+  std::shared_ptr<const atmosphere::SunlightTable> sunlight_;
+  Vec3 sun_;                                  // sphere space
+  std::vector<double> sun_irradiance_;
+  radiometry::SpectralView view_;
+  std::unique_ptr<std::once_flag[]> made_;
+  mutable std::vector<std::vector<double>> scatter_;  // [node * azimuths + azimuth][interval]
+  mutable std::vector<double> scatter_band_;
   std::vector<double> sky_band_;              // per node, what does not depend on the Sun
   std::vector<std::vector<double>> sky_;      // per node per interval
 };

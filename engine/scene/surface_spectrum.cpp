@@ -7,7 +7,10 @@
 namespace eoir::scene {
 namespace {
 radiometry::Brdf brdf_of(const universe::Material& m) {
-  return m.gray_body ? radiometry::Brdf(universe::BrdfParameters{}) : radiometry::Brdf(m.brdf);
+  // Gray bodies are Lambertian, but for the Moon's (lunar_gray_body).
+  if (m.gray_body && m.brdf.model != universe::BrdfModel::lunar_lommel_seeliger)
+    return radiometry::Brdf(universe::BrdfParameters{});
+  return radiometry::Brdf(m.brdf);
 }
 }  // namespace
 

@@ -182,6 +182,7 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
     w->bounding_radius_m =
         std::max(w->bounding_radius_m, part.offset_m.norm() + geometry::shape_bounding_radius_m(part.geom));
   w->volumetric_radius_m = volumetric_radius_m(po.parts);
+  if (w->central_body) w->disk_photometry = radiometry::DiskPhotometry(radiometry::disk_phase_law(o.central_body));
   w->patch_size_m = patch_size_m(o, po.parts, world.view.fidelity);
   const universe::PointSourceModel model = o.body.point_source_model;
   w->detailed_point_source =
@@ -255,7 +256,7 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
   // Eq. 9's DownWelling / pi on the Earth's surface, likewise.
   if (under_atmosphere_ && w.atmosphere.downwelling)
     w.atmosphere.downwelling->add_over_pi(n.dot(w.atmosphere.to_sun), w.atmosphere.sun_irradiance, out);
-  // Every other object: a Lambertian sphere (eq. 7) or its tessellation (eq. 8).
+  // Every other object: its disc with its phase law (eq. 7) or its tessellation (eq. 8).
   for (std::size_t k = 0; k < w.lights.size(); ++k) {
     const ObjectLight& src = w.lights[k];
     if (src.object == id || negligible_light_[k]) continue;
@@ -286,7 +287,7 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
       for (std::size_t i = 0; i < count; ++i) out[i] += g * spectra.emitted[i];
       continue;
     }
-    const double phase = lambertian_sphere_phase(-src.to_sun.dot(I));
+    const double phase = w.objects[static_cast<std::size_t>(src.object)]->disk_photometry.phase(-src.to_sun.dot(I));
     for (std::size_t i = 0; i < count; ++i) out[i] += g * (spectra.reflected[i] * phase + spectra.emitted[i]);
   }
 }
@@ -325,7 +326,11 @@ const LightSpectra& WorldObject::light_spectra() const {
     const double sun_omega = universe::sun_projected_solid_angle_sr((w.sun.position_m - placed.position_m).norm());
     light_spectra_.reflected.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      light_spectra_.reflected[i] = w.sun.radiance[i] * sun_omega * fraction * srf[i] * 2.0 / (3.0 * constants::pi);
+      light_spectra_.reflected[i] =
+          disk_photometry.lambertian()
+              ? w.sun.radiance[i] * sun_omega * fraction * srf[i] * 2.0 / (3.0 * constants::pi)
+              : w.sun.radiance[i] * sun_omega * fraction * srf[i] * disk_photometry.geometric_albedo_per_srf() /
+                    constants::pi;
       light_spectra_.reflects = light_spectra_.reflects || light_spectra_.reflected[i] != 0.0;
     }
   });
@@ -378,9 +383,10 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
   if (plain()) return plain_radiance(part);
   if (under_atmosphere_) {  // eq. 9 interval by interval: the path changes with the point
     thread_local std::vector<double> L, E;  // per-sample scratch (eq. 8 sources below allocate their own)
-    spectral_radiance_into(part, point_body_m, normal_body, -to_frame(point_body_m).normalized(), false, L, E);
-    to_sensor(L, point_body_m, normal_body);
-    return world_->view.spectral.integrate(L);
+    const Vec3 d = to_frame(point_body_m).normalized();
+    spectral_radiance_into(part, point_body_m, normal_body, -d, false, L, E);
+    to_sensor(L, point_body_m, normal_body, false);
+    return world_->view.spectral.integrate(L) + (world_->atmosphere.sky ? world_->atmosphere.sky->scatter_band(d) : 0.0);
   }
   const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
   double reflected = 0;
@@ -476,11 +482,11 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
   std::vector<double> E(w.view.spectral.sample_wavelengths_um.size(), 0.0);
   const double r2 = range_m * range_m;
   if (!detailed_point_source && light_ >= 0 && !under_atmosphere_) {  // (under its air the Earth's paths vary: summed)
-    // Eq. 7 toward the observer: [E_sun SRF 2/(3 pi) Phase(psi) + eps B(T)] dOmega.
+    // Eq. 7 toward the observer: [E_sun p / pi Phase(psi) + eps B(T)] dOmega.
     const LightSpectra& self = light_spectra();
     const double omega = constants::pi * volumetric_radius_m * volumetric_radius_m / r2;
     const Vec3 to_observer = -placed.position_m / range_m;
-    const double phase = lambertian_sphere_phase(w.lights[static_cast<std::size_t>(light_)].to_sun.dot(to_observer));
+    const double phase = disk_photometry.phase(w.lights[static_cast<std::size_t>(light_)].to_sun.dot(to_observer));
     for (std::size_t i = 0; i < E.size(); ++i) E[i] = (self.reflected[i] * phase + self.emitted[i]);
     E = at_sensor(std::move(E));
     for (double& e : E) e *= omega;
@@ -506,13 +512,14 @@ std::vector<double> WorldObject::at_sensor(std::vector<double> spectrum, const V
   return spectrum;
 }
 
-void WorldObject::to_sensor(std::vector<double>& spectrum, const Vec3& point_body_m, const Vec3& normal_body) const {
+void WorldObject::to_sensor(std::vector<double>& spectrum, const Vec3& point_body_m, const Vec3& normal_body,
+                            bool spectral_scatter) const {
   if (under_atmosphere_) {
     thread_local std::vector<double> T, L;
     const Vec3 toward = -to_frame(point_body_m).normalized();
     world_->atmosphere.surface->view_at((placed.body_to_frame * normal_body).dot(toward), T, L);
     for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] = spectrum[i] * T[i] + L[i];
-    if (world_->atmosphere.sky) {  // eq. 9's L_scatter along the line of sight
+    if (spectral_scatter && world_->atmosphere.sky) {  // eq. 9's L_scatter along the line of sight
       thread_local std::vector<double> S;
       world_->atmosphere.sky->scatter(-toward, S);
       for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] += S[i];
@@ -696,11 +703,6 @@ std::vector<double> WorldAtmosphere::to_space(const Vec3& point_m, const Vec3& d
   if (ground) return std::vector<double>(static_cast<std::size_t>(optics->band().intervals), 0.0);
   if (c.crosses) optics->transmittance(c, T);
   return T;
-}
-
-double lambertian_sphere_phase(double cos_psi) {
-  const double c = std::clamp(cos_psi, -1.0, 1.0);
-  return (std::sqrt((1.0 - c) * (1.0 + c)) + (constants::pi - std::acos(c)) * c) / constants::pi;
 }
 
 double World::sky_radiance(const Vec3& d) const {
@@ -1019,7 +1021,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
           geography.albedo = &level;
           for (int v = 0; v < 256; ++v)
             geography.albedo_spectra.push_back(builder.spectrum(
-                universe::gray_body_material,
+                universe::central_body_surface(o.central_body).albedo_map_material,
                 std::clamp(level.value_offset() + level.value_scale() * v, 0.0, 1.0), o.name + ".bitmap", w.view()));
         }
         if (o.body.thermal_model == universe::ThermalModel::climatology && maps->land_mask) {

@@ -195,6 +195,7 @@ class WorldObject {
   double range_m = 0;             // observer to body origin
   double bounding_radius_m = 0;   // sphere about the body origin enclosing every part
   double volumetric_radius_m = 0; // the sphere of equal volume (eq. 7; plates: of equal area)
+  radiometry::DiskPhotometry disk_photometry;  // its disc as a point (eq. 7): Lambertian, or a natural body's law
   Imaging imaging = Imaging::outside;
   bool detailed_point_source = true;  // spec 4.1.6.1: detailed or simple
   double light_time_s = 0;        // the Moon and the planets: seen where they were (apparent place)
@@ -255,7 +256,9 @@ class WorldObject {
   // with the outward normal there.
   std::vector<double> at_sensor(std::vector<double> spectrum, const Vec3& point_body_m = Vec3::Zero(),
                                 const Vec3& normal_body = Vec3::UnitZ()) const;
-  void to_sensor(std::vector<double>& spectrum, const Vec3& point_body_m, const Vec3& normal_body) const;
+  void to_sensor(std::vector<double>& spectrum, const Vec3& point_body_m, const Vec3& normal_body) const {
+    to_sensor(spectrum, point_body_m, normal_body, true);
+  }
   // Eq. 9 term by term at a point of `part` (body frame, outward normal there).
   Eq9Terms eq9_terms(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body) const;
   // The band radiance of a plain part at the sensor (eq. 9 with L_path).
@@ -292,6 +295,10 @@ class WorldObject {
   // sum over the patches of t facing the observer of L_k cos A_k (ERRATA eq. 11 times R^2).
   template <class PatchRadiance>
   double visible_patch_sum(const geometry::Tessellation& t, PatchRadiance radiance) const;
+  // to_sensor, with or without L_scatter on the Earth's surface (a band
+  // integral adds its band value instead).
+  void to_sensor(std::vector<double>& spectrum, const Vec3& point_body_m, const Vec3& normal_body,
+                 bool spectral_scatter) const;
   // spectral_radiance into caller buffers (E: the reflected irradiance's scratch).
   void spectral_radiance_into(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body, const Vec3& toward,
                               bool sun_only, std::vector<double>& out, std::vector<double>& E) const;

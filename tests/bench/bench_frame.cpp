@@ -16,7 +16,9 @@
 //    close up, error = relative RMS of the pixel means against the finest;
 //  - BM_FrameSunlight: sunlight on (day side) and off (night side) in each
 //    scene mode, visible and thermal band;
-//  - BM_FrameThreads: the stage split at 1 and 2 threads, frames alternating.
+//  - BM_FrameThreads: the stage split at 1 and 2 threads, frames alternating;
+//  - BM_FrameAtmosphere: the atmosphere's cost (issue 20 item 8: at most
+//    1.5x the same frame without it), frames with and without it alternating.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -202,6 +204,48 @@ void BM_FrameSunlight(benchmark::State& state) {
   time_frames(state, *engine, s.pixels);
 }
 
+// The atmosphere's cost: the same 256^2 frame with the Earth's atmosphere
+// off and on, rendered alternately in one run (each engine's tables made
+// before timing: per atmosphere and band, not per frame), reported as the
+// ratio of their median frame times, atmosphere_ratio. args: case 0 the GEO
+// full disc in the visible (0.45-0.75 um, bitmap mode, by day), 1 the same
+// in 8-12 um (smooth mode), 2 a ground telescope by day (visible, 30 deg
+// elevation), 3 the same at night.
+void BM_FrameAtmosphere(benchmark::State& state) {
+  const int which = static_cast<int>(state.range(0));
+  SensorSetup s;
+  s.pixels = 256;
+  s.fov_deg = which >= 2 ? 2.0 : 20.0;
+  if (which != 1) {
+    s.band_low_um = 0.45;
+    s.band_high_um = 0.75;
+  }
+  s.scene_mode = which == 0 ? "bitmap" : "smooth";
+  s.day_side = which != 3;
+  std::unique_ptr<eoir::Engine> engines[2];
+  for (int k = 0; k < 2; ++k) {
+    s.atmosphere = k == 0 ? "none" : "simple";
+    engines[k] = which >= 2 ? eoir::bench::make_ground_scene(s) : eoir::bench::make_geo_scene(s);
+    engines[k]->render("Sensor");
+    engines[k]->render("Sensor");
+  }
+  std::vector<double> ms[2];
+  for (auto _ : state)
+    for (int k = 0; k < 2; ++k) {
+      const auto a = std::chrono::steady_clock::now();
+      const eoir::Frame& f = engines[k]->render("Sensor");
+      ms[k].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count());
+      benchmark::DoNotOptimize(f.sensor.electrons.data());
+    }
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? NAN : v[v.size() / 2];
+  };
+  state.counters["vacuum_ms"] = median(ms[0]);
+  state.counters["atmosphere_ms"] = median(ms[1]);
+  state.counters["atmosphere_ratio"] = median(ms[1]) / median(ms[0]);
+}
+
 // Every stage at 1 and at 2 threads (issue 10: each stage over 5 % of a
 // frame at least 1.7x faster on 2 threads). arg: pixels. Paired: each
 // iteration renders one frame at 1 thread and one at 2, so both see the same
@@ -240,6 +284,7 @@ BENCHMARK(BM_FrameThreads)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime();
+BENCHMARK(BM_FrameAtmosphere)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_FrameSunlight)
     ->ArgsProduct({{0, 1, 2}, {1, 0}, {1, 0}})
     ->Unit(benchmark::kMillisecond)

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine.hpp"
+#include "universe/pointing.hpp"
 
 namespace eoir::bench {
 
@@ -47,6 +48,7 @@ struct SensorSetup {
   double band_low_um = 8.0, band_high_um = 12.0;
   std::string scene_mode = "coarse";
   bool day_side = true;  // false: the host and the LEO satellites on the night side (no sunlight on the scene)
+  std::string atmosphere = "none";  // the Earth's `atmosphere` (issue 20)
 };
 
 // A sensor named `name` on `parent`, looking along `look` (J2000 unit vector;
@@ -95,6 +97,30 @@ inline std::unique_ptr<Engine> make_geo_scene(const SensorSetup& s, std::uint64_
   add_satellite(*e, "Leo2", "sphere", {1.0}, 280.0, p2, v2);
   add_satellite(*e, "Leo3", "box", {2.0, 1.0, 1.0}, 320.0, p3, v3);
   add_sensor(*e, "Sensor", "Host", s, -x * Eigen::Vector3d::UnitX());
+  e->set_property("Earth", "atmosphere", Value(s.atmosphere));
+  return e;
+}
+
+// A ground telescope: a site at 30 N 150 E (by day, the Sun some 60 deg up
+// at the bench epoch; 30 W with day_side false: night), "Sensor" pointed at
+// azimuth 270, elevation 30.
+inline std::unique_ptr<Engine> make_ground_scene(const SensorSetup& s, std::uint64_t seed = 1) {
+  EngineOptions opt;
+  opt.seed = seed;
+  auto e = std::make_unique<Engine>(opt);
+  e->set_time(bench_epoch());
+  e->add_object(universe::ObjectKind::central_body, "Earth");
+  e->add_object(universe::ObjectKind::site, "Site");
+  e->set_property("Site", "latitude_deg", Value(30.0));
+  e->set_property("Site", "longitude_deg", Value(s.day_side ? 150.0 : -30.0));
+  add_sensor(*e, "Sensor", "Site", s, Eigen::Vector3d::UnitZ());
+  const universe::PushedState p =
+      universe::azimuth_elevation_pointing(e->universe(), e->universe().sensor("Sensor"), e->time(), 270.0, 30.0);
+  const double zero[3] = {0, 0, 0};
+  const double q[4] = {p.attitude.w(), p.attitude.x(), p.attitude.y(), p.attitude.z()};
+  const double w[3] = {p.angular_velocity_rad_s.x(), p.angular_velocity_rad_s.y(), p.angular_velocity_rad_s.z()};
+  e->push_state("Sensor", p.epoch, p.frame == universe::StateFrame::j2000 ? 0 : 1, zero, zero, q, w);
+  e->set_property("Earth", "atmosphere", Value(s.atmosphere));
   return e;
 }
 

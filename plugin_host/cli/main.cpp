@@ -30,6 +30,7 @@
 #include "atomic_write.hpp"
 #include "engine.hpp"
 #include "iso_time.hpp"
+#include "pick.hpp"
 #include "report.hpp"
 #include "run.hpp"
 #include "scenario.hpp"
@@ -64,6 +65,8 @@ const char* const kUsage =
     "                         render every sensor at each time step: FITS, PNG, truth, regions\n"
     "  access SCENARIO --sensor NAME --target NAME --min-snr X ...\n"
     "                         intervals where the target's SNR is >= X (spec 7.8)\n"
+    "  pick SCENARIO --sensor NAME --x N --y N ...\n"
+    "                         eq. 9 term by term per spectral interval at one sample or pixel\n"
     "  validate SCENARIO      check a scenario file as `run` would, without rendering\n"
     "  properties KIND        every property of a kind: type, unit, default, description\n"
     "  save-state SCENARIO --out FILE [--time ISO]\n"
@@ -149,6 +152,25 @@ const std::vector<CommandSpec>& commands() {
        {"--sensor", "--target", "--min-snr", "--start", "--stop", "--step", "--format", "--out"},
        {"--quiet", "--allow-paths-outside"},
        true},
+      {"pick",
+       "usage: eoir pick SCENARIO --sensor NAME --x N --y N [--space sample|pixel]\n"
+       "                 [--time ISO] [--format csv|json] [--out FILE]\n"
+       "\n"
+       "Renders the sensor at --time (default: the scenario's start) and prints what one\n"
+       "scene sample or sensor pixel (its centre sample) sees, eq. 9 term by term per\n"
+       "spectral interval (spec 4.1.5.3; the components of 6.2.5.4): wavelength_um,\n"
+       "surface (what leaves the surface: reflected light, DownWelling, emission; the\n"
+       "background light for the sky), downwelling (of which DownWelling), transmittance\n"
+       "(T_out), path_thermal (L_path), path_scatter (L_scatter) and at_sensor\n"
+       "(surface x transmittance + path_thermal + path_scatter), radiances in\n"
+       "W/(cm^2 sr um); with the object hit, latitude/longitude and effective radiance.\n"
+       "\n"
+       "  --sensor NAME     sensor of the scenario\n"
+       "  --x N, --y N      column and row from the top (0-based)\n"
+       "  --space S         sample (scene samples, the default) or pixel\n"
+       "  --time ISO        time of the frame (default: the scenario's start)\n",
+       {"--sensor", "--x", "--y", "--space", "--time", "--format", "--out"},
+       {"--allow-paths-outside"}},
       {"validate",
        "usage: eoir validate SCENARIO\n"
        "\n"
@@ -206,6 +228,7 @@ std::string command_help(const CommandSpec& c) {
   if (c.name == "report" || c.name == "run" || c.name == "access") h += kTimeOptions;
   if (c.name == "report" || c.name == "access")
     h += "  --format json|csv (default json); --out FILE (written atomically; default stdout)\n";
+  if (c.name == "pick") h += "  --format csv|json (default csv); --out FILE (written atomically; default stdout)\n";
   if (c.name == "report" || c.name == "run" || c.name == "access") h += "  --quiet           no progress on stderr\n";
   if (std::find(c.flags.begin(), c.flags.end(), "--allow-paths-outside") != c.flags.end())
     h += "  --allow-paths-outside  let the scenario name files outside its folder (README \"Bounds\")\n";
@@ -677,6 +700,47 @@ int cmd_access(const std::vector<std::string>& args, const Global& g) {
   return 0;
 }
 
+// A non-negative integer index (--x, --y).
+uint32_t parse_index(const std::string& s, const char* option) {
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long v = std::strtoull(s.c_str(), &end, 10);
+  if (s.empty() || s[0] < '0' || s[0] > '9' || end == nullptr || *end != '\0' || errno == ERANGE || v > 0xFFFFFFFFull)
+    throw UsageError(std::string(option) + ": '" + s + "' is not a non-negative integer");
+  return static_cast<uint32_t>(v);
+}
+
+int cmd_pick(const std::vector<std::string>& args, const Global& g) {
+  const Options o = parse_options(args, *find_command("pick"));
+  const EngineChoice choice = engine_choice(o, g);
+  const auto sensor = o.get("--sensor"), x = o.get("--x"), y = o.get("--y"), out_file = o.get("--out");
+  const std::string format = o.get("--format").value_or("csv"), space = o.get("--space").value_or("sample");
+  if (!o.scenario) throw UsageError("pick: missing SCENARIO");
+  if (!sensor) throw UsageError("pick: missing --sensor NAME");
+  if (!x) throw UsageError("pick: missing --x N");
+  if (!y) throw UsageError("pick: missing --y N");
+  if (format != "csv" && format != "json") throw UsageError("--format: '" + format + "' is not csv or json");
+  if (space != "sample" && space != "pixel") throw UsageError("--space: '" + space + "' is not sample or pixel");
+  PickOptions opt;
+  opt.scenario_file = *o.scenario;
+  opt.sensor = *sensor;
+  opt.pixel = space == "pixel";
+  opt.x = parse_index(*x, "--x");
+  opt.y = parse_index(*y, "--y");
+  std::optional<double> at;
+  if (const auto t = o.get("--time")) at = parse_time_option(*t, "--time");
+  const Scenario sc = load_scenario(*o.scenario, scenario_options(o));
+  opt.time_s = at.value_or(sc.start_s);
+  Engine engine(config_of(choice));
+  try {
+    const PickTerms p = pick_terms(engine, sc, opt);
+    emit(out_file, format == "json" ? pick_json(sc, opt, p) : pick_csv(sc, opt, p));
+  } catch (const PickArgumentError& e) {
+    throw UsageError(e.what());
+  }
+  return 0;
+}
+
 // Evaluates every group without a target for each sensor at the engine's
 // time: the checks that involve several parameters (band edges in order...)
 // happen here, as they do when `run` renders.
@@ -1012,6 +1076,7 @@ int main(int argc, char** argv) {
     if (cmd == "report") return cmd_report(rest, g);
     if (cmd == "run") return cmd_run(rest, g);
     if (cmd == "access") return cmd_access(rest, g);
+    if (cmd == "pick") return cmd_pick(rest, g);
     if (cmd == "validate") return cmd_validate(rest, g);
     if (cmd == "groups") return cmd_groups(rest, g);
     if (cmd == "properties") return cmd_properties(rest, g);

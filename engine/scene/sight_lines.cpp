@@ -10,7 +10,7 @@ namespace eoir::scene {
 namespace {
 constexpr int kGroundNodes = 33;     // lines that meet the ground, from above: mu_g = (k / 32)^2 there
 constexpr int kLimbNodes = 25;       // lines through the limb: tangent altitude top (k / 24)^2
-constexpr int kElevationNodes = 25;  // from inside, each side of the horizon: (pi / 2) (k / 24)^1.6
+constexpr int kElevationNodes = 25;  // from inside, above the horizon: (pi / 2) (k / 24)^1.6
 constexpr std::size_t kAzimuths = 49;  // 0..pi from the Sun's vertical plane, 3.75 deg apart
 
 // atan2(y, x) for y >= 0, in [0, pi], within 1e-5 rad (Abramowitz and
@@ -57,15 +57,26 @@ SightLines SightLines::make(const atmosphere::PathOptics& optics, const atmosphe
     }
     return s;
   }
-  s.observer_radius_m = a + std::max(0.0, observer_altitude_m);
+  // Inside: lines below the horizon as from above, by the ground point's
+  // zenith cosine and the tangent altitude below the observer (dense toward
+  // the dip of the horizon); above it by elevation (dense toward it).
+  const double h = std::max(0.0, observer_altitude_m);
+  s.observer_radius_m = a + h;
   const Vec3 observer = s.observer_radius_m * up;
-  for (int k = -(kElevationNodes - 1); k < kElevationNodes; ++k) {
-    const double e = (k < 0 ? -1.0 : 1.0) * 0.5 * constants::pi *
-                     std::pow(std::abs(static_cast<double>(k)) / (kElevationNodes - 1), 1.6);
+  const auto add_elevation = [&](double e) {
     bool ground = false;
     add(e, atmosphere::refracted_path_to_space(profile, earth, observer, std::sin(e) * up + std::cos(e) * across,
                                                ground));
+  };
+  const auto elevation_of = [&](double p) { return -std::acos(std::min(1.0, p / s.observer_radius_m)); };
+  for (int k = kGroundNodes - 1; k >= 0; --k) {
+    const double mu = std::pow(static_cast<double>(k) / (kGroundNodes - 1), 2.0);
+    add_elevation(elevation_of(a * std::sqrt(1.0 - mu * mu)));
   }
+  if (h > 0)
+    for (int k = 1; k < kLimbNodes; ++k) add_elevation(elevation_of(a + h * std::pow(static_cast<double>(k) / (kLimbNodes - 1), 2.0)));
+  for (int k = 1; k < kElevationNodes; ++k)
+    add_elevation(0.5 * constants::pi * std::pow(static_cast<double>(k) / (kElevationNodes - 1), 1.6));
   return s;
 }
 

@@ -10,10 +10,12 @@
 //
 // Spherical symmetry (in the space where the Earth's ellipsoid is a sphere,
 // shell_path.hpp) fixes a line of sight's path by one number: for an
-// observer inside the atmosphere its elevation; for one above it, its
-// impact parameter p (the distance of the line from the Earth's centre:
-// p < a meets the ground, a <= p < a + top grazes the limb), whatever the
-// observer's altitude. The paths' terms on those nodes (SightLines) are
+// observer inside the atmosphere its elevation (nodes below the horizon
+// placed as from above, dense toward the horizon's dip); for one above it,
+// its impact parameter p (the distance of the line from the Earth's
+// centre: p < a meets the ground, a <= p < a + top grazes the limb),
+// whatever the observer's altitude. Moonlight has a view of its own
+// (WorldAtmosphere::moon_sky). The paths' terms on those nodes (SightLines) are
 // made once per atmosphere, band and observer altitude; per frame only the
 // Sun's geometry: the scatter on (node, azimuth from the Sun's vertical
 // plane) cells (SkyView), each made when a line of sight first needs it (a

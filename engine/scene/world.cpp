@@ -386,7 +386,7 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
     const Vec3 d = to_frame(point_body_m).normalized();
     spectral_radiance_into(part, point_body_m, normal_body, -d, false, L, E);
     to_sensor(L, point_body_m, normal_body, false);
-    return world_->view.spectral.integrate(L) + (world_->atmosphere.sky ? world_->atmosphere.sky->scatter_band(d) : 0.0);
+    return world_->view.spectral.integrate(L) + world_->atmosphere.scatter_band(d);
   }
   const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
   double reflected = 0;
@@ -519,11 +519,7 @@ void WorldObject::to_sensor(std::vector<double>& spectrum, const Vec3& point_bod
     const Vec3 toward = -to_frame(point_body_m).normalized();
     world_->atmosphere.surface->view_at((placed.body_to_frame * normal_body).dot(toward), T, L);
     for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] = spectrum[i] * T[i] + L[i];
-    if (spectral_scatter && world_->atmosphere.sky) {  // eq. 9's L_scatter along the line of sight
-      thread_local std::vector<double> S;
-      world_->atmosphere.sky->scatter(-toward, S);
-      for (std::size_t i = 0; i < spectrum.size(); ++i) spectrum[i] += S[i];
-    }
+    if (spectral_scatter) world_->atmosphere.add_scatter(-toward, spectrum);  // eq. 9's L_scatter
     return;
   }
   const std::vector<double>& T = view().transmittance;
@@ -553,7 +549,7 @@ Eq9Terms WorldObject::eq9_terms(std::int32_t part, const Vec3& point_body_m, con
       }
     }
     w.atmosphere.surface->view_at((placed.body_to_frame * normal_body).dot(toward), t.transmittance, t.path_thermal);
-    if (w.atmosphere.sky) w.atmosphere.sky->scatter(-toward, t.path_scatter);
+    w.atmosphere.add_scatter(-toward, t.path_scatter);
   } else {
     if (!view().transmittance.empty()) t.transmittance = view().transmittance;
     if (!path_spectral_.empty())
@@ -705,14 +701,35 @@ std::vector<double> WorldAtmosphere::to_space(const Vec3& point_m, const Vec3& d
   return T;
 }
 
+double WorldAtmosphere::scatter_band(const Vec3& d) const {
+  return (sky ? sky->scatter_band(d) : 0.0) + (moon_sky ? moon_sky->scatter_band(d) : 0.0);
+}
+
+void WorldAtmosphere::add_scatter(const Vec3& d, std::vector<double>& out) const {
+  thread_local std::vector<double> S;
+  for (const SkyView* v : {sky.get(), moon_sky.get()}) {
+    if (!v) continue;
+    v->scatter(d, S);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] += S[i];
+  }
+}
+
 double World::sky_radiance(const Vec3& d) const {
   double L = 0;
-  if (atmosphere.sky && atmosphere.sky->sky_band(d, L)) return L;
+  if (atmosphere.sky && atmosphere.sky->sky_band(d, L))
+    return atmosphere.moon_sky ? L + atmosphere.moon_sky->scatter_band(d) : L;
   return sky.background_radiance_W_cm2_sr;
 }
 
 void World::sky_spectrum(const Vec3& d, std::vector<double>& out) const {
-  if (atmosphere.sky && atmosphere.sky->sky(d, out)) return;
+  if (atmosphere.sky && atmosphere.sky->sky(d, out)) {
+    if (atmosphere.moon_sky) {
+      thread_local std::vector<double> S;
+      atmosphere.moon_sky->scatter(d, S);
+      for (std::size_t i = 0; i < out.size(); ++i) out[i] += S[i];
+    }
+    return;
+  }
   out.assign(view.spectral.sample_wavelengths_um.size(), 0.0);
   if (sky.background)
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = sky.background_irradiance[i] / constants::pi;
@@ -728,7 +745,7 @@ Eq9Terms World::sky_terms(const Vec3& d) const {
   t.transmittance.assign(n, 1.0);
   t.path_thermal.assign(n, 0.0);
   t.path_scatter.assign(n, 0.0);
-  if (atmosphere.sky && atmosphere.sky->path(d, t.transmittance, t.path_thermal)) atmosphere.sky->scatter(d, t.path_scatter);
+  if (atmosphere.sky && atmosphere.sky->path(d, t.transmittance, t.path_thermal)) atmosphere.add_scatter(d, t.path_scatter);
   sky_spectrum(d, t.at_sensor);
   return t;
 }
@@ -1109,6 +1126,23 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       for (const double E : world->sky.background_irradiance) background.push_back(E / constants::pi);
     a.sky = std::make_shared<const SkyView>(lines, a.sunlight, a.earth, a.to_sun, a.sun_irradiance, background,
                                             world->view.spectral);
+    // Moonlight scattered by the air over an observer inside it: the Moon's
+    // irradiance above the air as eq. 7 gives it (its disc, phase law and
+    // emission), from the Moon's direction.
+    const WorldObject* moon = nullptr;
+    for (const auto& o : world->objects)
+      if (o->central_body && o->name == "Moon" && o->light_ >= 0) moon = o.get();
+    if (moon && a.observer_inside) {
+      const LightSpectra& light = moon->light_spectra();
+      const Vec3 to_moon = moon->placed.position_m / moon->range_m;
+      const double omega = constants::pi * std::pow(moon->volumetric_radius_m / moon->range_m, 2.0);
+      const double phase =
+          moon->disk_photometry.phase(world->lights[static_cast<std::size_t>(moon->light_)].to_sun.dot(-to_moon));
+      std::vector<double> E(light.reflected.size());
+      for (std::size_t i = 0; i < E.size(); ++i) E[i] = (light.reflected[i] * phase + light.emitted[i]) * omega;
+      a.moon_sky = std::make_shared<const SkyView>(lines, a.sunlight, a.earth, to_moon, E, std::vector<double>{},
+                                                   world->view.spectral);
+    }
   }
   return world;
 }

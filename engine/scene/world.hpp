@@ -148,6 +148,11 @@ struct WorldAtmosphere {
   Vec3 to_sun = Vec3::UnitX();
   std::vector<double> sun_irradiance;
   std::shared_ptr<const SkyView> sky;
+  std::shared_ptr<const SkyView> moon_sky;  // moonlight's scatter over an observer inside the atmosphere
+  // Eq. 9's L_scatter along the line of sight d from the observer: the
+  // Sun's and the Moon's (band; per interval added into out).
+  double scatter_band(const Vec3& d) const;
+  void add_scatter(const Vec3& d, std::vector<double>& out) const;
   std::shared_ptr<const Downwelling> downwelling;  // on the Earth's surface, when the setting has it
 };
 

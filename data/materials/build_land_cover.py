@@ -210,8 +210,8 @@ def build_single(path, grid):
     that wavelength equals the value; thermal_reflectance / thermal_from_um:
     Appendix A's 'forced to some low value' -- beyond the last measured
     wavelength the SRF goes linearly to thermal_reflectance at thermal_from_um
-    and stays there to 28 um; brdf_k0, brdf_k1, brdf_alpha, brdf_beta,
-    brdf_reason; description. Before the first measured wavelength the first
+    and stays there to 28 um; brdf_k0, brdf_k1, brdf_alpha, brdf_beta (or
+    brdf_model: lunar_lommel_seeliger), brdf_reason; description. Before the first measured wavelength the first
     value is propagated."""
     meta, w, r = em.read_base(path)
     values = em.resample(w, r, grid)
@@ -231,8 +231,11 @@ def build_single(path, grid):
     ext = (f"first value propagated back to 0.28 um; from the last measured value at {grid[last]:g} um "
            f"linearly to {low:g} at {lam:g} um and constant to 28 um (Appendix A: 'forced to some low value'; "
            f"{meta.get('thermal_reason', '')})")
-    brdf = {"k0": float(meta["brdf_k0"]), "k1": float(meta["brdf_k1"]), "alpha": float(meta["brdf_alpha"]),
-            "beta": float(meta["brdf_beta"]), "reason": meta["brdf_reason"]}
+    if meta.get("brdf_model"):  # a named law without parameters (the engine's lunar surface)
+        brdf = {"model": meta["brdf_model"], "reason": meta["brdf_reason"]}
+    else:
+        brdf = {"k0": float(meta["brdf_k0"]), "k1": float(meta["brdf_k1"]), "alpha": float(meta["brdf_alpha"]),
+                "beta": float(meta["brdf_beta"]), "reason": meta["brdf_reason"]}
     srcs = [base_source(meta, w, path)] + [s for s in (meta.get("source_2"), meta.get("source_3")) if s]
     desc = meta.get("description", "") + ("" if not notes else " " + "; ".join(notes) + ".")
     return em.material_doc(meta["eoir_material"], desc, srcs, brdf, grid, values, extension=ext)

@@ -7,6 +7,7 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "radiometry/disk_photometry.hpp"
 
 namespace eoir::radiometry {
 
@@ -177,6 +178,14 @@ std::array<double, 4> cubic_through(double tau0, const double* value) {
 
 Brdf::Brdf(const BrdfParameters& parameters) : parameters_(parameters) {
   validate(parameters, "brdf");
+  if (parameters.model == universe::BrdfModel::lunar_lommel_seeliger) {
+    // N.L value() = 2 f(g) N.L / (pi (N.L + N.V)) < 2 max f / pi.
+    lunar_ = true;
+    double most_f = 0;
+    for (int k = 0; k <= 1800; ++k) most_f = std::max(most_f, lunar_surface_phase(kPi * k / 1800.0));
+    max_projected_value_per_sr_ = 2.0 * most_f * kInvPi;
+    return;
+  }
   const double directional = 1.0 - parameters.k0;
   double diffuse_fraction = parameters.k0;
   const struct {
@@ -245,6 +254,9 @@ double Brdf::Lobe::normalization_H(double cos_incidence) const noexcept {
 
 double Brdf::value(double cos_incidence, double cos_exitance, double cos_light_observer) const noexcept {
   if (!(cos_incidence > 0.0 && cos_exitance > 0.0 && std::isfinite(cos_light_observer))) return 0.0;
+  if (lunar_)
+    return 2.0 * kInvPi * lunar_surface_phase(std::acos(std::clamp(cos_light_observer, -1.0, 1.0))) /
+           (cos_incidence + cos_exitance);
   double brdf_per_sr = diffuse_per_sr_;
   for (const Lobe& lobe : lobes_) {
     // Cosine to the lobe axis: L.V (back to the source) or M.V (mirror).
@@ -265,6 +277,20 @@ double Brdf::value(const Eigen::Vector3d& to_light, const Eigen::Vector3d& to_ob
 double Brdf::directional_hemispherical_reflectance(double incidence_rad) const {
   const double cos_incidence = std::cos(incidence_rad);
   if (!(cos_incidence > 0.0)) return 0.0;
+  if (lunar_) {  // midpoint rule over the outgoing hemisphere (exitance x azimuth)
+    constexpr int kRings = 180, kAzimuths = 360;
+    const double sin_incidence = std::sin(incidence_rad);
+    double sum = 0;
+    for (int i = 0; i < kRings; ++i) {
+      const double theta = 0.5 * kPi * (i + 0.5) / kRings, ce = std::cos(theta), se = std::sin(theta);
+      for (int j = 0; j < kAzimuths; ++j) {
+        const double phi = 2.0 * kPi * (j + 0.5) / kAzimuths;
+        const double cos_lv = cos_incidence * ce + sin_incidence * se * std::cos(phi);
+        sum += value(cos_incidence, ce, cos_lv) * ce * se;
+      }
+    }
+    return sum * (0.5 * kPi / kRings) * (2.0 * kPi / kAzimuths);
+  }
   // Each lobe integrates to H(kappa, N.L) over the hemisphere (quadrature),
   // divided by the interpolated normalization that value() uses.
   double reflectance = diffuse_per_sr_ * kPi;

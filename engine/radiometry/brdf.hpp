@@ -1,4 +1,7 @@
-// Modified Phong BRDF with backscatter, spec 4.1.4.1 eq. 1:
+// Modified Phong BRDF with backscatter, spec 4.1.4.1 eq. 1 (and, for the
+// Moon, the lunar Lommel-Seeliger surface of radiometry/disk_photometry.hpp:
+// BRDF = 2 f(g) / (pi (N.L + N.V)), f the lunar surface phase function, g the
+// angle between L and V; with SRF = A, I/F = A 2 mu0 / (mu0 + mu) f(g)):
 //
 //   BRDF = ( k0 + (1-k0) ( k1 beta e^{-pi beta (I.O)}
 //                          + (1-k1) alpha e^{-pi alpha (O.R)} ) ) / pi,
@@ -88,7 +91,7 @@ class Brdf {
 
   const BrdfParameters& parameters() const { return parameters_; }
   // True when the BRDF is exactly 1/pi: k0 = 1, or every weighted lobe flat.
-  bool lambertian() const { return lobes_.empty(); }
+  bool lambertian() const { return lobes_.empty() && !lunar_; }
   // At least N.L value() for every geometry (1/sr; what a source's
   // irradiance at normal incidence is multiplied by); 1/pi when lambertian().
   double max_projected_value_per_sr() const { return max_projected_value_per_sr_; }
@@ -106,6 +109,9 @@ class Brdf {
   };
 
   BrdfParameters parameters_;
+  // The lunar Lommel-Seeliger surface (radiometry/disk_photometry.hpp):
+  // 2 f(g) / (pi (N.L + N.V)), its SRF the normal albedo.
+  bool lunar_ = false;
   double diffuse_per_sr_ = 0.0;  // k0/pi plus flat lobes
   double max_projected_value_per_sr_ = 0.0;
   std::vector<Lobe> lobes_;      // the non-flat lobes with weight > 0

@@ -20,7 +20,7 @@ struct CentralBodyInfo {
   const char* name;
   double equatorial_radius_m;
   double polar_radius_m;
-  int erfa_planet;  // eraPlan94 index (1 Mercury .. 8 Neptune), 0 for Sun, Earth, Moon
+  int erfa_planet;  // planet number (1 Mercury .. 8 Neptune: VSOP87, ERFA), 0 for Sun, Earth, Moon
   BodyAxes axes;
   double solar_day_s;  // mean solar day (NASA NSSDC planetary fact sheets; the Moon's synodic month)
 };
@@ -33,6 +33,7 @@ struct CentralBodySurface {
   double temperature_K;        // uniform thermal model; the subsolar model's T_ss
   double night_temperature_K;  // subsolar model only (0: uniform)
   bool climatology;            // the Earth's land/water thermal model
+  const char* albedo_map_material = "gray_body";  // its albedo map's values (bitmap mode): a gray body's SRF
 };
 const CentralBodySurface& central_body_surface(CentralBody id);
 
@@ -43,13 +44,15 @@ const CentralBodyInfo& central_body_info(CentralBody id);
 // nullptr if `name` is not a central body.
 const CentralBodyInfo* find_central_body(const std::string& name);
 
-// Geocentric J2000 position (m) and velocity (m/s) of a central body: Sun and
-// planets from eraEpv00/eraPlan94 (geometric, no light time), Moon from
-// eraMoon98, Earth at the origin; ERFA at nodes kEphemerisGridStep_s apart
+// Geocentric J2000 position (m) and velocity (m/s) of a central body: the
+// Sun from eraEpv00 (the Earth's heliocentric state), the planets from the
+// complete VSOP87B series (universe/vsop87.hpp; within 2" of JPL DE405)
+// minus the Earth's (geometric, no light time), the Moon from eraMoon98,
+// the Earth at the origin; the series at nodes kEphemerisGridStep_s apart
 // (TT), cubic Lagrange interpolation through the four nodes around t:
-// positions within 5 mm of ERFA's (the Moon; the Earth 1 mm, Mars 2 mm),
-// against ERFA's own accuracy of km (Moon98 ~10 km, Epv00 ~1 km). The grid
-// is fixed in TT, so results do not depend on what was asked before.
+// positions within 5 mm of the series' (the Moon; the Earth 1 mm, Mars
+// 2 mm), against their own accuracy of km (Moon98 ~10 km, Epv00 ~1 km). The
+// grid is fixed in TT, so results do not depend on what was asked before.
 constexpr double kEphemerisGridStep_s = 1800.0;
 void central_body_state_j2000(const CentralBodyInfo& body, const EngineTime& t, frames::Vec3& r_m,
                               frames::Vec3& v_m_s);

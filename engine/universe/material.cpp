@@ -85,6 +85,7 @@ Material material_from_json(const json& doc, const std::string& origin) {
   if (!is_material_name(m.name))
     corrupt(origin + ": name", "must be 1 to 63 of a-z, 0-9 and _ (schemas/material.schema.json)");
   if (m.name == gray_body_material) corrupt(origin + ": name", "gray_body is built in");
+  if (m.name == lunar_gray_body_material) corrupt(origin + ": name", "lunar_gray_body is built in");
   optional_string(doc, "grid", origin + ": ");
   optional_string(doc, "extension", origin + ": ");
   if (doc.contains("composition")) {
@@ -115,10 +116,18 @@ Material material_from_json(const json& doc, const std::string& origin) {
   if (!doc.contains("brdf") || !doc["brdf"].is_object()) corrupt(origin + ": brdf", "missing");
   const json& b = doc["brdf"];
   const std::string where = origin + ": brdf";
+  optional_string(b, "reason", where + ".");
+  if (b.contains("model")) {  // only the lunar law is named; eq. 1 is the default
+    if (!b["model"].is_string() || b["model"].get<std::string>() != lunar_brdf_model_name)
+      corrupt(where + ".model", std::string("expected \"") + lunar_brdf_model_name + "\"");
+    for (auto it = b.begin(); it != b.end(); ++it)
+      if (it.key() != "model" && it.key() != "reason")
+        corrupt(where + "." + it.key(), "unknown field (the lunar model has no parameters)");
+    m.brdf.model = BrdfModel::lunar_lommel_seeliger;
+  } else {
   for (auto it = b.begin(); it != b.end(); ++it)
     if (it.key() != "k0" && it.key() != "k1" && it.key() != "alpha" && it.key() != "beta" && it.key() != "reason")
       corrupt(where + "." + it.key(), "unknown field");
-  optional_string(b, "reason", where + ".");
   m.brdf = BrdfParameters{number(b, "k0", where), number(b, "k1", where), number(b, "alpha", where),
                           number(b, "beta", where)};
   try {
@@ -130,6 +139,7 @@ Material material_from_json(const json& doc, const std::string& origin) {
   // lobe is k0's part).
   if (!(m.brdf.alpha > 0)) corrupt(where + ".alpha", "must be > 0 (the forward lobe's sharpness), got 0");
   if (!(m.brdf.beta > 0)) corrupt(where + ".beta", "must be > 0 (the backscatter lobe's sharpness), got 0");
+  }
   const std::vector<double> wl = numbers(doc, "wavelength_um", origin + ":");
   const std::vector<double> r = numbers(doc, "reflectance", origin + ":");
   if (wl.size() != r.size())
@@ -170,7 +180,9 @@ json material_to_json(const Material& m) {
               {"name", m.name},
               {"description", m.description},
               {"sources", m.sources},
-              {"brdf", {{"k0", m.brdf.k0}, {"k1", m.brdf.k1}, {"alpha", m.brdf.alpha}, {"beta", m.brdf.beta}}},
+              {"brdf", m.brdf.model == BrdfModel::lunar_lommel_seeliger
+                           ? json{{"model", lunar_brdf_model_name}}
+                           : json{{"k0", m.brdf.k0}, {"k1", m.brdf.k1}, {"alpha", m.brdf.alpha}, {"beta", m.brdf.beta}}},
               {"wavelength_um", m.reflectance.wavelengths_um()},
               {"reflectance", m.reflectance.values()}};
 }
@@ -182,6 +194,13 @@ MaterialLibrary::MaterialLibrary() {
   gray.sources = {"built in (spec 7.3 \"Gray Body\")"};
   gray.gray_body = true;
   materials_[gray.name] = std::make_shared<const Material>(gray);
+  Material lunar = gray;
+  lunar.name = lunar_gray_body_material;
+  lunar.description = "Gray body with the lunar Lommel-Seeliger surface law (radiometry/disk_photometry.hpp): "
+                      "the Moon's albedo map in bitmap mode, its SRF the normal albedo";
+  lunar.sources = {"built in (Allen 1973 lunar phase law on a Lommel-Seeliger surface)"};
+  lunar.brdf.model = BrdfModel::lunar_lommel_seeliger;
+  materials_[lunar.name] = std::make_shared<const Material>(lunar);
 }
 
 void MaterialLibrary::load_directory(const std::string& dir) {

@@ -16,10 +16,18 @@
 
 namespace eoir::universe {
 
+// The reflectance law of a surface: eq. 1 (spec 4.1.4.1), or the lunar
+// Lommel-Seeliger surface (radiometry/disk_photometry.hpp), whose SRF is the
+// normal albedo rather than the hemispherical reflectance.
+enum class BrdfModel { modified_phong, lunar_lommel_seeliger };
+constexpr const char* lunar_brdf_model_name = "lunar_lommel_seeliger";
+
 // Eq. 1: k0 Lambertian fraction; k1 backscatter fraction of the rest;
-// alpha, beta sharpness of the forward (specular) and backscatter lobes.
+// alpha, beta sharpness of the forward (specular) and backscatter lobes
+// (unused by the lunar model).
 struct BrdfParameters {
   double k0 = 1.0, k1 = 0.0, alpha = 0.0, beta = 0.0;  // Lambertian
+  BrdfModel model = BrdfModel::modified_phong;
   static constexpr double max_sharpness = 1000.0;
 };
 // Throws out_of_range naming `field` (e.g. "burnished_aluminum.json: brdf.k0").
@@ -35,6 +43,9 @@ struct Material {
 };
 
 constexpr const char* gray_body_material = "gray_body";
+// Built in as well: a gray body with the lunar surface law, for the Moon's
+// albedo map (bitmap mode).
+constexpr const char* lunar_gray_body_material = "lunar_gray_body";
 
 // Parses one material document; `origin` names the file in messages.
 // Throws eoir::Error(corrupt_file) naming the origin and field: missing,

@@ -15,13 +15,17 @@
 // A tighter, independent check: the whole spectrum against eq. 7 for a
 // sphere of Mars' volumetric radius, computed here from the published data
 // (E-490 table, the material file's SRF, Planck) and ERFA's ephemerides
-// (eraPlan94 Mars, eraEpv00 Earth and Sun), within 1 %.
+// (eraPlan94 Mars, eraEpv00 Earth and Sun), within 1 %; eq. 7's phase law is
+// Mars' observed one (Mallama & Hilton 2018 eq. 6 as
+// tests/sky/planet_magnitudes.hpp transcribes it; issue 21) in place of the
+// Lambertian sphere's.
 #include <erfa.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
 
+#include "../sky/planet_magnitudes.hpp"
 #include "validation_support.hpp"
 
 namespace v = eoir::validation;
@@ -98,7 +102,8 @@ TEST(Spec_6_2_5_3, MarsAsPointSourceReflectedAndThermalPeaks) {
   const v::V3 to_sun = sun - mars, to_obs = observer - mars;
   const double d_sun = v::norm(to_sun), r = v::norm(to_obs);
   const double psi = std::acos(v::dot(to_sun, to_obs) / (d_sun * r));
-  const double phase = (std::sin(psi) + (v::kPi - psi) * std::cos(psi)) / v::kPi;
+  const double phase = std::pow(10.0, -0.4 * (eoir::test_oracle::mars_v_mag(1.0, 1.0, psi / v::kDeg) -
+                                               eoir::test_oracle::mars_v_mag(1.0, 1.0, 0.0)));
   const double R = std::cbrt(3396.19e3 * 3396.19e3 * 3376.20e3);  // volumetric radius (IAU 2015)
   const double omega = v::kPi * R * R / (r * r);
   std::printf("      distance %.6f au, Sun-Mars %.6f au, phase angle %.3f deg, Phase %.6f\n", r / v::kAu_m,

@@ -11,10 +11,13 @@
 #include "core/frames.hpp"
 #include "metrics/atmospheric_path.hpp"
 #include "scene/apparent_grid.hpp"
+#include "scene/astrometric_frame.hpp"
+#include "scene/pick.hpp"
 #include "universe/composite.hpp"
 #include "sensor/display.hpp"
 #include "universe/object_motion.hpp"
 #include "universe/object_properties.hpp"
+#include "universe/star_catalog.hpp"
 
 namespace eoir {
 namespace {
@@ -253,22 +256,37 @@ const Frame& Engine::render(const std::string& name) {
   progress(0.9, "render");
   const auto t2 = clock_type::now();
   const universe::SensorParameters& p = model.parameters;
-  frame->scene_display = sensor::scene_display(frame->scene.image, p.display_agc, p.display_gain_step,
-                                               options_.threads, std::move(spare.scene_display));
-  const double full_scale = std::isfinite(model.metrics.saturation_electrons) ? model.metrics.saturation_electrons : 1e6;
-  frame->sensor_display = sensor::compress_for_display(frame->sensor.electrons, p.display_agc, p.display_gain_step,
-                                                       full_scale, options_.threads, std::move(spare.sensor_display));
+  sensor::DisplayOptions display;
+  display.agc = p.display_agc;
+  display.gain_step = p.display_gain_step;
+  display.stretch = p.display_stretch;
+  frame->scene_display =
+      sensor::scene_display(frame->scene.image, display, options_.threads, std::move(spare.scene_display));
+  display.full_scale = std::isfinite(model.metrics.saturation_electrons) ? model.metrics.saturation_electrons : 1e6;
+  display.saturation = model.metrics.saturation_electrons;  // +inf with saturation off
+  frame->sensor_display = sensor::compress_for_display(frame->sensor.electrons, display, options_.threads,
+                                                       std::move(spare.sensor_display));
   const auto t3 = clock_type::now();
   // Per-frame truth: the target metrics of every object and star in the
-  // field, evaluated on the same world.
+  // field, evaluated on the same world, with their directions (frame.hpp).
   const geometry::SampleGrid& grid = w.grid();
   const frames::Horizon horizon = frames::horizon_at(w.time, w.observer.position_m);
-  const auto add_truth = [&](TruthEntry e, const Eigen::Vector3d& direction, double streak_c, double streak_r) {
+  const scene::AstrometricFrame astrometric(w);
+  frame->astrometric_wcs = astrometric.wcs();
+  frame->observer_earth_fixed_m = frames::j2000_to_earth_fixed(w.time) * w.observer.position_m;
+  // The directions of a truth row (frame.hpp): apparent at the frame time,
+  // astrometric at the middle, start and end of the integration, geometric.
+  struct Directions {
+    Eigen::Vector3d apparent, astrometric, start, end, geometric;
+  };
+  const auto add_truth = [&](TruthEntry e, const Directions& d, double streak_c, double streak_r) {
     e.topocentric = horizon.near_earth;
-    if (e.topocentric) frames::azimuth_elevation_deg(horizon.j2000_to_enu * direction, e.azimuth_deg, e.elevation_deg);
-    e.ra_deg = std::atan2(direction.y(), direction.x()) * constants::deg_per_rad;
-    if (e.ra_deg < 0) e.ra_deg += 360.0;
-    e.dec_deg = std::asin(std::clamp(direction.normalized().z(), -1.0, 1.0)) * constants::deg_per_rad;
+    if (e.topocentric) frames::azimuth_elevation_deg(horizon.j2000_to_enu * d.apparent, e.azimuth_deg, e.elevation_deg);
+    scene::ra_dec_deg(d.apparent, e.ra_deg, e.dec_deg);
+    scene::ra_dec_deg(d.astrometric, e.astrometric_ra_deg, e.astrometric_dec_deg);
+    scene::ra_dec_deg(d.start, e.start_astrometric_ra_deg, e.start_astrometric_dec_deg);
+    scene::ra_dec_deg(d.end, e.end_astrometric_ra_deg, e.end_astrometric_dec_deg);
+    scene::ra_dec_deg(d.geometric, e.geometric_ra_deg, e.geometric_dec_deg);
     const double dx = 0.5 * streak_c / static_cast<double>(grid.per_pixel);
     const double dy = 0.5 * streak_r / static_cast<double>(grid.per_pixel);
     e.start_x = e.metrics.pixel_x - dx;
@@ -278,6 +296,7 @@ const Frame& Engine::render(const std::string& name) {
     frame->truth.push_back(std::move(e));
   };
   const scene::ApparentGrid apparent(w);  // point sources' streaks as the image has them
+  const double half_integration_s = 0.5 * w.view.integration_time_s;
   for (const auto& o : w.objects) {
     if (o->imaging == scene::Imaging::outside) continue;
     if (o->central_body && o->imaging != scene::Imaging::point_source) continue;
@@ -288,8 +307,36 @@ const Frame& Engine::render(const std::string& name) {
     e.air_mass = w.atmosphere.air_mass(w.atmosphere.path_to(o->placed.position_m));
     scene::GridPlace place;
     apparent.object(*o, place);
-    add_truth(std::move(e), o->placed.position_m, place.streak_columns, place.streak_rows);
+    // The apparent direction moves over the integration as the object's
+    // position (seen one light time earlier) relative to the observer's;
+    // the astrometric ones are the frame's map of the apparent ones.
+    const universe::Object& u = universe_.get(o->name);
+    const auto toward = [&](const EngineTime& t, const Eigen::Vector3d& observer) {
+      return (universe::kinematics_at(universe_, u, t.plus_seconds(-o->light_time_s)).position_m - observer)
+          .normalized();
+    };
+    const Eigen::Vector3d middle = toward(w.time, w.observer.position_m);
+    Directions d;
+    d.apparent = o->placed.position_m.normalized();
+    d.astrometric = astrometric.astrometric(d.apparent);
+    d.start = astrometric.astrometric(d.apparent + toward(w.time.plus_seconds(-half_integration_s),
+                                                          w.observer.position_start_m) - middle);
+    d.end = astrometric.astrometric(d.apparent + toward(w.time.plus_seconds(half_integration_s),
+                                                        w.observer.position_end_m) - middle);
+    d.geometric = universe::kinematics_at(universe_, u, w.time).position_m - w.observer.position_m;
+    add_truth(std::move(e), d, place.streak_columns, place.streak_rows);
   }
+  // A star's places do not move over an integration (its streak is the
+  // sensor's turning). Its astrometric place, which the frame's map gives
+  // from the apparent one (to 1e-15 rad), is the chain without deflection
+  // and aberration: made so directly; it is also the geometric place.
+  universe::ApparentPlaceOptions astrometric_place;
+  astrometric_place.light_deflection = astrometric_place.aberration = false;
+  const universe::ApparentPlaceContext star_context =
+      w.sky.catalogue ? universe::apparent_place_context_geocentric(w.time, w.observer.position_m,
+                                                                    w.observer.velocity_m_s,
+                                                                    w.sky.catalogue->epoch_julian_year())
+                      : astrometric.context();
   for (const scene::WorldStar& s : w.sky.stars) {
     TruthEntry e;
     e.kind = TruthEntry::Kind::star;
@@ -298,7 +345,10 @@ const Frame& Engine::render(const std::string& name) {
     e.v_mag = s.v_mag;
     e.b_v_mag = s.b_v_mag;
     e.air_mass = w.atmosphere.air_mass_toward(s.direction_j2000);
-    add_truth(std::move(e), s.direction_j2000, s.streak_columns, s.streak_rows);
+    const Eigen::Vector3d place =
+        universe::apparent_direction(w.sky.catalogue->stars()[s.catalogue_index], star_context, astrometric_place);
+    const Directions d{s.direction_j2000, place, place, place, place};
+    add_truth(std::move(e), d, s.streak_columns, s.streak_rows);
   }
   if (!w.sky.warning.empty() && w.sky.warning != last_sky_warning_ && options_.log)
     options_.log(2, w.sky.star_field + ": " + w.sky.warning);

@@ -11,6 +11,7 @@
 
 #include "metrics/target_metrics.hpp"
 #include "scene/adaptive_fidelity.hpp"
+#include "scene/astrometric_frame.hpp"
 #include "scene/scene_generator.hpp"
 #include "scene/world.hpp"
 #include "sensor/image_chain.hpp"
@@ -42,7 +43,19 @@ struct TruthEntry {
   Kind kind = Kind::object;
   std::string object;  // the object's name or the star's catalogue id
   metrics::TargetMetrics metrics;
-  double ra_deg = 0, dec_deg = 0;    // direction from the sensor (apparent place), J2000 axes
+  // Directions from the sensor, degrees. Apparent (J2000 = GCRS axes): where
+  // the image has it, before refraction (stars, the Moon and planets at
+  // their apparent places; other objects at their geometric direction).
+  // Astrometric (ICRS; scene/astrometric_frame.hpp): that direction in the
+  // star catalogue's frame, as the frame's astrometric WCS gives it, at the
+  // middle, the start and the end of the integration. Geometric: the true
+  // direction at the frame time (stars: the catalogue place moved by proper
+  // motion and parallax; objects: no light time, no aberration).
+  double ra_deg = 0, dec_deg = 0;  // apparent
+  double astrometric_ra_deg = 0, astrometric_dec_deg = 0;
+  double start_astrometric_ra_deg = 0, start_astrometric_dec_deg = 0;
+  double end_astrometric_ra_deg = 0, end_astrometric_dec_deg = 0;
+  double geometric_ra_deg = 0, geometric_dec_deg = 0;
   double v_mag = 0, b_v_mag = 0;     // stars
   // Pixel coordinates at the start and the end of the integration (a point
   // source's streak; equal to the frame-time position for extended objects).
@@ -72,6 +85,10 @@ struct Frame {
   // error budget chose (scene/adaptive_fidelity.hpp); world and sensor_model
   // are built with them.
   scene::FidelityChoice fidelity;
+  // The astrometric TAN WCS of the sensor pixels (issue 21 item 1) and the
+  // sensor's Earth-fixed (ITRS) position at the frame time.
+  scene::AstrometricWcs astrometric_wcs;
+  Eigen::Vector3d observer_earth_fixed_m = Eigen::Vector3d::Zero();
 
   const EngineTime& time() const { return world->time; }
   const geometry::SampleGrid& grid() const { return scene.image.grid; }

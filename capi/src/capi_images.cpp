@@ -1,5 +1,7 @@
 // Images and picks of the last rendered frame (spec 4.1.2, 5.11, 6.2.1).
 #include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 
@@ -39,20 +41,48 @@ EOIR_API eoir_status eoir_image_info_get(eoir_engine engine, const char* sensor,
   return with_engine(engine, [&](Engine& e) {
     const Frame& f = e.frame(str(sensor, "sensor"));
     need(info, "info_out");
-    capi::need_size(info->struct_size, sizeof(eoir_image_info), "info_out");
+    constexpr size_t v11_size = offsetof(eoir_image_info, start_jd_utc);  // the struct before 1.6 appended
+    capi::need_size(info->struct_size, v11_size, "info_out");
     const Extent ext = extent_of(f, kind);
-    info->width = static_cast<uint32_t>(ext.width);
-    info->height = static_cast<uint32_t>(ext.height);
-    info->kind = kind;
-    info->unit = kind == EOIR_IMAGE_SCENE_RADIANCE ? "W/(cm^2 sr)"
-                 : (kind == EOIR_IMAGE_SENSOR_ELECTRONS || kind == EOIR_IMAGE_SENSOR_MEAN) ? "electrons"
-                                                                                           : "";
-    const JulianDate utc = f.time().to(TimeScale::utc);
-    info->time_jd_utc[0] = utc.jd1;
-    info->time_jd_utc[1] = utc.jd2;
-    const Eigen::Matrix3d& body_to_j2000 = f.world->observer.body_to_j2000;
-    scene::ra_dec_deg(body_to_j2000.col(2), info->boresight_ra_deg, info->boresight_dec_deg);
-    scene::ra_dec_deg(body_to_j2000.col(1), info->up_ra_deg, info->up_dec_deg);
+    const uint32_t size = info->struct_size;
+    eoir_image_info full{};
+    full.struct_size = size;
+    full.width = static_cast<uint32_t>(ext.width);
+    full.height = static_cast<uint32_t>(ext.height);
+    full.kind = kind;
+    full.unit = kind == EOIR_IMAGE_SCENE_RADIANCE ? "W/(cm^2 sr)"
+                : (kind == EOIR_IMAGE_SENSOR_ELECTRONS || kind == EOIR_IMAGE_SENSOR_MEAN) ? "electrons"
+                                                                                          : "";
+    const auto utc = [](const EngineTime& t, double (&out)[2]) {
+      const JulianDate d = t.to(TimeScale::utc);
+      out[0] = d.jd1;
+      out[1] = d.jd2;
+    };
+    utc(f.time(), full.time_jd_utc);
+    const scene::World& w = *f.world;
+    const Eigen::Matrix3d& body_to_j2000 = w.observer.body_to_j2000;
+    scene::ra_dec_deg(body_to_j2000.col(2), full.boresight_ra_deg, full.boresight_dec_deg);
+    scene::ra_dec_deg(body_to_j2000.col(1), full.up_ra_deg, full.up_dec_deg);
+    const double half_s = 0.5 * w.view.integration_time_s;
+    utc(f.time().plus_seconds(-half_s), full.start_jd_utc);
+    utc(f.time().plus_seconds(half_s), full.end_jd_utc);
+    // The WCS per sensor pixel, per sample for the scene kinds.
+    const scene::AstrometricWcs& wcs = f.astrometric_wcs;
+    const bool scene_kind = kind == EOIR_IMAGE_SCENE_RADIANCE || kind == EOIR_IMAGE_SCENE_DISPLAY;
+    const double per_unit = scene_kind ? 1.0 / static_cast<double>(f.grid().per_pixel) : 1.0;
+    full.astrometric_ra_deg = wcs.ra_deg;
+    full.astrometric_dec_deg = wcs.dec_deg;
+    for (int k = 0; k < 4; ++k) full.astrometric_cd_deg[k] = wcs.cd_deg[k] * per_unit;
+    for (int k = 0; k < 3; ++k) {
+      full.observer_position_m[k] = w.observer.position_m[k];
+      full.observer_velocity_m_s[k] = w.observer.velocity_m_s[k];
+      full.observer_earth_fixed_m[k] = f.observer_earth_fixed_m[k];
+    }
+    const sensor::SensorModel& model = *f.sensor_model;
+    const double saturation = model.metrics.saturation_electrons;
+    full.saturation_electrons = std::isfinite(saturation) ? saturation : 0.0;
+    full.read_noise_electrons = model.parameters.noise_enabled ? model.metrics.dark_noise_electrons : 0.0;
+    std::memcpy(info, &full, std::min<size_t>(size, sizeof full));  // what the caller's version holds
   });
 }
 

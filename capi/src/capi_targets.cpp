@@ -86,6 +86,14 @@ EOIR_API eoir_status eoir_truth_get(eoir_engine engine, const char* sensor, size
     out->azimuth_deg = row.azimuth_deg;
     out->elevation_deg = row.elevation_deg;
     out->air_mass = row.air_mass;
+    out->astrometric_ra_deg = row.astrometric_ra_deg;
+    out->astrometric_dec_deg = row.astrometric_dec_deg;
+    out->start_astrometric_ra_deg = row.start_astrometric_ra_deg;
+    out->start_astrometric_dec_deg = row.start_astrometric_dec_deg;
+    out->end_astrometric_ra_deg = row.end_astrometric_ra_deg;
+    out->end_astrometric_dec_deg = row.end_astrometric_dec_deg;
+    out->geometric_ra_deg = row.geometric_ra_deg;
+    out->geometric_dec_deg = row.geometric_dec_deg;
     std::memcpy(caller, &full, std::min<size_t>(size, sizeof full));  // what the caller's version holds
   });
 }

@@ -23,6 +23,11 @@ const std::vector<ImageQualityPreset>& image_quality_presets() {
   return presets;
 }
 
+const std::vector<std::string>& display_stretch_names() {
+  static const std::vector<std::string> names{"linear", "log", "asinh", "zscale"};
+  return names;
+}
+
 const std::vector<std::string>& image_quality_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n;

@@ -56,6 +56,10 @@ constexpr double max_pitch_diffraction_widths = 1.0e4;
 // Whether reference pairs are irradiance (NEI/SEI) or radiance (NER/SER).
 enum class ApertureQuantity : int { irradiance = 0, radiance = 1 };
 
+// How display images map values to bytes (sensor/display.hpp; issue 21 item 6).
+enum class DisplayStretch : int { linear = 0, log = 1, asinh = 2, zscale = 3 };
+const std::vector<std::string>& display_stretch_names();  // "linear", "log", "asinh", "zscale"
+
 // Hufnagel OQF presets of spec 5.6.1.2, or a custom W_rms.
 enum class ImageQuality : int { diffraction_limited = 0, negligible = 1, mild = 2, moderate = 3, custom = 4 };
 
@@ -89,6 +93,7 @@ struct SensorParameters {
   bool noise_enabled = true;           // dark and photon noise (eqs. 53-54)
   bool display_agc = true;             // automatic gain control (spec 4.1.2)
   std::int64_t display_gain_step = 0;  // without AGC: gain 30^step (spec 4.1.2)
+  DisplayStretch display_stretch = DisplayStretch::linear;
   // Speed against accuracy (core/fidelity.hpp).
   Fidelity fidelity;
 };

@@ -132,6 +132,11 @@ const std::vector<Spec>& sensor_properties() {
                                     "Display gain without AGC: each step multiplies the gain by 30 (spec 4.1.2); step "
                                     "0 maps the saturation level (sensor) or 1e-6 W/cm^2 (scene) to 255",
                                     [](P& p) -> auto& { return p.display_gain_step; }, Range{-10, 10}));
+    t.push_back(enum_property<P, DisplayStretch>(
+        "display_stretch",
+        "Display stretch of both display images (issue 21): linear, log, asinh (of the AGC or gain range), or "
+        "zscale (IRAF's automatic limits, linear); saturated pixels show white",
+        [](P& p) -> auto& { return p.display_stretch; }, display_stretch_names()));
     // The fidelity knobs, as properties of the sensor whose pair they tune.
     for (const PropertySpec<Fidelity>& k : fidelity_properties()) {
       const auto get = k.get;

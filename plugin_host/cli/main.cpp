@@ -123,14 +123,17 @@ const std::vector<CommandSpec>& commands() {
        {"--quiet", "--allow-paths-outside"}},
       {"run",
        "usage: eoir run SCENARIO --out DIR [--start ISO] [--stop ISO] [--step SECONDS]\n"
-       "                [--sensor NAME ...] [--cube] [--save-state FILE] [--quiet]\n"
+       "                [--sensor NAME ...] [--cube] [--stretch NAME] [--save-state FILE] [--quiet]\n"
        "\n"
        "Renders every sensor (or those named) at each time step and writes into DIR\n"
        "(created if missing), per frame <sensor>_<NNNN>_:\n"
-       "  radiance.fits, electrons.fits, mean_electrons.fits  images with TAN WCS, DATE-OBS,\n"
-       "                    BUNIT; FITS row 1 is the bottom row, as ds9 shows the PNG\n"
-       "  scene.png, sensor.png   display images\n"
-       "  truth.json        objects in the field: FITS pixel (1-based), RA/Dec, range, SNR\n"
+       "  radiance.fits, electrons.fits, mean_electrons.fits  images with an astrometric\n"
+       "                    TAN WCS (ICRS, as a plate solution gives it), DATE-OBS (start\n"
+       "                    of the integration), DATE-AVG, DATE-END, BUNIT, OBSGEO; FITS row\n"
+       "                    1 is the bottom row, as ds9 shows the PNG\n"
+       "  scene.png, sensor.png   display images (saturated pixels white)\n"
+       "  truth.json        objects in the field: FITS pixel (1-based), astrometric RA/Dec\n"
+       "                    (and apparent, geometric), range, SNR\n"
        "  truth.reg         the same as a ds9 region file (fk5 circles with labels)\n"
        "and summary.json.\n"
        "\n"
@@ -138,8 +141,13 @@ const std::vector<CommandSpec>& commands() {
        "  --cube            also write <sensor>_electrons_cube.fits: every frame of the run\n"
        "                    as one 3-D FITS data cube (NAXIS3 = time step, per-plane times\n"
        "                    in a TIMES table extension)\n"
-       "  --save-state FILE save the engine state after the last frame (.scd)\n",
-       {"--out", "--start", "--stop", "--step", "--sensor", "--save-state"},
+       "  --stretch NAME    display stretch of the PNGs for every sensor: linear, log,\n"
+       "                    asinh or zscale (default: each sensor's display_stretch)\n"
+       "  --save-state FILE save the engine state after the last frame (.scd)\n"
+       "A frame with nothing in the field (no object or star, a uniform scene) or with\n"
+       "more than half of its pixels saturated is warned about on stderr and in\n"
+       "summary.json (the frame's \"warnings\").\n",
+       {"--out", "--start", "--stop", "--step", "--sensor", "--save-state", "--stretch"},
        {"--quiet", "--cube", "--allow-paths-outside"}},
       {"access",
        "usage: eoir access SCENARIO --sensor NAME --target NAME --min-snr X\n"
@@ -539,6 +547,7 @@ int cmd_run(const std::vector<std::string>& args, const Global& g) {
   if (o.values.count("--sensor")) opt.sensors = o.values.at("--sensor");
   opt.quiet = o.flags.count("--quiet") > 0;
   opt.cube = o.flags.count("--cube") > 0;
+  if (const auto stretch = o.get("--stretch")) opt.stretch = *stretch;
   if (const auto save = o.get("--save-state")) {
     if (save->empty()) throw UsageError("--save-state: empty file name");
     opt.save_state = *save;

@@ -74,27 +74,6 @@ ojson stats_json(const Stats& s) {
   return {{"min", num(s.min)}, {"max", num(s.max)}, {"mean", num(s.mean)}, {"non_finite", s.non_finite}};
 }
 
-struct Vec3 {
-  double x, y, z;
-};
-
-Vec3 unit_radec(double ra_deg, double dec_deg) {
-  const double ra = ra_deg * kDeg, dec = dec_deg * kDeg;
-  return {std::cos(dec) * std::cos(ra), std::cos(dec) * std::sin(ra), std::sin(dec)};
-}
-
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-
-// Position angle (east of north) at the boresight of the up vector, both
-// given as J2000 RA/Dec.
-double position_angle_deg(double ra0, double dec0, double up_ra, double up_dec) {
-  const double ra = ra0 * kDeg, dec = dec0 * kDeg;
-  const Vec3 east{-std::sin(ra), std::cos(ra), 0.0};
-  const Vec3 north{-std::sin(dec) * std::cos(ra), -std::sin(dec) * std::sin(ra), std::cos(dec)};
-  const Vec3 up = unit_radec(up_ra, up_dec);
-  return std::atan2(dot(up, east), dot(up, north)) / kDeg;
-}
-
 class RunContext {
  public:
   RunContext(Engine& engine, const Scenario& sc) : engine_(engine), sc_(sc) {}
@@ -178,6 +157,10 @@ class RunContext {
                      api.target_spectrum_get != nullptr;
     // C ABI 1.5 truth: topocentric azimuth and elevation, air mass.
     const bool v15 = api.struct_size >= offsetof(eoir_api_v1, sensor_point_at) + sizeof api.sensor_point_at;
+    // C ABI 1.6 truth: astrometric and geometric directions, the integration's start and end.
+    const bool v16 = api.struct_size >= offsetof(eoir_api_v1, pick_term_get) + sizeof api.pick_term_get;
+    const std::string times[3] = {v16 ? iso_of(pixels.start_jd_utc) : "", iso_of(pixels),
+                                  v16 ? iso_of(pixels.end_jd_utc) : ""};
     const auto num = [](double x) { return std::isfinite(x) ? ojson(x) : ojson(nullptr); };
     ojson out = ojson::array();
     for (std::size_t k = 0; k < n; ++k) {
@@ -193,7 +176,24 @@ class RunContext {
       // 1 at the bottom (the FITS files are written bottom row first).
       o["x_fits"] = num(t.pixel_x + 1.0);
       o["y_fits"] = num(static_cast<double>(pixels.height) - t.pixel_y);
-      if (v13) {
+      if (v16) {
+        // Astrometric (ICRS: the FITS WCS's frame) at the middle, start and
+        // end of the integration; apparent and geometric (eoir.h).
+        o["kind"] = t.kind == EOIR_TRUTH_STAR ? "star" : "object";
+        o["ra_deg"] = num(t.astrometric_ra_deg);
+        o["dec_deg"] = num(t.astrometric_dec_deg);
+        o["time"] = times[1];
+        o["start_time"] = times[0];
+        o["start_ra_deg"] = num(t.start_astrometric_ra_deg);
+        o["start_dec_deg"] = num(t.start_astrometric_dec_deg);
+        o["end_time"] = times[2];
+        o["end_ra_deg"] = num(t.end_astrometric_ra_deg);
+        o["end_dec_deg"] = num(t.end_astrometric_dec_deg);
+        o["apparent_ra_deg"] = num(t.right_ascension_deg);
+        o["apparent_dec_deg"] = num(t.declination_deg);
+        o["geometric_ra_deg"] = num(t.geometric_ra_deg);
+        o["geometric_dec_deg"] = num(t.geometric_dec_deg);
+      } else if (v13) {
         // The engine's direction (the apparent place of stars, the Moon and planets).
         o["kind"] = t.kind == EOIR_TRUTH_STAR ? "star" : "object";
         o["ra_deg"] = num(t.right_ascension_deg);
@@ -236,14 +236,27 @@ class RunContext {
     return out;
   }
 
-  std::string iso_of(const eoir_image_info& in) const {
+  std::string iso_of(const double (&jd_utc)[2]) const {
     eoir_time t{};
     t.scale = EOIR_TIME_UTC;
-    t.jd1 = in.time_jd_utc[0];
-    t.jd2 = in.time_jd_utc[1];
+    t.jd1 = jd_utc[0];
+    t.jd2 = jd_utc[1];
     char buf[64];
     engine_.check(engine_.api().time_to_iso(&t, buf, sizeof buf), "image time");
     return buf;
+  }
+  // The frame time: the middle of the integration.
+  std::string iso_of(const eoir_image_info& in) const { return iso_of(in.time_jd_utc); }
+
+  static double mjd_of(const double (&jd_utc)[2]) { return (jd_utc[0] - 2400000.5) + jd_utc[1]; }
+
+  // The engine's image info carries the frame's times, observer and
+  // astrometric WCS from C ABI 1.6 on.
+  void need_v16(const std::string& where) const {
+    const eoir_api_v1& api = engine_.api();
+    if (api.struct_size < offsetof(eoir_api_v1, pick_term_get) + sizeof api.pick_term_get)
+      throw EngineError(where + ": the engine library has no astrometric WCS and exposure times (C ABI 1.6 needed)",
+                        EOIR_ERR_ABI_MISMATCH);
   }
 
   // FITS dates carry no time-zone letter (FITS 4.0 section 9.1.1; the time
@@ -258,13 +271,50 @@ class RunContext {
   // 1 for the sensor images).
   io::FitsHeader header(const SensorSpec& s, std::size_t index, const eoir_image_info& in, const char* kind_name,
                         const char* bunit, double cube_step_s = 0.0) const {
+    need_v16("FITS header of " + s.name);
     const long long pixels = engine_.value(s.name, "horizontal_pixels", EOIR_TYPE_INTEGER).get<long long>();
     const long long samples_per_pixel = pixels > 0 ? static_cast<long long>(in.width) / pixels : 1;
     io::FitsHeader h;
-    h.set_string("DATE-OBS", fits_time(iso_of(in)), "frame time (UTC)");
-    h.set_string("TIMESYS", "UTC", "time scale of DATE-OBS");
-    h.set_double("MJD-OBS", (in.time_jd_utc[0] - 2400000.5) + in.time_jd_utc[1], "frame time, MJD (UTC)");
+    // Times (FITS 4.0 section 9; Rots et al. 2015, A&A 574, A36): DATE-OBS
+    // is the start of the integration, as DATE-BEG; DATE-AVG its middle (the
+    // engine's frame time); UTC at the observer (TREFPOS).
+    const std::string begin = fits_time(iso_of(in.start_jd_utc));
+    h.set_string("DATE-OBS", begin, "start of the integration (UTC)");
+    h.set_string("DATE-BEG", begin, "start of the integration (UTC)");
+    h.set_string("DATE-AVG", fits_time(iso_of(in)), "middle of the integration (UTC)");
+    h.set_string("DATE-END", fits_time(iso_of(in.end_jd_utc)), "end of the integration (UTC)");
+    h.set_string("TIMESYS", "UTC", "time scale of the DATE and MJD cards");
+    h.set_string("TREFPOS", "TOPOCENTER", "times at the sensor (OBSGEO)");
+    h.set_double("MJD-OBS", mjd_of(in.start_jd_utc), "[d] DATE-OBS as MJD (UTC)");
+    h.set_double("MJD-BEG", mjd_of(in.start_jd_utc), "[d] DATE-BEG as MJD (UTC)");
+    h.set_double("MJD-AVG", mjd_of(in.time_jd_utc), "[d] DATE-AVG as MJD (UTC)");
+    h.set_double("MJD-END", mjd_of(in.end_jd_utc), "[d] DATE-END as MJD (UTC)");
+    h.set_double("EXPTIME", number(s.name, "integration_time_ms") / 1000.0, "[s] integration time");
+    // The observer at DATE-AVG: ITRS position (FITS 4.0 sections 8.4.1,
+    // 9.3.2: one set of coordinates, the Cartesian one); for an observer that
+    // is not a site, also its J2000 (GCRS) state, in cards of our own.
+    static const char* const axis[3] = {"X", "Y", "Z"};
+    for (int k = 0; k < 3; ++k)
+      h.set_double(std::string("OBSGEO-") + axis[k], in.observer_earth_fixed_m[k],
+                   std::string("[m] sensor ITRS ") + axis[k] + " at DATE-AVG");
+    const ObjectSpec* parent = sc_.find_object(s.parent);
+    if (parent == nullptr || parent->kind != "site") {
+      for (int k = 0; k < 3; ++k)
+        h.set_double(std::string("OBSJ2K-") + axis[k], in.observer_position_m[k],
+                     std::string("[m] sensor J2000 (GCRS) ") + axis[k] + " at DATE-AVG");
+      for (int k = 0; k < 3; ++k)
+        h.set_double(std::string("OBSJ2KV") + axis[k], in.observer_velocity_m_s[k],
+                     std::string("[m/s] sensor J2000 (GCRS) v") + axis[k] + " at DATE-AVG");
+    }
     h.set_string("BUNIT", bunit, "unit of the pixel values");
+    // The electron images' detector cards, where they apply.
+    const bool electrons = std::string(bunit) == kBunitElectrons;
+    const bool with_noise = std::string(kind_name).rfind("sensor_electrons", 0) == 0;  // and its cube
+    if (electrons) h.set_double("GAIN", 1.0, "[electron/adu] the pixel values are electrons");
+    if (electrons && with_noise && in.saturation_electrons > 0)
+      h.set_double("SATURATE", in.saturation_electrons, "[electron] saturation level");
+    if (electrons && with_noise && in.read_noise_electrons > 0)
+      h.set_double("RDNOISE", in.read_noise_electrons, "[electron] dark (read) noise sigma");
     h.set_string("INSTRUME", s.name, "EOIR sensor");
     h.set_string("SENSOR", s.name, "EOIR sensor name");
     h.set_string("PARENT", s.parent, "object carrying the sensor");
@@ -276,34 +326,24 @@ class RunContext {
     h.set_double("BORE_DEC", in.boresight_dec_deg, "[deg] J2000 Dec of the sensor +z (boresight)");
     h.set_double("UP_RA", in.up_ra_deg, "[deg] J2000 RA of the sensor +y (image up)");
     h.set_double("UP_DEC", in.up_dec_deg, "[deg] J2000 Dec of the sensor +y (image up)");
-    h.set_double("EXPTIME", number(s.name, "integration_time_ms") / 1000.0, "[s] integration time");
     h.set_double("BANDLO", number(s.name, "band_low_um"), "[um] band lower edge");
     h.set_double("BANDHI", number(s.name, "band_high_um"), "[um] band upper edge");
-    // TAN (gnomonic) pointing, written as a CD matrix. Column grows toward
-    // body -x, row toward body -y (eoir.h); the writer flips rows so FITS
-    // pixel (1,1) is the lower left and FITS rows grow toward +y (image up).
-    // In the intermediate coordinates (east, north) at the boresight, body
-    // +x = y cross z = (cos PA, -sin PA), so one column step is
-    // d1 (-cos PA, sin PA), and one FITS row step is +y = d2 (sin PA, cos PA),
-    // PA being the up vector's position angle east of north. Samples are uniform on the focal plane (spec
-    // 5.2), i.e. uniform in tan(angle): the TAN pitch is 2 tan(FOV/2) / N.
-    const double hfov = number(s.name, "horizontal_fov_deg"), vfov = number(s.name, "vertical_fov_deg");
-    const double d1 = 2.0 * std::tan(hfov * kDeg / 2.0) / static_cast<double>(in.width) / kDeg;
-    const double d2 = 2.0 * std::tan(vfov * kDeg / 2.0) / static_cast<double>(in.height) / kDeg;
-    const double pa =
-        position_angle_deg(in.boresight_ra_deg, in.boresight_dec_deg, in.up_ra_deg, in.up_dec_deg) * kDeg;
+    // The engine's astrometric TAN WCS (ICRS as a plate solution against a
+    // star catalogue gives it) at the image centre. Its CD matrix is per
+    // image column and row (rows down); the writer flips rows so that FITS
+    // pixel (1,1) is the lower left, so the FITS y derivatives change sign.
     io::FitsPointing wcs;
-    wcs.ra_deg = in.boresight_ra_deg;
-    wcs.dec_deg = in.boresight_dec_deg;
+    wcs.ra_deg = in.astrometric_ra_deg;
+    wcs.dec_deg = in.astrometric_dec_deg;
     wcs.crpix1 = (static_cast<double>(in.width) + 1.0) / 2.0;  // the boresight: image centre
     wcs.crpix2 = (static_cast<double>(in.height) + 1.0) / 2.0;
-    wcs.cd1_1 = -d1 * std::cos(pa);
-    wcs.cd1_2 = d2 * std::sin(pa);
-    wcs.cd2_1 = d1 * std::sin(pa);
-    wcs.cd2_2 = d2 * std::cos(pa);
-    wcs.radesys = "ICRS";  // J2000 axes of the engine (GCRS ~ ICRS)
+    wcs.cd1_1 = in.astrometric_cd_deg[0];
+    wcs.cd1_2 = -in.astrometric_cd_deg[1];
+    wcs.cd2_1 = in.astrometric_cd_deg[2];
+    wcs.cd2_2 = -in.astrometric_cd_deg[3];
+    wcs.radesys = "ICRS";  // astrometric: the frame of the star catalogue
     wcs.time_step_s = cube_step_s;
-    wcs.mjdref = (in.time_jd_utc[0] - 2400000.5) + in.time_jd_utc[1];
+    wcs.mjdref = mjd_of(in.time_jd_utc);
     wcs.dateref = fits_time(iso_of(in));
     io::add_tan_pointing(h, wcs);
     // The fidelity of the frame, as HIERARCH FID <property> cards.
@@ -320,10 +360,10 @@ class RunContext {
     return h;
   }
 
-  // Mean pixel pitch at the boresight, degrees.
-  double pixel_scale_deg(const SensorSpec& s, const eoir_image_info& in) const {
-    const double hfov = number(s.name, "horizontal_fov_deg");
-    return 2.0 * std::tan(hfov * kDeg / 2.0) / static_cast<double>(in.width) / kDeg;
+  // Mean pixel pitch at the boresight, degrees (the astrometric WCS's).
+  static double pixel_scale_deg(const eoir_image_info& in) {
+    const double* cd = in.astrometric_cd_deg;
+    return std::sqrt(std::fabs(cd[0] * cd[3] - cd[1] * cd[2]));
   }
 
   void write_fits(const std::string& path, const std::vector<double>& v, const eoir_image_info& in,
@@ -367,9 +407,43 @@ struct CubeFrames {
   const SensorSpec* sensor = nullptr;
   eoir_image_info first{};
   std::vector<std::vector<double>> planes;
-  std::vector<std::string> times;
-  std::vector<double> mjd, boresight_ra, boresight_dec, up_ra, up_dec;
+  std::vector<std::string> starts, middles;  // DATE-OBS (the start) and DATE-AVG of each plane
+  std::vector<double> mjd_starts, mjd_middles, boresight_ra, boresight_dec, up_ra, up_dec;
 };
+
+// The fraction of the sensor pixels at the saturation level (0 with
+// saturation off).
+double saturated_fraction(const std::vector<double>& electrons, const eoir_image_info& in) {
+  if (!(in.saturation_electrons > 0) || electrons.empty()) return 0.0;
+  const auto n = std::count_if(electrons.begin(), electrons.end(),
+                               [&](double e) { return e >= in.saturation_electrons; });
+  return static_cast<double>(n) / static_cast<double>(electrons.size());
+}
+
+// What a reader of a frame should know before looking at it: nothing in the
+// field (no object or star in the truth, and the scene's radiance uniform
+// to 1e-9), or more than half of the pixels saturated.
+ojson frame_warnings(const ojson& truth, const std::vector<double>& radiance, const std::vector<double>& electrons,
+                     const eoir_image_info& in) {
+  ojson out = ojson::array();
+  const Stats r = stats_of(radiance);
+  if (truth.empty() && r.non_finite == 0 && r.max - r.min <= 1e-9 * std::fabs(r.max)) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "nothing in the field: no object or star, and a uniform scene (radiance %.6g W cm-2 sr-1)", r.max);
+    out.push_back(text);
+  }
+  const double saturated = saturated_fraction(electrons, in);
+  if (saturated > 0.5) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "%.1f %% of the pixels are saturated (%.6g electrons); shorten integration_time_ms or raise the "
+                  "saturation level",
+                  100.0 * saturated, in.saturation_electrons);
+    out.push_back(text);
+  }
+  return out;
+}
 
 std::string format_duration(double s) {
   char buf[32];
@@ -413,6 +487,12 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
   std::size_t done = 0;
   const fs::path dir(opt.out_dir);
 
+  // --stretch: every sensor's display stretch (the engine checks the name).
+  if (!opt.stretch.empty())
+    for (const SensorSpec* s : sensors)
+      engine.check(engine.api().set_string(engine.handle(), s->name.c_str(), "display_stretch", opt.stretch.c_str()),
+                   "--stretch " + opt.stretch + " (sensor " + s->name + ")");
+
   std::map<std::string, CubeFrames> cubes;
   std::size_t cube_bytes = 0;
   constexpr std::size_t kMaxCubeBytes = std::size_t{2} << 30;
@@ -442,6 +522,11 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
       const std::vector<std::uint8_t> sd = ctx.bytes(s->name, EOIR_IMAGE_SCENE_DISPLAY, in_sd, where + ": display");
       const std::vector<std::uint8_t> pd = ctx.bytes(s->name, EOIR_IMAGE_SENSOR_DISPLAY, in_pd, where + ": display");
 
+      const ojson truth = ctx.truth(s->name, where + ": truth", in_el);
+      const ojson warnings = frame_warnings(truth, rad, el, in_el);
+      for (const auto& w : warnings)
+        std::fprintf(stderr, "%seoir run: warning: %s frame %zu (%s): %s\n", tty ? "\r\033[K" : "", s->name.c_str(), i,
+                     ctx.iso_of(in_el).c_str(), w.get<std::string>().c_str());
       try {
         ctx.write_fits((dir / f_rad).string(), rad, in_rad,
                        ctx.header(*s, i, in_rad, "scene_radiance", kBunitRadiance));
@@ -451,11 +536,10 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
                        ctx.header(*s, i, in_mean, "sensor_mean", kBunitElectrons));
         io::write_png_gray8((dir / f_scene).string(), sd.data(), in_sd.width, in_sd.height);
         io::write_png_gray8((dir / f_sensor).string(), pd.data(), in_pd.width, in_pd.height);
-        const ojson truth = ctx.truth(s->name, where + ": truth", in_el);
         const std::string truth_text = truth.dump(2) + "\n";
         io::write_file_atomically((dir / f_truth).string(), truth_text.data(), truth_text.size());
         const std::string region =
-            region_text(truth, s->name, ctx.iso_of(in_el), ctx.pixel_scale_deg(*s, in_el));
+            region_text(truth, s->name, ctx.iso_of(in_el), RunContext::pixel_scale_deg(in_el));
         io::write_file_atomically((dir / f_region).string(), region.data(), region.size());
       } catch (const io::ImageIoError& e) {
         throw std::runtime_error(std::string("cannot write frame ") + index_text + " of " + s->name + ": " +
@@ -473,8 +557,10 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
           throw std::runtime_error("--cube: the data cubes would exceed " + std::to_string(kMaxCubeBytes >> 30) +
                                    " GiB of memory; use fewer time steps or sensors");
         c.planes.push_back(el);
-        c.times.push_back(RunContext::fits_time(ctx.iso_of(in_el)));
-        c.mjd.push_back((in_el.time_jd_utc[0] - 2400000.5) + in_el.time_jd_utc[1]);
+        c.starts.push_back(RunContext::fits_time(ctx.iso_of(in_el.start_jd_utc)));
+        c.middles.push_back(RunContext::fits_time(ctx.iso_of(in_el)));
+        c.mjd_starts.push_back(RunContext::mjd_of(in_el.start_jd_utc));
+        c.mjd_middles.push_back(RunContext::mjd_of(in_el.time_jd_utc));
         c.boresight_ra.push_back(in_el.boresight_ra_deg);
         c.boresight_dec.push_back(in_el.boresight_dec_deg);
         c.up_ra.push_back(in_el.up_ra_deg);
@@ -484,6 +570,8 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
       ojson fr;
       fr["index"] = i;
       fr["time"] = ctx.iso_of(in_el);
+      fr["start_time"] = ctx.iso_of(in_el.start_jd_utc);
+      fr["end_time"] = ctx.iso_of(in_el.end_jd_utc);
       fr["sensor"] = s->name;
       fr["files"] = {{"radiance", f_rad},   {"electrons", f_el},  {"mean_electrons", f_mean},
                      {"scene_png", f_scene}, {"sensor_png", f_sensor}, {"truth", f_truth},
@@ -497,6 +585,8 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
       fr["electrons"] = stats_json(stats_of(el));
       fr["mean_electrons"] = stats_json(stats_of(mean));
       fr["radiance"] = stats_json(stats_of(rad));
+      fr["saturated_fraction"] = saturated_fraction(el, in_el);
+      fr["warnings"] = warnings;
       frames.push_back(std::move(fr));
 
       ++done;
@@ -528,8 +618,9 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
     table.extname = "TIMES";
     std::vector<double> frame_index;
     for (std::size_t k = 0; k < c.planes.size(); ++k) frame_index.push_back(static_cast<double>(k));
-    table.columns = {{"FRAME", "", frame_index, {}},          {"DATE-OBS", "", {}, c.times},
-                     {"MJD-OBS", "d", c.mjd, {}},             {"BORE_RA", "deg", c.boresight_ra, {}},
+    table.columns = {{"FRAME", "", frame_index, {}},          {"DATE-OBS", "", {}, c.starts},
+                     {"DATE-AVG", "", {}, c.middles},         {"MJD-OBS", "d", c.mjd_starts, {}},
+                     {"MJD-AVG", "d", c.mjd_middles, {}},     {"BORE_RA", "deg", c.boresight_ra, {}},
                      {"BORE_DEC", "deg", c.boresight_dec, {}}, {"UP_RA", "deg", c.up_ra, {}},
                      {"UP_DEC", "deg", c.up_dec, {}}};
     std::vector<const double*> planes;

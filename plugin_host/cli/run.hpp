@@ -22,6 +22,7 @@ struct RunOptions {
   std::vector<std::string> sensors;  // empty: every sensor of the scenario
   bool quiet = false;
   bool cube = false;                 // also <sensor>_electrons_cube.fits (every frame, one 3-D image)
+  std::string stretch;               // if not empty: every sensor's display_stretch (--stretch)
   std::string save_state;            // if not empty: eoir_state_save after the last frame
 };
 
@@ -34,7 +35,9 @@ struct RunOptions {
 //   <s>_<i:04d>_truth.json           per-frame truth: the objects in the field
 //                                    (eoir_truth_get; schemas/truth.schema.json)
 // then summary.json. File names keep [A-Za-z0-9._-] of the sensor name and
-// replace other characters with '_'.
+// replace other characters with '_'. A frame with nothing in the field (no
+// truth entry and a uniform scene radiance) or with more than half of its
+// pixels saturated gets a line on stderr and an entry in its "warnings".
 // Complete or not (issue 25 item 12): DIR/INCOMPLETE is written before the
 // first frame (and an earlier summary.json removed); summary.json, written
 // last, has "complete": true, and INCOMPLETE is removed after it. A failed
@@ -46,8 +49,10 @@ std::size_t run_frames(Engine& engine, const Scenario& scenario, const RunOption
 
 // The header cards `eoir run` writes into a FITS file of the last frame
 // rendered for `sensor` (image_kind: EOIR_IMAGE_SCENE_RADIANCE,
-// _SENSOR_ELECTRONS or _SENSOR_MEAN): DATE-OBS, BUNIT, sensor, pointing and
-// its TAN WCS. `index` is the FRAME card. Throws EngineError.
+// _SENSOR_ELECTRONS or _SENSOR_MEAN): the integration's times (DATE-OBS its
+// start), the observer's place, BUNIT and detector cards, sensor, pointing
+// and the astrometric TAN WCS. `index` is the FRAME card. Throws EngineError
+// (also for an engine library older than C ABI 1.6).
 eoir::imageio::FitsHeader frame_fits_header(Engine& engine, const Scenario& scenario, const SensorSpec& sensor,
                                             std::size_t index, int32_t image_kind);
 

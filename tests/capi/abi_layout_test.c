@@ -69,6 +69,15 @@ int main(void) {
   CHECK_LAYOUT(eoir_image_info, time_jd_utc, 24);
   CHECK_LAYOUT(eoir_image_info, boresight_ra_deg, 40);
   CHECK_LAYOUT(eoir_image_info, up_dec_deg, 64);
+  CHECK_LAYOUT(eoir_image_info, start_jd_utc, 72); /* 1.6 */
+  CHECK_LAYOUT(eoir_image_info, end_jd_utc, 88);
+  CHECK_LAYOUT(eoir_image_info, astrometric_ra_deg, 104);
+  CHECK_LAYOUT(eoir_image_info, astrometric_cd_deg, 120);
+  CHECK_LAYOUT(eoir_image_info, observer_position_m, 152);
+  CHECK_LAYOUT(eoir_image_info, observer_velocity_m_s, 176);
+  CHECK_LAYOUT(eoir_image_info, observer_earth_fixed_m, 200);
+  CHECK_LAYOUT(eoir_image_info, saturation_electrons, 224);
+  CHECK_LAYOUT(eoir_image_info, read_noise_electrons, 232);
   CHECK_SIZE(eoir_pick, 144);
   CHECK_LAYOUT(eoir_pick, hit, 4);
   CHECK_LAYOUT(eoir_pick, object, 8);
@@ -96,6 +105,11 @@ int main(void) {
   CHECK_LAYOUT(eoir_truth, azimuth_deg, 208);
   CHECK_LAYOUT(eoir_truth, elevation_deg, 216);
   CHECK_LAYOUT(eoir_truth, air_mass, 224);
+  CHECK_LAYOUT(eoir_truth, astrometric_ra_deg, 232); /* 1.6 */
+  CHECK_LAYOUT(eoir_truth, start_astrometric_ra_deg, 248);
+  CHECK_LAYOUT(eoir_truth, end_astrometric_dec_deg, 272);
+  CHECK_LAYOUT(eoir_truth, geometric_ra_deg, 280);
+  CHECK_LAYOUT(eoir_truth, geometric_dec_deg, 288);
   CHECK_LAYOUT(eoir_api_v1, abi_major, 4);
   CHECK_LAYOUT(eoir_api_v1, version, 16);
   CHECK_LAYOUT(eoir_api_v1, engine_create, 40);

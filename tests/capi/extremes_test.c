@@ -116,6 +116,16 @@ static void read_image(eoir_engine e, int32_t kind, const char* label) {
   must_be_finite(info.boresight_ra_deg + info.boresight_dec_deg + info.up_ra_deg + info.up_dec_deg,
                  "image_info angles", label);
   must_be_finite(info.time_jd_utc[0] + info.time_jd_utc[1], "image_info time", label);
+  /* 1.6: the integration, the astrometric WCS, the observer */
+  must_be_finite(info.start_jd_utc[0] + info.start_jd_utc[1] + info.end_jd_utc[0] + info.end_jd_utc[1],
+                 "image_info start and end", label);
+  must_be_finite(info.astrometric_ra_deg + info.astrometric_dec_deg + info.astrometric_cd_deg[0] +
+                     info.astrometric_cd_deg[1] + info.astrometric_cd_deg[2] + info.astrometric_cd_deg[3],
+                 "image_info astrometric WCS", label);
+  CHECK(info.astrometric_cd_deg[0] * info.astrometric_cd_deg[3] - info.astrometric_cd_deg[1] * info.astrometric_cd_deg[2] != 0);
+  must_be_finite(info.observer_earth_fixed_m[0] + info.observer_earth_fixed_m[1] + info.observer_earth_fixed_m[2] +
+                     info.saturation_electrons + info.read_noise_electrons,
+                 "image_info observer and detector", label);
   n = (size_t)info.width * info.height;
   CHECK(n > 0);
   if (kind == EOIR_IMAGE_SCENE_DISPLAY || kind == EOIR_IMAGE_SENSOR_DISPLAY) {
@@ -144,6 +154,10 @@ static void read_truth_and_pick(eoir_engine e, const char* label) {
       must_be_finite(t.effective_irradiance + t.effective_radiance, "truth radiometry", label);
       must_be_finite(t.snr, "truth.snr", label);
       must_be_finite(t.azimuth_deg + t.elevation_deg, "truth azimuth/elevation", label);
+      must_be_finite(t.astrometric_ra_deg + t.astrometric_dec_deg + t.start_astrometric_ra_deg +
+                         t.start_astrometric_dec_deg + t.end_astrometric_ra_deg + t.end_astrometric_dec_deg +
+                         t.geometric_ra_deg + t.geometric_dec_deg,
+                     "truth astrometric and geometric RA/Dec", label);
     }
   for (space = 0; space < 2; ++space) {
     static double wl[4096], l[4096];

@@ -259,9 +259,11 @@ def main():
                 check(chk == (1, 1), f"{tag} {key}: CHECKSUM/DATASUM verify ({chk})")
                 check(size[:2] == (w, h), f"{tag} {key}: NAXIS1/2 {size[:2]} != {(w, h)}")
                 check(cards.get("BUNIT") == bunit, f"{tag} {key}: BUNIT {cards.get('BUNIT')!r}")
-                # FITS dates have no 'Z' (the time scale is TIMESYS = 'UTC')
-                check(cards.get("DATE-OBS") + "Z" == fr["time"] and cards.get("TIMESYS") == "UTC",
+                # FITS dates have no 'Z' (the time scale is TIMESYS = 'UTC');
+                # DATE-OBS is the start of the integration, DATE-AVG the frame time
+                check(cards.get("DATE-OBS") + "Z" == fr["start_time"] and cards.get("TIMESYS") == "UTC",
                       f"{tag} {key}: DATE-OBS {cards.get('DATE-OBS')}")
+                check(cards.get("DATE-AVG") + "Z" == fr["time"], f"{tag} {key}: DATE-AVG {cards.get('DATE-AVG')}")
                 check(cards.get("SENSOR") == fr["sensor"] and cards.get("INSTRUME") == fr["sensor"],
                       f"{tag} {key}: SENSOR/INSTRUME")
                 check(cards.get("SCENARIO") == summary["scenario"], f"{tag} {key}: SCENARIO")

@@ -145,7 +145,17 @@ class eoir_image_info(Structure):
                 ("boresight_ra_deg", c_double),
                 ("boresight_dec_deg", c_double),
                 ("up_ra_deg", c_double),
-                ("up_dec_deg", c_double)]
+                ("up_dec_deg", c_double),
+                ("start_jd_utc", c_double * 2),  # appended in 1.6
+                ("end_jd_utc", c_double * 2),
+                ("astrometric_ra_deg", c_double),
+                ("astrometric_dec_deg", c_double),
+                ("astrometric_cd_deg", c_double * 4),
+                ("observer_position_m", c_double * 3),
+                ("observer_velocity_m_s", c_double * 3),
+                ("observer_earth_fixed_m", c_double * 3),
+                ("saturation_electrons", c_double),
+                ("read_noise_electrons", c_double)]
 
 
 class eoir_pick(Structure):
@@ -188,7 +198,15 @@ class eoir_truth(Structure):
                 ("reserved_1_5", c_int32),
                 ("azimuth_deg", c_double),
                 ("elevation_deg", c_double),
-                ("air_mass", c_double)]
+                ("air_mass", c_double),
+                ("astrometric_ra_deg", c_double),  # appended in 1.6
+                ("astrometric_dec_deg", c_double),
+                ("start_astrometric_ra_deg", c_double),
+                ("start_astrometric_dec_deg", c_double),
+                ("end_astrometric_ra_deg", c_double),
+                ("end_astrometric_dec_deg", c_double),
+                ("geometric_ra_deg", c_double),
+                ("geometric_dec_deg", c_double)]
 
 
 eoir_log_fn = CFUNCTYPE(None, c_void_p, c_int32, c_char_p)

@@ -629,18 +629,32 @@ class Engine(_Closing):
         or catalogue id), pixel_x, pixel_y (sub-pixel, 0 = centre of pixel 0,
         rows from the top), range_m (0 for stars), point_source (bool),
         visible (bool), effective_irradiance (W/cm^2), effective_radiance
-        (W/(cm^2 sr)), snr, ra_deg, dec_deg (the apparent direction, J2000
-        axes), v_mag, b_v_mag (stars), start and end (pixel_x, pixel_y) at
-        the start and the end of the integration (a streak), azimuth_deg and
-        elevation_deg (that direction on the sensor's local horizon: from
-        north through east, above the geodetic horizon, unrefracted; None
-        unless the sensor is within 100 km of the Earth's surface), air_mass
-        (the air along the line of sight, or toward space for a star, in
-        sea-level vertical columns: 1 straight up from sea level; 0 while
-        the Earth's atmosphere is off). From inside the atmosphere the pixel
-        positions of stars and of point sources beyond it are raised by the
-        refraction, as in the image. Raises NoStateError if no frame was
-        rendered."""
+        (W/(cm^2 sr)), snr, v_mag, b_v_mag (stars), start and end (pixel_x,
+        pixel_y) at the start and the end of the integration (a streak), and
+        three directions from the sensor, in degrees:
+
+        - ra_deg, dec_deg: astrometric (ICRS), what the frame's astrometric
+          WCS (image_info's astrometric_*; the FITS WCS of `eoir run`) gives
+          at the object's pixel, as a plate solution against a star
+          catalogue does (the field's aberration and light deflection
+          absorbed); start_ra_deg, start_dec_deg, end_ra_deg, end_dec_deg
+          the same at the start and the end of the integration;
+        - apparent_ra_deg, apparent_dec_deg: where the image has it, J2000
+          (GCRS) axes (stars, the Moon and planets at their apparent places,
+          other objects at their geometric direction), before refraction;
+        - geometric_ra_deg, geometric_dec_deg: the true direction at the frame
+          time (no light time, aberration or deflection; stars: the catalogue
+          place with proper motion and parallax).
+
+        azimuth_deg and elevation_deg: the apparent direction on the sensor's
+        local horizon (from north through east, above the geodetic horizon,
+        unrefracted; None unless the sensor is within 100 km of the Earth's
+        surface); air_mass: the air along the line of sight, or toward space
+        for a star, in sea-level vertical columns (1 straight up from sea
+        level; 0 while the Earth's atmosphere is off). From inside the
+        atmosphere the pixel positions of stars and of point sources beyond
+        it are raised by the refraction, as in the image. Raises NoStateError
+        if no frame was rendered."""
         s = encode(sensor, "sensor")
         n = c_size_t()
         check(lib.eoir_truth_count(self.handle, s, byref(n)))
@@ -660,8 +674,16 @@ class Engine(_Closing):
                 "effective_radiance": float(t.effective_radiance),
                 "snr": float(t.snr),
                 "kind": "star" if t.kind == _lib.EOIR_TRUTH_STAR else "object",
-                "ra_deg": float(t.right_ascension_deg),
-                "dec_deg": float(t.declination_deg),
+                "ra_deg": float(t.astrometric_ra_deg),
+                "dec_deg": float(t.astrometric_dec_deg),
+                "start_ra_deg": float(t.start_astrometric_ra_deg),
+                "start_dec_deg": float(t.start_astrometric_dec_deg),
+                "end_ra_deg": float(t.end_astrometric_ra_deg),
+                "end_dec_deg": float(t.end_astrometric_dec_deg),
+                "apparent_ra_deg": float(t.right_ascension_deg),
+                "apparent_dec_deg": float(t.declination_deg),
+                "geometric_ra_deg": float(t.geometric_ra_deg),
+                "geometric_dec_deg": float(t.geometric_dec_deg),
                 "v_mag": float(t.v_mag),
                 "b_v_mag": float(t.b_v_mag),
                 "start": (float(t.start_pixel_x), float(t.start_pixel_y)),
@@ -732,27 +754,55 @@ class Engine(_Closing):
         return info
 
     def image_info(self, sensor: str, kind) -> Dict[str, Any]:
-        """Size, unit, time and pointing of the last frame's image of a kind
-        ("scene_radiance", "scene_display", "sensor_electrons", "sensor_mean",
-        "sensor_display"): a dict with width, height, kind, unit,
-        time_jd_utc (jd1, jd2), time (ISO-8601 UTC), boresight_ra_deg,
-        boresight_dec_deg, up_ra_deg, up_dec_deg."""
+        """Size, unit, times, pointing and sky coordinates of the last frame's
+        image of a kind ("scene_radiance", "scene_display",
+        "sensor_electrons", "sensor_mean", "sensor_display"): a dict with
+        width, height, kind, unit; time_jd_utc (jd1, jd2) and time (ISO-8601
+        UTC) of the middle of the integration, start_jd_utc / start_time and
+        end_jd_utc / end_time of its start and end; boresight_ra_deg,
+        boresight_dec_deg, up_ra_deg, up_dec_deg (the sensor's +z and +y,
+        J2000 axes); the astrometric TAN WCS (ICRS as a plate solution
+        against a star catalogue gives it: the field's aberration and light
+        deflection absorbed, refraction not): astrometric_ra_deg,
+        astrometric_dec_deg at the image centre and astrometric_cd_deg
+        (dxi/dcolumn, dxi/drow, deta/dcolumn, deta/drow in degrees per
+        column and row of this image; xi east, eta north; rows from the
+        top); observer_position_m, observer_velocity_m_s (J2000) and
+        observer_earth_fixed_m (ITRS) of the sensor at the middle;
+        saturation_electrons and read_noise_electrons of the sensor images
+        (0 where saturation or noise is off)."""
         code = _lookup(IMAGE_KINDS, kind, "image kind")
         info = self._image_info(sensor, code)
-        t = _lib.eoir_time()
-        t.scale = _lib.EOIR_TIME_UTC
-        t.jd1, t.jd2 = info.time_jd_utc[0], info.time_jd_utc[1]
+
+        def iso(jd):
+            t = _lib.eoir_time()
+            t.scale = _lib.EOIR_TIME_UTC
+            t.jd1, t.jd2 = jd[0], jd[1]
+            return _iso_of(t)
+
         return {
             "width": int(info.width),
             "height": int(info.height),
             "kind": _IMAGE_KIND_NAMES.get(info.kind, int(info.kind)),
             "unit": decode(info.unit),
             "time_jd_utc": (float(info.time_jd_utc[0]), float(info.time_jd_utc[1])),
-            "time": _iso_of(t),
+            "time": iso(info.time_jd_utc),
+            "start_jd_utc": (float(info.start_jd_utc[0]), float(info.start_jd_utc[1])),
+            "start_time": iso(info.start_jd_utc),
+            "end_jd_utc": (float(info.end_jd_utc[0]), float(info.end_jd_utc[1])),
+            "end_time": iso(info.end_jd_utc),
             "boresight_ra_deg": float(info.boresight_ra_deg),
             "boresight_dec_deg": float(info.boresight_dec_deg),
             "up_ra_deg": float(info.up_ra_deg),
             "up_dec_deg": float(info.up_dec_deg),
+            "astrometric_ra_deg": float(info.astrometric_ra_deg),
+            "astrometric_dec_deg": float(info.astrometric_dec_deg),
+            "astrometric_cd_deg": tuple(float(v) for v in info.astrometric_cd_deg),
+            "observer_position_m": np.array(list(info.observer_position_m)),
+            "observer_velocity_m_s": np.array(list(info.observer_velocity_m_s)),
+            "observer_earth_fixed_m": np.array(list(info.observer_earth_fixed_m)),
+            "saturation_electrons": float(info.saturation_electrons),
+            "read_noise_electrons": float(info.read_noise_electrons),
         }
 
     def image(self, sensor: str, kind) -> np.ndarray:

@@ -113,13 +113,21 @@ class Scenario(_Closing):
     # ------------------------------------------------- truth and FITS files
     def truth(self, sensor: str) -> List[Dict[str, Any]]:
         """The per-frame truth `eoir run` writes for the last frame of
-        sensor: FITS pixels (x_fits, y_fits), ICRS ra_deg/dec_deg, range, SNR."""
+        sensor (schemas/truth.schema.json): FITS pixels (x_fits, y_fits),
+        astrometric ICRS ra_deg/dec_deg (what the FITS WCS gives at the
+        pixel, as a plate solution does) at the middle of the integration
+        (time) and at its start and end (start_time, start_ra_deg, ...),
+        apparent_ra_deg/dec_deg and geometric_ra_deg/dec_deg, range, SNR."""
         return json.loads(_host.json_out(_host.host().eoir_host_session_truth, self.session,
                                          encode(sensor, "sensor")))
 
     def fits_header(self, sensor: str, kind="sensor_electrons", frame: int = 0):
         """The astropy.io.fits.Header `eoir run` writes for the last frame of
-        sensor: DATE-OBS, BUNIT, the sensor and its TAN WCS (CD matrix)."""
+        sensor: the integration's DATE-OBS (its start) = DATE-BEG, DATE-AVG,
+        DATE-END and MJD cards (UTC), EXPTIME, the observer (OBSGEO-X/Y/Z in
+        ITRS; OBSJ2K* J2000 state unless on a site), BUNIT, GAIN, SATURATE
+        and RDNOISE where they apply, the sensor and its astrometric TAN WCS
+        (ICRS, CD matrix)."""
         from astropy.io import fits
         code = _lookup(IMAGE_KINDS, kind, "image kind")
         cards = json.loads(_host.json_out(_host.host().eoir_host_session_fits_header, self.session,

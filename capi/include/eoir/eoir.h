@@ -357,7 +357,7 @@ typedef enum eoir_image_kind {
 /* Renders the frame of `sensor` at the engine time (ray casting, shading,
  * band integration, OTF convolution, point sources, noise from the engine's
  * seeded generator). The frame is kept until the next render of that sensor.
- * Settings: sensor properties noise_enabled, display_agc, display_gain_step,
+ * Settings: sensor properties noise_enabled, display_agc, display_gain_step, display_stretch,
  * the fidelity knobs (scene_mode, band_integration, samples_per_pixel, ...;
  * README "Fidelity") and objects' patch_size_m. The host's progress callback
  * is called between stages; a non-zero return cancels the render
@@ -388,6 +388,20 @@ typedef struct eoir_image_info {
   double boresight_dec_deg;
   double up_ra_deg;          /* sensor +y in J2000 */
   double up_dec_deg;
+  /* appended in 1.6; written only when struct_size covers them */
+  double start_jd_utc[2];    /* the integration's start and end (time_jd_utc is its middle), UTC */
+  double end_jd_utc[2];
+  double astrometric_ra_deg; /* the image's astrometric TAN WCS (ICRS as a plate solution against a star */
+  double astrometric_dec_deg; /* catalogue gives it: the field's aberration and light deflection absorbed;
+                                 refraction not): RA/Dec of the image centre (the boresight) */
+  double astrometric_cd_deg[4]; /* at the centre, degrees per column and row of this image: {dxi/dcolumn,
+                                   dxi/drow, deta/dcolumn, deta/drow}, xi toward east and eta toward north in
+                                   the tangent plane; rows grow downward as images are stored */
+  double observer_position_m[3];    /* the sensor at the frame time (the middle), J2000 (GCRS) axes */
+  double observer_velocity_m_s[3];
+  double observer_earth_fixed_m[3]; /* the same position in Earth-fixed axes (ITRS, WGS84) */
+  double saturation_electrons;      /* sensor images: the saturation level (spec 5.11.5); 0 if it is off */
+  double read_noise_electrons;      /* sensor images: the dark noise sigma (spec 5.11.4); 0 if noise is off */
 } eoir_image_info;
 
 EOIR_API eoir_status eoir_image_info_get(eoir_engine engine, const char* sensor, int32_t kind,
@@ -469,7 +483,12 @@ EOIR_API eoir_status eoir_target_spectrum_get(eoir_engine engine, const char* se
  * image has them: from inside the Earth's atmosphere, stars and point
  * sources beyond the atmosphere appear raised toward the zenith by the
  * refraction (1.5); the directions (RA/Dec, azimuth/elevation) stay
- * geometric. */
+ * unrefracted. Three directions (1.6): apparent (right_ascension_deg,
+ * declination_deg: where the image has it, J2000 = GCRS axes; stars, the
+ * Moon and planets at their apparent places, other objects at their
+ * geometric direction), astrometric (ICRS as eoir_image_info's astrometric
+ * WCS gives it at the object's pixel, refraction aside) and geometric (the
+ * true direction at the frame time). */
 #define EOIR_TRUTH_OBJECT 0
 #define EOIR_TRUTH_STAR 1
 
@@ -487,7 +506,7 @@ typedef struct eoir_truth {
   /* appended in 1.3; written only when struct_size covers them */
   int32_t kind;                 /* EOIR_TRUTH_OBJECT or EOIR_TRUTH_STAR */
   int32_t reserved;
-  double right_ascension_deg;   /* direction from the sensor (the apparent place), J2000 axes */
+  double right_ascension_deg;   /* direction from the sensor, apparent, J2000 axes */
   double declination_deg;
   double v_mag, b_v_mag;        /* stars: Johnson V and B-V; 0 for objects */
   double start_pixel_x, start_pixel_y;  /* position at the start and the end of the integration */
@@ -501,6 +520,13 @@ typedef struct eoir_truth {
   double air_mass;              /* air along the line of sight to the object, or toward space for a star, in
                                    sea-level vertical columns (spec 6.2.5.4: 1 straight up from sea level);
                                    0 while the Earth's atmosphere is off */
+  /* appended in 1.6; written only when struct_size covers them */
+  double astrometric_ra_deg;    /* the astrometric direction (ICRS) at the middle of the integration */
+  double astrometric_dec_deg;
+  double start_astrometric_ra_deg, start_astrometric_dec_deg;  /* ... at its start and its end */
+  double end_astrometric_ra_deg, end_astrometric_dec_deg;
+  double geometric_ra_deg;      /* the geometric direction at the frame time (no light time, no aberration, */
+  double geometric_dec_deg;     /* no deflection; stars: the catalogue place with proper motion and parallax) */
 } eoir_truth;
 
 EOIR_API eoir_status eoir_truth_count(eoir_engine engine, const char* sensor, size_t* count_out);

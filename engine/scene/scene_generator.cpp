@@ -50,6 +50,40 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
   const auto direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r); };
   const bool sky_varies = world.atmosphere.sky != nullptr;  // under the atmosphere, with the line of sight
   const double background = world.sky.background_radiance_W_cm2_sr;
+  // The sky under the atmosphere on a coarse grid (every kSkyStep-th
+  // sample): a sample that meets nothing takes the bilinear value of its
+  // cell where the cell's corners agree within kSkyAgreement (the sky is
+  // smooth there, tabulated itself on degree-wide cells), else its own
+  // lookup (the limb's haze, the horizon).
+  constexpr std::int64_t kSkyStep = 8;
+  constexpr double kSkyAgreement = 1e-3;
+  const std::int64_t gw = (w + kSkyStep - 1) / kSkyStep + 1, gh = (h + kSkyStep - 1) / kSkyStep + 1;
+  std::vector<double> sky_grid;
+  if (sky_varies) {
+    sky_grid.resize(static_cast<std::size_t>(gw * gh));
+    parallel_ranges(
+        gh, threads,
+        [&](std::int64_t j0, std::int64_t j1) {
+          for (std::int64_t j = j0; j < j1; ++j)
+            for (std::int64_t i = 0; i < gw; ++i)
+              sky_grid[static_cast<std::size_t>(j * gw + i)] =
+                  world.sky_radiance(direction(std::min(i * kSkyStep, w - 1), std::min(j * kSkyStep, h - 1)));
+        },
+        4);
+  }
+  const auto sky_at = [&](std::int64_t c, std::int64_t r, const Vec3& d) {
+    const std::int64_t i = c / kSkyStep, j = r / kSkyStep;
+    const double* g0 = &sky_grid[static_cast<std::size_t>(j * gw + i)];
+    const double* g1 = g0 + gw;
+    const double lo = std::min({g0[0], g0[1], g1[0], g1[1]}), hi = std::max({g0[0], g0[1], g1[0], g1[1]});
+    if (hi - lo > kSkyAgreement * hi) return world.sky_radiance(d.squaredNorm() > 0 ? d : direction(c, r));
+    // (the last cell of a row or column may be narrower)
+    const double cw = static_cast<double>(std::min((i + 1) * kSkyStep, w - 1) - i * kSkyStep);
+    const double ch = static_cast<double>(std::min((j + 1) * kSkyStep, h - 1) - j * kSkyStep);
+    const double fx = cw > 0 ? static_cast<double>(c - i * kSkyStep) / cw : 0.0;
+    const double fy = ch > 0 ? static_cast<double>(r - j * kSkyStep) / ch : 0.0;
+    return (1 - fy) * ((1 - fx) * g0[0] + fx * g0[1]) + fy * ((1 - fx) * g1[0] + fx * g1[1]);
+  };
   const geometry::RayQuery extended{geometry::ray_mask_extended, -1};
   world.caster.cast_grid(
       w, h, direction,
@@ -59,8 +93,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
         out.hits[i] = SampleHit{object, part};
         if (object < 0) {
           // the background light (spec 4.1.4), or the sky's
-          out.image.radiance_W_cm2_sr[i] =
-              sky_varies ? world.sky_radiance(d.squaredNorm() > 0 ? d : direction(c, r)) : background;
+          out.image.radiance_W_cm2_sr[i] = sky_varies ? sky_at(c, r, d) : background;
           return;
         }
         const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];

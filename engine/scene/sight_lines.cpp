@@ -100,7 +100,8 @@ SkyView::SkyView(std::shared_ptr<const SightLines> lines, std::shared_ptr<const 
   for (const double node : L.node) coordinate_.push_back(L.above ? node : std::sin(node));
   scatter_.resize(L.node.size() * azimuths_);
   scatter_band_.resize(scatter_.size());
-  made_ = std::make_unique<std::once_flag[]>(scatter_.size());
+  made_ = std::make_unique<std::atomic<bool>[]>(scatter_.size());
+  for (std::size_t k = 0; k < scatter_.size(); ++k) made_[k].store(false, std::memory_order_relaxed);
   for (std::size_t j = 0; j < L.node.size(); ++j) {
     // What the line's air adds without the Sun: its emission and the background seen through it.
     std::vector<double> sky = L.paths[j].terms.thermal;
@@ -135,12 +136,18 @@ void SkyView::make_cell(std::size_t k) const {
 }
 
 const std::vector<double>& SkyView::cell_scatter(std::size_t k) const {
-  std::call_once(made_[k], [this, k] { make_cell(k); });
+  if (!made_[k].load(std::memory_order_acquire)) {
+    const std::lock_guard<std::mutex> lock(making_);
+    if (!made_[k].load(std::memory_order_relaxed)) {
+      make_cell(k);
+      made_[k].store(true, std::memory_order_release);
+    }
+  }
   return scatter_[k];
 }
 
 double SkyView::cell_band(std::size_t k) const {
-  std::call_once(made_[k], [this, k] { make_cell(k); });
+  cell_scatter(k);
   return scatter_band_[k];
 }
 

@@ -22,6 +22,7 @@
 // narrow field reads a few), interpolated bilinearly.
 #pragma once
 #include <Eigen/Core>
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -96,7 +97,8 @@ class SkyView {
   Vec3 sun_;                                  // sphere space
   std::vector<double> sun_irradiance_;
   radiometry::SpectralView view_;
-  std::unique_ptr<std::once_flag[]> made_;
+  std::unique_ptr<std::atomic<bool>[]> made_;  // per cell: its scatter is ready
+  mutable std::mutex making_;
   mutable std::vector<std::vector<double>> scatter_;  // [node * azimuths + azimuth][interval]
   mutable std::vector<double> scatter_band_;
   std::vector<double> sky_band_;              // per node, what does not depend on the Sun

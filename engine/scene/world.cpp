@@ -359,7 +359,7 @@ const std::vector<WorldObject::AreaSourcePatch>& WorldObject::area_source(std::s
 
 void WorldObject::spectral_radiance_into(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
                                          const Vec3& toward, bool sun_only, std::vector<double>& out,
-                                         std::vector<double>& E) const {
+                                         std::vector<double>& E, bool skip_negligible_emission) const {
   out.assign(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
   const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
   if (surface->reflects(point)) {
@@ -367,6 +367,9 @@ void WorldObject::spectral_radiance_into(std::int32_t part, const Vec3& point_bo
     const SurfaceSpectrum& s = *point.spectrum;
     add_reflected_irradiance(to_frame(point_body_m), placed.body_to_frame * normal_body, toward, s.brdf(), sun_only, E);
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = E[i] * s.srf()[i];
+    // (as effective_radiance leaves out what cannot reach kNegligible of the reflected light)
+    if (skip_negligible_emission && world_->view.spectral.integrate(out) > surface->emission_bound() / kNegligible)
+      return;
   }
   surface->add_emission(point, out);
 }
@@ -384,7 +387,7 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
   if (under_atmosphere_) {  // eq. 9 interval by interval: the path changes with the point
     thread_local std::vector<double> L, E;  // per-sample scratch (eq. 8 sources below allocate their own)
     const Vec3 d = to_frame(point_body_m).normalized();
-    spectral_radiance_into(part, point_body_m, normal_body, -d, false, L, E);
+    spectral_radiance_into(part, point_body_m, normal_body, -d, false, L, E, true);
     to_sensor(L, point_body_m, normal_body, false);
     return world_->view.spectral.integrate(L) + world_->atmosphere.scatter_band(d);
   }
@@ -421,7 +424,7 @@ double WorldObject::patch_radiance(std::int32_t patch) const {
 
 void WorldObject::shading_point(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
                                 Vec3& shade_point_body, Vec3& normal_body) const {
-  if (world_->view.fidelity.scene_mode != SceneMode::coarse) {
+  if (world_->view.fidelity.scene_mode != SceneMode::coarse || under_atmosphere_) {
     shade_point_body = point_body_m;
     normal_body = hit_normal_body;
     return;
@@ -434,7 +437,9 @@ void WorldObject::shading_point(std::int32_t part, const Vec3& point_body_m, con
 
 double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body) const {
   if (plain()) return plain_radiance(part);
-  if (world_->view.fidelity.scene_mode != SceneMode::coarse)
+  // (under its atmosphere the Earth is shaded at each sample in coarse mode
+  // too: eq. 9's path is the sample's line of sight, not the patch centre's)
+  if (world_->view.fidelity.scene_mode != SceneMode::coarse || under_atmosphere_)
     return effective_radiance(part, point_body_m, hit_normal_body, true);
   return patch_radiance(geometry::patch_at_facing(tessellation(), placed.parts, part, point_body_m, hit_normal_body));
 }

@@ -305,8 +305,11 @@ class WorldObject {
   void to_sensor(std::vector<double>& spectrum, const Vec3& point_body_m, const Vec3& normal_body,
                  bool spectral_scatter) const;
   // spectral_radiance into caller buffers (E: the reflected irradiance's scratch).
+  // skip_negligible_emission: leave out self-emission below kNegligible of
+  // the reflected light (a sample's band value; a spectrum for picks keeps it).
   void spectral_radiance_into(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body, const Vec3& toward,
-                              bool sun_only, std::vector<double>& out, std::vector<double>& E) const;
+                              bool sun_only, std::vector<double>& out, std::vector<double>& E,
+                              bool skip_negligible_emission = false) const;
   // Eq. 8 sums of source `light` as seen from this object's centre.
   const std::vector<AreaSourcePatch>& area_source(std::size_t light) const;
   // Adds sum_i E_i (I_i . N) BRDF(I_i, N, O) at a point (eq. 4's bracket).

@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <map>
 #include <memory>
 #include <string>
@@ -207,7 +208,9 @@ void BM_FrameSunlight(benchmark::State& state) {
 // The atmosphere's cost: the same 256^2 frame with the Earth's atmosphere
 // off and on, rendered alternately in one run (each engine's tables made
 // before timing: per atmosphere and band, not per frame), reported as the
-// ratio of their median frame times, atmosphere_ratio. args: case 0 the GEO
+// ratio of their median frame times, atmosphere_ratio, and of their median
+// process CPU times (both threads' work: steadier on a shared machine),
+// atmosphere_cpu_ratio. args: case 0 the GEO
 // full disc in the visible (0.45-0.75 um, bitmap mode, by day), 1 the same
 // in 8-12 um (smooth mode), 2 a ground telescope by day (visible, 30 deg
 // elevation), 3 the same at night.
@@ -229,11 +232,21 @@ void BM_FrameAtmosphere(benchmark::State& state) {
     engines[k]->render("Sensor");
     engines[k]->render("Sensor");
   }
-  std::vector<double> ms[2];
+  std::vector<double> ms[2], cpu_ms[2], setup_ms[2], casting_ms[2], rest_ms[2];
+  const auto cpu_now_ms = [] {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+  };
   for (auto _ : state)
     for (int k = 0; k < 2; ++k) {
       const auto a = std::chrono::steady_clock::now();
+      const double c = cpu_now_ms();
       const eoir::Frame& f = engines[k]->render("Sensor");
+      cpu_ms[k].push_back(cpu_now_ms() - c);
+      setup_ms[k].push_back(1e3 * f.timings.setup_s);
+      casting_ms[k].push_back(1e3 * f.timings.ray_casting_s);
+      rest_ms[k].push_back(1e3 * (f.timings.total_s() - f.timings.setup_s - f.timings.ray_casting_s));
       ms[k].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count());
       benchmark::DoNotOptimize(f.sensor.electrons.data());
     }
@@ -244,6 +257,16 @@ void BM_FrameAtmosphere(benchmark::State& state) {
   state.counters["vacuum_ms"] = median(ms[0]);
   state.counters["atmosphere_ms"] = median(ms[1]);
   state.counters["atmosphere_ratio"] = median(ms[1]) / median(ms[0]);
+  state.counters["vacuum_cpu_ms"] = median(cpu_ms[0]);
+  state.counters["atmosphere_cpu_ms"] = median(cpu_ms[1]);
+  state.counters["atmosphere_cpu_ratio"] = median(cpu_ms[1]) / median(cpu_ms[0]);
+  // Where the difference goes: the world (setup), the samples, the rest.
+  for (int k = 0; k < 2; ++k) {
+    const std::string which_engine = k == 0 ? "vacuum" : "atmosphere";
+    state.counters[which_engine + "_setup_ms"] = median(setup_ms[k]);
+    state.counters[which_engine + "_casting_ms"] = median(casting_ms[k]);
+    state.counters[which_engine + "_rest_ms"] = median(rest_ms[k]);
+  }
 }
 
 // Every stage at 1 and at 2 threads (issue 10: each stage over 5 % of a

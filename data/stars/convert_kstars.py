@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Convert KStars' text star catalogue (Debian kstars-data, stars.dat) into the
-engine's binary star catalogue (format described in data/stars/README.md).
+"""Parse KStars' text star catalogue (Debian kstars-data, stars.dat) for
+build_catalogue.py, which writes the engine's binary star catalogue (format
+described in data/stars/README.md).
 
 stars.dat is fixed-column text, one star per line, sorted by V; its columns
 (KStars data/tools/hipdatatomysql.pl, kstars_unpack) are
@@ -17,23 +18,11 @@ stars.dat is fixed-column text, one star per line, sorted by V; its columns
   60-71 optional variability range and period
   72-   optional ", genitive name, common name"
 
-Usage: convert_kstars.py INPUT OUTPUT [--package-version V]
-Only the Python standard library is used.
+Only the Python standard library is used (parse() below).
 """
-import argparse
-import hashlib
 import math
 import re
-import struct
-import subprocess
 import sys
-
-MAGIC = b"EOIRSTAR"
-FORMAT_VERSION = 1
-RECORD = struct.Struct("<ddfffff2sBBII")  # 48 bytes, see README.md
-FIXED_HEADER = struct.Struct("<8sIIIIdddII")  # 60 bytes
-NO_NAME = 0xFFFFFFFF
-EPOCH_JULIAN_YEAR = 2000.0
 
 LINE = re.compile(r"^(\d{6}\.\d\d) ([+-]\d{6}\.\d) ([+-]\d{6}\.\d)([+-]\d{6}\.\d)(\d{5}\.\d) "
                   r"([\d -]\d\.\d\d)([\d -]\d\.\d\d)(..) (\d)")
@@ -43,15 +32,6 @@ def sexagesimal(text):
     sign = -1.0 if text.startswith("-") else 1.0
     digits = text.lstrip("+-")
     return sign * (int(digits[0:2]) + int(digits[2:4]) / 60.0 + float(digits[4:]) / 3600.0)
-
-
-def package_version(package):
-    try:
-        out = subprocess.run(["dpkg-query", "-W", "-f=${Version}", package], check=True,
-                             capture_output=True, text=True)
-        return out.stdout.strip() or "unknown"
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
 
 
 def parse(path):
@@ -77,56 +57,3 @@ def parse(path):
                               sp=m.group(8).encode("ascii", "replace"), mult=m.group(9) == "1",
                               var=variable, names=names))
     return stars
-
-
-def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("input")
-    ap.add_argument("output")
-    ap.add_argument("--package", default="kstars-data")
-    ap.add_argument("--package-version", default=None)
-    args = ap.parse_args()
-
-    stars = parse(args.input)
-    if not stars:
-        sys.exit(f"{args.input}: no stars")
-    with open(args.input, "rb") as f:
-        digest = hashlib.sha256(f.read()).hexdigest()
-    version = args.package_version or package_version(args.package)
-    source = (f"Debian package {args.package} {version}, file {args.input} (sha256 {digest}). "
-              "KStars star catalogue derived from the Hipparcos and Tycho catalogues (ESA 1997, CDS I/239); "
-              "the modified catalogue is (C) Jason Harris 2003, GPL. Converted by data/stars/convert_kstars.py. "
-              "Positions ICRS at epoch J2000.0; proper motion mu_alpha* = mu_alpha cos(delta) and mu_delta "
-              "in mas/yr; parallax in mas; Johnson V and B-V in mag.").encode("utf-8")
-
-    names_blob = bytearray()
-    records = bytearray()
-    for s in stars:
-        offset = NO_NAME
-        if s["names"]:
-            offset = len(names_blob)
-            names_blob += s["names"].encode("utf-8") + b"\0"
-        flags = (1 if s["mult"] else 0) | (2 if s["var"] else 0)
-        records += RECORD.pack(s["ra"], s["dec"], s["pm_ra"], s["pm_dec"], s["plx"], s["v"], s["bv"],
-                               s["sp"], flags, 0, s["number"], offset)
-
-    header_bytes = FIXED_HEADER.size + len(source)
-    header_bytes = (header_bytes + 7) // 8 * 8
-    header = FIXED_HEADER.pack(MAGIC, FORMAT_VERSION, header_bytes, len(stars), RECORD.size, EPOCH_JULIAN_YEAR,
-                               min(s["v"] for s in stars), max(s["v"] for s in stars), len(source),
-                               len(names_blob))
-    header += source
-    header += b"\0" * (header_bytes - len(header))
-    tmp = args.output + ".tmp"
-    with open(tmp, "wb") as f:
-        f.write(header)
-        f.write(records)
-        f.write(names_blob)
-    import os
-    os.replace(tmp, args.output)
-    print(f"{args.output}: {len(stars)} stars, V {min(s['v'] for s in stars):.2f} .. "
-          f"{max(s['v'] for s in stars):.2f}")
-
-
-if __name__ == "__main__":
-    main()

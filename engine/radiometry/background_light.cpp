@@ -152,4 +152,9 @@ std::vector<double> BackgroundLight::interval_mean_irradiances(const SpectralBan
   return out;
 }
 
+double diffuse_starlight_S10V(double imaged_v0_stars) {
+  require_non_negative(imaged_v0_stars, "background.imaged_v0_stars");
+  return std::max(0.0, kAllSkyStarlightV0Stars - imaged_v0_stars) * 1.0e4 / kSkyArea_deg2;
+}
+
 }  // namespace eoir::radiometry

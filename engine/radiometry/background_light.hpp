@@ -15,10 +15,10 @@
 // Spec 4.1.4 leaves "the galaxy" (the sky sphere) out of the basement because
 // a galactic image was to be painted there; without such an image the sky's
 // own diffuse brightness is the radiance a sensor sees against empty sky, and
-// E_bkg / pi is by construction that brightness, so the engine uses it
-// (stars brighter than the catalogue limit are drawn separately as points;
-// their share of the integrated starlight, ~40 S10 of ~109 S10, is then
-// counted twice in sky pixels: a known, documented approximation).
+// E_bkg / pi is by construction that brightness, so the engine uses it.
+// Stars drawn as points are not counted twice: with a star field the
+// integrated starlight is the whole sky's less the catalogue's stars to the
+// field's limit (diffuse_starlight_S10V; issue 21).
 //
 // Scale factors (all radiances as published, W m^-2 sr^-1 um^-1; the engine
 // works in W cm^-2, 1 W m^-2 = 1e-4 W cm^-2):
@@ -38,7 +38,9 @@
 //    stars...": stars to V = 10.5 give 225 V = 0 stars, about half of all
 //    starlight; its V < 6.5 sum of 100 agrees with the shipped catalogue's
 //    95.8). The sky mean is what illuminates a surface of any orientation;
-//    Leinert's integrated-starlight tables were not available to us.
+//    Leinert's integrated-starlight tables were not available to us. The
+//    converted catalogue's own sum to V = 10.5 is 219.8 V = 0 stars
+//    (tests/sky/background_light_test.cpp checks it against the 225).
 //  - airglow: the spec's total, split equally between the three lines (the
 //    spec gives no split); each line a boxcar of width airglow_line_width_um
 //    (a numerical width, not the physical one) so that a point sample at the
@@ -70,6 +72,15 @@ constexpr double kLeinertZodiacal90DegEclipticS10 = 202.0;
 constexpr double kLeinertZodiacalEclipticPoleS10 = 60.0;
 // 1 S10(V) as a radiance at 0.55 um [W cm^-2 sr^-1 um^-1] (see above).
 constexpr double kS10V_W_cm2_sr_um = 1.0e-4 * 3.631e-12 / 3.0461741978670859e-4;
+// All starlight of the sky as V = 0 stars (Sky & Telescope, above), and the
+// sky's area [deg^2]: 450 1e4 / 41253 = 109 S10(V).
+constexpr double kAllSkyStarlightV0Stars = 450.0;
+constexpr double kSkyArea_deg2 = 41252.96124941928;
+// The integrated starlight left diffuse when stars worth imaged_v0_stars
+// V = 0 stars (the catalogue's to the field's limit,
+// universe::StarCatalog::v0_equivalent_stars) are drawn as points [S10(V)],
+// never below 0.
+double diffuse_starlight_S10V(double imaged_v0_stars);
 constexpr double kW_m2_to_W_cm2 = 1.0e-4;
 
 struct BackgroundLightParameters {
@@ -82,7 +93,7 @@ struct BackgroundLightParameters {
   double zodiacal_temperature_K = 250.0;  // spec 4.1.4
   // Integrated starlight.
   double starlight_temperature_K = 3900.0;  // spec 4.1.4
-  double starlight_S10V = 109.0;
+  double starlight_S10V = 109.0;  // all of it: kAllSkyStarlightV0Stars 1e4 / kSkyArea_deg2
   // Airglow.
   double airglow_total_irradiance_W_cm2 = 5.1e-18;  // spec 4.1.4
   std::array<double, 3> airglow_line_um = {0.5577, 0.630, 0.589};

@@ -34,9 +34,11 @@ bool hidden(const World& w, const Vec3& direction) {
 }
 
 void build_background(World& w, const universe::StarFieldProperties& p, const universe::Library& library,
-                      const std::string& field) {
+                      const std::string& field, double imaged_v0_stars) {
   radiometry::BackgroundLightParameters parameters;
   parameters.zodiacal_scale = p.zodiacal_light_scale;
+  // Spec 4.1.4's integrated starlight less the stars imaged as points.
+  parameters.starlight_S10V = radiometry::diffuse_starlight_S10V(imaged_v0_stars);
   const TabulatedFunction& sun = library.spectra.sun().radiance_W_cm2_sr_um;
   const double sun_at_1_au_sr = universe::sun_projected_solid_angle_sr(constants::au_m);
   const TabulatedFunction& mars = library.materials.get("mars_surface", field).reflectance;
@@ -55,31 +57,35 @@ void build_sky(World& w, const universe::Object& star_field, const universe::Lib
   const universe::StarFieldProperties& p = star_field.stars;
   sky.present = true;
   sky.star_field = star_field.name;
-  if (p.background_light) build_background(w, p, library, star_field.name + ".background_light");
-
   sky.catalogue = library.star_catalog(p.catalog_file, p.catalog_epoch_year);
   const universe::StarCatalog& catalogue = *sky.catalogue;
-  const universe::StarSelection selection = catalogue.select_brighter_than(p.limiting_magnitude);
-  sky.warning = selection.warning;
-  sky.stars_considered = selection.indices.size();
+  // The stars drawn as points are the catalogue's to the limit: the
+  // background's starlight is the rest (spec 4.1.4).
+  if (p.background_light)
+    build_background(w, p, library, star_field.name + ".background_light",
+                     catalogue.v0_equivalent_stars(p.limiting_magnitude));
   const universe::ApparentPlaceContext context = universe::apparent_place_context_geocentric(
       w.time, w.observer.position_m, w.observer.velocity_m_s, catalogue.epoch_julian_year());
 
   // Cull on the catalogue positions: the cone about the boresight holding the
   // whole sample grid, widened by proper motion since the epoch and by the
-  // refraction of an observer inside the atmosphere.
+  // refraction of an observer inside the atmosphere; the catalogue's sky
+  // cells give the stars of that cone brighter than the limit.
   const geometry::SampleGrid& grid = w.grid();
   const ApparentGrid apparent(w);
   const double half_diagonal = std::atan(std::hypot(grid.tan_x(0), grid.tan_y(0)));
   const double moved = catalogue.max_proper_motion_mas_yr() * std::fabs(context.proper_motion_years) * kMasToRad;
-  const double cos_limit =
-      std::cos(std::min(constants::pi, half_diagonal + kCullMargin_rad + moved + apparent.max_refraction_rad()));
+  const double cone_rad =
+      std::min(constants::pi, half_diagonal + kCullMargin_rad + moved + apparent.max_refraction_rad());
+  const double cos_limit = std::cos(cone_rad);
   const Vec3 boresight = w.observer.body_to_j2000.col(2);
+  const universe::StarSelection selection = catalogue.select_in_cone(boresight, cone_rad, p.limiting_magnitude);
+  sky.warning = selection.warning;
+  sky.stars_considered = selection.indices.size();
   const radiometry::SpectralView& view = w.view.spectral;
-  const std::vector<Vec3>& units = catalogue.unit_vectors();
   for (const std::size_t i : selection.indices) {
-    if (units[i].dot(boresight) < cos_limit) continue;
-    const universe::CatalogStar& star = catalogue.stars()[i];
+    if (catalogue.unit_vector(i).dot(boresight) < cos_limit) continue;
+    const universe::CatalogStar star = catalogue.star(i);
     // d: the apparent place (geometric: occlusion, truth's RA/Dec); on the
     // grid where it appears, refracted from inside the atmosphere.
     const Vec3 d = universe::apparent_direction(star, context);

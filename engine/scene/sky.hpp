@@ -4,7 +4,9 @@
 // catalogue stars in the field of view at their apparent places (ERFA chain,
 // universe/star_catalog.hpp) as blackbody point sources E = m0 B(T)
 // (radiometry/stellar_photometry.hpp). Present only when the universe holds
-// a star field object; without one the sky is black.
+// a star field object; without one the sky is black. The background's
+// integrated starlight leaves out the catalogue's stars to the field's limit,
+// which are drawn as points (issue 21).
 #pragma once
 #include <Eigen/Core>
 #include <cstddef>
@@ -24,7 +26,7 @@ class World;
 // by any object.
 struct WorldStar {
   std::size_t catalogue_index = 0;
-  std::string id;          // the catalogue's id ("HT<n>" or the user's)
+  std::string id;          // the catalogue's id ("HIP<n>", "HT<n>" or the user's)
   double v_mag = 0, b_v_mag = 0;
   Eigen::Vector3d direction_j2000 = Eigen::Vector3d::UnitZ();  // apparent place, from the observer
   double column = 0, row = 0;                   // fractional sample coordinates at the frame time
@@ -40,7 +42,7 @@ struct Sky {
   double background_radiance_W_cm2_sr = 0;    // band integral of E_bkg / pi (eq. 48)
   std::shared_ptr<const universe::StarCatalog> catalogue;
   std::vector<WorldStar> stars;      // imaged, in catalogue order
-  std::size_t stars_considered = 0;  // brighter than the limit
+  std::size_t stars_considered = 0;  // brighter than the limit in the sky cells the field's cone meets
   std::string warning;               // e.g. a limit past the catalogue's faintest star
 };
 

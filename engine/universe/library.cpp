@@ -37,7 +37,7 @@ std::shared_ptr<const StarCatalog> Library::star_catalog(const std::string& csv_
   } else {
     recent.emplace_front(csv_path, std::make_shared<const StarCatalog>(
                                        csv_path.empty()
-                                           ? StarCatalog::load_binary(data_dir + "/stars/hipparcos_tycho_v9.eoirstars")
+                                           ? StarCatalog::load_binary(data_dir + "/" + kStarCatalogueFile)
                                            : StarCatalog::load_csv(csv_path, epoch_julian_year)));
     if (recent.size() > kCachedStarCatalogues) recent.pop_back();
   }

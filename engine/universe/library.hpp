@@ -21,6 +21,9 @@
 
 namespace eoir::universe {
 
+// The converted Hipparcos/Tycho-2 catalogue in the data folder (data/stars/).
+constexpr const char* kStarCatalogueFile = "stars/hipparcos_tycho2_v10p5.eoirstars";
+
 struct Library {
   std::string data_dir;
   MaterialLibrary materials;
@@ -36,7 +39,7 @@ struct Library {
 
   // A star catalogue, read on first use and kept (thread-safe; shared by the
   // copies of this library): csv_path "" is the data folder's
-  // stars/hipparcos_tycho_v9.eoirstars, else a user CSV whose positions are
+  // kStarCatalogueFile, else a user CSV whose positions are
   // at epoch_julian_year. Throws io / corrupt_file naming the file and line.
   // One copy of each file's stars serves every epoch; the
   // kCachedStarCatalogues files used last are kept (a catalogue in use stays

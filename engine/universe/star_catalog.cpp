@@ -12,6 +12,7 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "core/mapped_file.hpp"
 #include "core/read_file.hpp"
 #include "core/utf8.hpp"
 
@@ -28,16 +29,21 @@ constexpr double kSecondsPerDay = constants::seconds_per_day;
 constexpr double kJ2000_jd = 2451545.0;
 constexpr double kDaysPerJulianYear = 365.25;
 
-// Binary layout (data/stars/README.md), little-endian.
+// Binary layout v2 (data/stars/README.md), little-endian.
 constexpr char kMagic[8] = {'E', 'O', 'I', 'R', 'S', 'T', 'A', 'R'};
-constexpr std::uint32_t kFormatVersion = 1;
-constexpr std::size_t kFixedHeaderBytes = 56;
+constexpr std::uint32_t kFormatVersion = 2;
+constexpr std::size_t kFixedHeaderBytes = 84;
 constexpr std::size_t kRecordBytes = 48;
 constexpr std::uint32_t kNoName = 0xFFFFFFFFu;
-// Largest catalogue file read (binary or CSV): 256 MiB, three million stars
-// in CSV; the Hipparcos/Tycho file is 6 MB. /dev/zero is refused, not read
-// forever.
+constexpr std::uint32_t kFlagHipparcos = 4;
+// Integrated-starlight table of the binary file: V = 0 equivalent stars with
+// V <= kFluxFirstMag + k kFluxStepMag.
+constexpr double kFluxFirstMag = -2.0;
+constexpr double kFluxStepMag = 0.1;
+// Largest CSV catalogue read: 256 MiB, three million stars; /dev/zero is
+// refused, not read forever. The binary file (28 MB) is mapped, up to 2 GiB.
 constexpr std::size_t kMaxFileBytes = std::size_t{256} << 20;
+constexpr std::size_t kMaxMappedBytes = std::size_t{2} << 30;
 
 template <typename T>
 T read_le(const char* p) {
@@ -99,27 +105,53 @@ ApparentPlaceContext context_from_astrom(const eraASTROM& astrom, const EngineTi
 
 }  // namespace
 
-void StarCatalog::Stars::finish() {
-  brightest_v_mag = faintest_v_mag = 0.0;
-  if (!stars.empty()) {
-    const auto [lo, hi] = std::minmax_element(stars.begin(), stars.end(), [](const CatalogStar& a,
-                                                                           const CatalogStar& b) {
-      return a.v_mag < b.v_mag;
-    });
-    brightest_v_mag = lo->v_mag;
-    faintest_v_mag = hi->v_mag;
+
+// What a catalogue holds, shared by its copies at other epochs.
+struct StarCatalog::Data {
+  std::string source;
+  double brightest_v_mag = 0.0, faintest_v_mag = 0.0, max_proper_motion_mas_yr = 0.0;
+  std::size_t count = 0;
+  // CSV: the stars in file order and, per cell, their indices by V.
+  std::vector<CatalogStar> stars;
+  std::vector<std::uint32_t> by_cell;
+  std::vector<std::uint32_t> cell_start_owned;
+  std::vector<double> sorted_v, cumulative_v0;  // for v0_equivalent_stars
+  // Binary: the mapped file; records in cell order (index = record).
+  std::shared_ptr<const MappedFile> file;
+  const char* records = nullptr;
+  const char* names = nullptr;
+  std::uint32_t names_bytes = 0;
+  std::vector<double> flux_table;  // binary: V = 0 equivalent stars at kFluxFirstMag + k kFluxStepMag
+  const std::uint32_t* cell_start = nullptr;  // cells + 1 entries (owned or mapped)
+  SkyCells cells;
+
+  std::size_t slot_star(std::size_t slot) const { return by_cell.empty() ? slot : by_cell[slot]; }
+  double v_at(std::size_t i) const {
+    return records ? static_cast<double>(read_le<float>(records + i * kRecordBytes + 28)) : stars[i].v_mag;
   }
-  sorted_by_v = std::is_sorted(stars.begin(), stars.end(),
-                               [](const CatalogStar& a, const CatalogStar& b) { return a.v_mag < b.v_mag; });
-  unit_vectors.resize(stars.size());
-  max_proper_motion_mas_yr = 0.0;
-  for (std::size_t i = 0; i < stars.size(); ++i) {
-    const CatalogStar& s = stars[i];
-    unit_vectors[i] = Vec3(std::cos(s.dec_rad) * std::cos(s.ra_rad), std::cos(s.dec_rad) * std::sin(s.ra_rad),
-                           std::sin(s.dec_rad));
-    max_proper_motion_mas_yr =
-        std::max(max_proper_motion_mas_yr, std::hypot(s.pm_ra_cosdec_mas_per_yr, s.pm_dec_mas_per_yr));
+};
+
+namespace {
+constexpr double kFullCircle = 2.0 * constants::pi;
+}  // namespace
+
+SkyCells::SkyCells() : band_first(bands + 1, 0) {
+  for (int b = 0; b < bands; ++b) {
+    const double mid = (-90.0 + band_deg * (b + 0.5)) * constants::rad_per_deg;
+    // (the converter's numpy.rint: round half to even, as nearbyint)
+    const auto n = std::max(1.0, std::nearbyint(360.0 * std::cos(mid)));
+    band_first[static_cast<std::size_t>(b) + 1] = band_first[static_cast<std::size_t>(b)] + static_cast<std::uint32_t>(n);
   }
+}
+
+std::uint32_t SkyCells::cell_of(double ra_rad, double dec_rad) const {
+  const int band = std::clamp(static_cast<int>(std::floor((dec_rad / constants::rad_per_deg + 90.0) / band_deg)), 0,
+                              bands - 1);
+  const std::uint32_t n = cells_in_band(band);
+  double ra = std::fmod(ra_rad, kFullCircle);
+  if (ra < 0) ra += kFullCircle;
+  const auto k = std::min(static_cast<std::uint32_t>(std::floor(ra / kFullCircle * n)), n - 1);
+  return band_first[static_cast<std::size_t>(band)] + k;
 }
 
 StarCatalog StarCatalog::at_epoch(double epoch_julian_year) const {
@@ -127,12 +159,63 @@ StarCatalog StarCatalog::at_epoch(double epoch_julian_year) const {
   return StarCatalog(data_, epoch_julian_year);
 }
 
-StarCatalog StarCatalog::load_binary(const std::string& path) {
-  const std::string bytes = read_file(path, kMaxFileBytes, "star catalogues");
-  const std::size_t file_bytes = bytes.size();
+std::size_t StarCatalog::size() const { return data_->count; }
+const std::string& StarCatalog::source() const { return data_->source; }
+double StarCatalog::brightest_v_mag() const { return data_->brightest_v_mag; }
+double StarCatalog::faintest_v_mag() const { return data_->faintest_v_mag; }
+double StarCatalog::max_proper_motion_mas_yr() const { return data_->max_proper_motion_mas_yr; }
+double StarCatalog::v_mag(std::size_t i) const { return data_->v_at(i); }
 
-  if (file_bytes < kFixedHeaderBytes) corrupt(path, "header: file shorter than the 56-byte header");
-  const char* p = bytes.data();
+Vec3 StarCatalog::unit_vector(std::size_t i) const {
+  double ra = 0, dec = 0;
+  if (data_->records) {
+    const char* r = data_->records + i * kRecordBytes;
+    ra = read_le<double>(r);
+    dec = read_le<double>(r + 8);
+  } else {
+    ra = data_->stars[i].ra_rad;
+    dec = data_->stars[i].dec_rad;
+  }
+  return Vec3(std::cos(dec) * std::cos(ra), std::cos(dec) * std::sin(ra), std::sin(dec));
+}
+
+CatalogStar StarCatalog::star(std::size_t i) const {
+  const Data& d = *data_;
+  if (i >= d.count) throw Error(Status::out_of_range, "star index: " + std::to_string(i) + " beyond the catalogue");
+  if (!d.records) return d.stars[i];
+  const std::string& path = d.file->path();
+  const char* r = d.records + i * kRecordBytes;
+  CatalogStar s;
+  s.ra_rad = read_le<double>(r + 0);
+  s.dec_rad = read_le<double>(r + 8);
+  s.pm_ra_cosdec_mas_per_yr = read_le<float>(r + 16);
+  s.pm_dec_mas_per_yr = read_le<float>(r + 20);
+  s.parallax_mas = read_le<float>(r + 24);
+  s.v_mag = read_le<float>(r + 28);
+  s.b_v_mag = read_le<float>(r + 32);
+  const auto flags = static_cast<std::uint8_t>(r[38]);
+  const auto number = read_le<std::uint32_t>(r + 40);
+  const auto name_offset = read_le<std::uint32_t>(r + 44);
+  s.id = ((flags & kFlagHipparcos) ? "HIP" : "HT") + std::to_string(number);
+  if (name_offset != kNoName) {
+    if (name_offset >= d.names_bytes) corrupt(path, "record " + std::to_string(i) + ": name_offset out of range");
+    const char* start = d.names + name_offset;
+    const void* end = std::memchr(start, '\0', d.names_bytes - name_offset);
+    if (end == nullptr) corrupt(path, "record " + std::to_string(i) + ": name not terminated");
+    s.name.assign(start, static_cast<const char*>(end));
+  }
+  if (!std::isfinite(s.ra_rad) || !std::isfinite(s.dec_rad) || !std::isfinite(s.v_mag) || !std::isfinite(s.b_v_mag) ||
+      !std::isfinite(s.parallax_mas) || !std::isfinite(s.pm_ra_cosdec_mas_per_yr) ||
+      !std::isfinite(s.pm_dec_mas_per_yr))
+    corrupt(path, "record " + std::to_string(i) + ": non-finite value");
+  return s;
+}
+
+StarCatalog StarCatalog::load_binary(const std::string& path) {
+  auto file = MappedFile::open(path, kMaxMappedBytes, "star catalogues");
+  const std::size_t file_bytes = file->size();
+  const char* p = file->data();
+  if (file_bytes < kFixedHeaderBytes) corrupt(path, "header: file shorter than the 84-byte header");
   if (std::memcmp(p, kMagic, sizeof kMagic) != 0) corrupt(path, "magic: not an EOIRSTAR file");
   const auto version = read_le<std::uint32_t>(p + 8);
   if (version != kFormatVersion)
@@ -142,60 +225,95 @@ StarCatalog StarCatalog::load_binary(const std::string& path) {
   const auto count = read_le<std::uint32_t>(p + 16);
   const auto record_bytes = read_le<std::uint32_t>(p + 20);
   const auto epoch = read_le<double>(p + 24);
+  const auto brightest = read_le<double>(p + 32);
+  const auto faintest = read_le<double>(p + 40);
   const auto source_bytes = read_le<std::uint32_t>(p + 48);
   const auto names_bytes = read_le<std::uint32_t>(p + 52);
+  const auto cell_count = read_le<std::uint32_t>(p + 56);
+  const auto flux_steps = read_le<std::uint32_t>(p + 60);
+  const auto band_deg = read_le<double>(p + 64);
+  const auto max_pm = read_le<double>(p + 72);
+  const auto tables_bytes = read_le<std::uint32_t>(p + 80);
   if (record_bytes != kRecordBytes) corrupt(path, "record_bytes: " + std::to_string(record_bytes) + " (expected 48)");
-  if (header_bytes < kFixedHeaderBytes + source_bytes || header_bytes > file_bytes)
+  if (header_bytes < kFixedHeaderBytes + source_bytes || header_bytes > file_bytes || header_bytes % 8 != 0)
     corrupt(path, "header_bytes: inconsistent with source_text_bytes or the file size");
   if (!std::isfinite(epoch)) corrupt(path, "epoch_julian_year: not finite");
-  const std::size_t needed = std::size_t{header_bytes} + std::size_t{count} * kRecordBytes + names_bytes;
+  if (!std::isfinite(brightest) || !std::isfinite(faintest) || brightest > faintest)
+    corrupt(path, "brightest_v_mag, faintest_v_mag: not finite or out of order");
+  if (!(max_pm >= 0.0) || !std::isfinite(max_pm)) corrupt(path, "max_proper_motion: not finite and >= 0");
+  Data d;
+  if (band_deg != SkyCells::band_deg || cell_count != d.cells.count())
+    corrupt(path, "cell_count: " + std::to_string(cell_count) + " cells of " + std::to_string(band_deg) +
+                      " deg bands (expected " + std::to_string(d.cells.count()) + " of 1 deg)");
+  const std::size_t table_needed = (std::size_t{cell_count} + 1) * 4 + std::size_t{flux_steps} * 8;
+  if (tables_bytes < table_needed || tables_bytes % 8 != 0 || tables_bytes - table_needed >= 8)
+    corrupt(path, "tables_bytes: " + std::to_string(tables_bytes) + " for " + std::to_string(cell_count) +
+                      " cells and " + std::to_string(flux_steps) + " flux steps");
+  const std::size_t needed =
+      std::size_t{header_bytes} + tables_bytes + std::size_t{count} * kRecordBytes + names_bytes;
   if (needed != file_bytes)
     corrupt(path, "star_count: " + std::to_string(count) + " records and " + std::to_string(names_bytes) +
                       " name bytes need " + std::to_string(needed) + " bytes, the file has " +
                       std::to_string(file_bytes));
-
-  Stars catalogue;
-  catalogue.source.assign(p + kFixedHeaderBytes, source_bytes);
-  const char* names = p + header_bytes + std::size_t{count} * kRecordBytes;
-  catalogue.stars.resize(count);
-  char id[16] = {'H', 'T'};
-  for (std::uint32_t i = 0; i < count; ++i) {
-    const char* r = p + header_bytes + std::size_t{i} * kRecordBytes;
-    CatalogStar& s = catalogue.stars[i];
-    s.ra_rad = read_le<double>(r + 0);
-    s.dec_rad = read_le<double>(r + 8);
-    s.pm_ra_cosdec_mas_per_yr = read_le<float>(r + 16);
-    s.pm_dec_mas_per_yr = read_le<float>(r + 20);
-    s.parallax_mas = read_le<float>(r + 24);
-    s.v_mag = read_le<float>(r + 28);
-    s.b_v_mag = read_le<float>(r + 32);
-    const auto number = read_le<std::uint32_t>(r + 40);
-    const auto name_offset = read_le<std::uint32_t>(r + 44);
-    // Integer to text without allocation beyond the small-string buffer.
-    int n = 0;
-    char digits[12];
-    std::uint32_t v = number;
-    do {
-      digits[n++] = static_cast<char>('0' + v % 10);
-      v /= 10;
-    } while (v != 0);
-    for (int k = 0; k < n; ++k) id[2 + k] = digits[n - 1 - k];
-    s.id.assign(id, static_cast<std::size_t>(2 + n));
-    if (name_offset != kNoName) {
-      if (name_offset >= names_bytes) corrupt(path, "record " + std::to_string(i) + ": name_offset out of range");
-      const char* start = names + name_offset;
-      const void* end = std::memchr(start, '\0', names_bytes - name_offset);
-      if (end == nullptr) corrupt(path, "record " + std::to_string(i) + ": name not terminated");
-      s.name.assign(start, static_cast<const char*>(end));
-    }
-    if (!std::isfinite(s.ra_rad) || !std::isfinite(s.dec_rad) || !std::isfinite(s.v_mag) ||
-        !std::isfinite(s.b_v_mag) || !std::isfinite(s.parallax_mas) || !std::isfinite(s.pm_ra_cosdec_mas_per_yr) ||
-        !std::isfinite(s.pm_dec_mas_per_yr))
-      corrupt(path, "record " + std::to_string(i) + ": non-finite value");
-  }
-  catalogue.finish();
-  return StarCatalog(std::make_shared<const Stars>(std::move(catalogue)), epoch);
+  // The cell table: starts rise from 0 to the star count (so that no query
+  // reads past the records).
+  const char* tables = p + header_bytes;
+  d.cell_start = reinterpret_cast<const std::uint32_t*>(tables);  // 8-byte aligned in the mapping
+  if (d.cell_start[0] != 0 || d.cell_start[cell_count] != count)
+    corrupt(path, "cell_start: must run from 0 to star_count");
+  for (std::uint32_t c = 0; c < cell_count; ++c)
+    if (d.cell_start[c + 1] < d.cell_start[c]) corrupt(path, "cell_start[" + std::to_string(c + 1) + "]: decreases");
+  d.flux_table.resize(flux_steps);
+  std::memcpy(d.flux_table.data(), tables + (std::size_t{cell_count} + 1) * 4, std::size_t{flux_steps} * 8);
+  for (std::uint32_t k = 0; k < flux_steps; ++k)
+    if (!std::isfinite(d.flux_table[k]) || d.flux_table[k] < (k ? d.flux_table[k - 1] : 0.0))
+      corrupt(path, "flux_table[" + std::to_string(k) + "]: not finite or decreasing");
+  d.source.assign(p + kFixedHeaderBytes, source_bytes);
+  d.count = count;
+  d.brightest_v_mag = brightest;
+  d.faintest_v_mag = faintest;
+  d.max_proper_motion_mas_yr = max_pm;
+  d.records = tables + tables_bytes;
+  d.names = d.records + std::size_t{count} * kRecordBytes;
+  d.names_bytes = names_bytes;
+  d.file = std::move(file);
+  return StarCatalog(std::make_shared<const Data>(std::move(d)), epoch);
 }
+
+namespace {
+
+// The CSV catalogue's summaries and cell index (the binary file has them).
+void index_stars(const std::vector<CatalogStar>& stars, const SkyCells& cells, std::vector<std::uint32_t>& by_cell,
+                 std::vector<std::uint32_t>& cell_start, std::vector<double>& sorted_v, std::vector<double>& cumulative,
+                 double& brightest, double& faintest, double& max_pm) {
+  brightest = faintest = max_pm = 0.0;
+  std::vector<std::uint32_t> cell_of(stars.size());
+  sorted_v.resize(stars.size());
+  for (std::size_t i = 0; i < stars.size(); ++i) {
+    const CatalogStar& s = stars[i];
+    cell_of[i] = cells.cell_of(s.ra_rad, s.dec_rad);
+    sorted_v[i] = s.v_mag;
+    max_pm = std::max(max_pm, std::hypot(s.pm_ra_cosdec_mas_per_yr, s.pm_dec_mas_per_yr));
+  }
+  by_cell.resize(stars.size());
+  for (std::size_t i = 0; i < by_cell.size(); ++i) by_cell[i] = static_cast<std::uint32_t>(i);
+  std::stable_sort(by_cell.begin(), by_cell.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return cell_of[a] != cell_of[b] ? cell_of[a] < cell_of[b] : stars[a].v_mag < stars[b].v_mag;
+  });
+  cell_start.assign(cells.count() + 1, 0);
+  for (const std::uint32_t i : by_cell) ++cell_start[cell_of[i] + 1];
+  for (std::size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
+  std::sort(sorted_v.begin(), sorted_v.end());
+  cumulative.resize(sorted_v.size() + 1);
+  cumulative[0] = 0.0;
+  for (std::size_t i = 0; i < sorted_v.size(); ++i) cumulative[i + 1] = cumulative[i] + std::pow(10.0, -0.4 * sorted_v[i]);
+  if (!sorted_v.empty()) {
+    brightest = sorted_v.front();
+    faintest = sorted_v.back();
+  }
+}
+
+}  // namespace
 
 StarCatalog StarCatalog::load_csv(const std::string& path, double epoch_julian_year) {
   require_finite(epoch_julian_year, "star_catalogue.epoch_julian_year");
@@ -213,7 +331,7 @@ StarCatalog StarCatalog::load_csv(const std::string& path, double epoch_julian_y
     const std::string_view content = trim(line);
     data_lines += !content.empty() && content[0] != '#';
   });
-  Stars catalogue;
+  Data catalogue;
   catalogue.source = path;
   catalogue.stars.reserve(std::min(data_lines > 0 ? data_lines - 1 : 0, kMaxCsvStars));
   std::vector<std::uint32_t> line_of_star;
@@ -317,34 +435,82 @@ StarCatalog StarCatalog::load_csv(const std::string& path, double epoch_julian_y
     throw Error(Status::corrupt_file, path + ":" + std::to_string(line_of_star[repeat]) + ": id: '" +
                                           shown(stars[repeat].id) + "' duplicates line " +
                                           std::to_string(line_of_star[first]));
-  catalogue.finish();
-  return StarCatalog(std::make_shared<const Stars>(std::move(catalogue)), epoch_julian_year);
+  catalogue.count = catalogue.stars.size();
+  index_stars(catalogue.stars, catalogue.cells, catalogue.by_cell, catalogue.cell_start_owned, catalogue.sorted_v,
+              catalogue.cumulative_v0, catalogue.brightest_v_mag, catalogue.faintest_v_mag,
+              catalogue.max_proper_motion_mas_yr);
+  catalogue.cell_start = catalogue.cell_start_owned.data();
+  auto data = std::make_shared<Data>(std::move(catalogue));
+  data->cell_start = data->cell_start_owned.data();  // (the vector moved: point at its new home)
+  return StarCatalog(std::move(data), epoch_julian_year);
 }
+
+namespace {
+
+void warn_past_catalogue(const StarCatalog& c, StarSelection& selection) {
+  // Magnitudes are given to 0.01 mag: a limit within kCatalogueCutTolerance
+  // of the faintest star is the catalogue's own cut (V <= 10.5 for
+  // Hipparcos/Tycho-2).
+  if (c.size() == 0 || selection.limiting_v_mag > c.faintest_v_mag() + kCatalogueCutTolerance_mag) {
+    selection.limit_beyond_catalogue = true;
+    std::ostringstream msg;
+    msg << "limiting_v_mag: " << selection.limiting_v_mag
+        << " is fainter than the faintest star of the catalogue (V = " << c.faintest_v_mag()
+        << "); stars between the two are missing from the scene";
+    selection.warning = msg.str();
+  }
+}
+
+}  // namespace
 
 StarSelection StarCatalog::select_brighter_than(double limiting_v_mag) const {
   if (std::isnan(limiting_v_mag)) throw Error(Status::out_of_range, "limiting_v_mag: NaN");
   StarSelection selection;
   selection.limiting_v_mag = limiting_v_mag;
-  const std::vector<CatalogStar>& stars = data_->stars;
-  if (data_->sorted_by_v) {
-    const auto end = std::upper_bound(stars.begin(), stars.end(), limiting_v_mag,
-                                      [](double v, const CatalogStar& s) { return v < s.v_mag; });
-    selection.indices.resize(static_cast<std::size_t>(end - stars.begin()));
-    for (std::size_t i = 0; i < selection.indices.size(); ++i) selection.indices[i] = i;
-  } else {
-    for (std::size_t i = 0; i < stars.size(); ++i)
-      if (stars[i].v_mag <= limiting_v_mag) selection.indices.push_back(i);
-  }
-  // Magnitudes are given to 0.01 mag: a limit within kCatalogueCutTolerance
-  // of the faintest star is the catalogue's own cut (V <= 9 for Hipparcos/Tycho).
-  if (stars.empty() || limiting_v_mag > faintest_v_mag() + kCatalogueCutTolerance_mag) {
-    selection.limit_beyond_catalogue = true;
-    std::ostringstream msg;
-    msg << "limiting_v_mag: " << limiting_v_mag << " is fainter than the faintest star of the catalogue (V = "
-        << faintest_v_mag() << "); stars between the two are missing from the scene";
-    selection.warning = msg.str();
-  }
+  const Data& d = *data_;
+  for (std::uint32_t c = 0; c < d.cells.count(); ++c)
+    for (std::uint32_t slot = d.cell_start[c]; slot < d.cell_start[c + 1]; ++slot) {
+      const std::size_t i = d.slot_star(slot);
+      if (d.v_at(i) > limiting_v_mag) break;  // (V order within a cell)
+      selection.indices.push_back(i);
+    }
+  warn_past_catalogue(*this, selection);
   return selection;
+}
+
+StarSelection StarCatalog::select_in_cone(const Vec3& axis, double radius_rad, double limiting_v_mag) const {
+  if (std::isnan(limiting_v_mag)) throw Error(Status::out_of_range, "limiting_v_mag: NaN");
+  if (!(radius_rad >= 0.0 && radius_rad <= constants::pi))
+    throw Error(Status::out_of_range, "star query: radius_rad must be in [0, pi]");
+  if (!axis.allFinite() || !(axis.norm() > 0.0)) throw Error(Status::out_of_range, "star query: axis not a direction");
+  StarSelection selection;
+  selection.limiting_v_mag = limiting_v_mag;
+  const Data& d = *data_;
+  d.cells.for_each_cell_in_cone(axis.normalized(), radius_rad, [&](std::uint32_t c) {
+    for (std::uint32_t slot = d.cell_start[c]; slot < d.cell_start[c + 1]; ++slot) {
+      const std::size_t i = d.slot_star(slot);
+      if (d.v_at(i) > limiting_v_mag) break;
+      selection.indices.push_back(i);
+    }
+  });
+  warn_past_catalogue(*this, selection);
+  return selection;
+}
+
+double StarCatalog::v0_equivalent_stars(double limiting_v_mag) const {
+  if (std::isnan(limiting_v_mag)) throw Error(Status::out_of_range, "limiting_v_mag: NaN");
+  const Data& d = *data_;
+  if (!d.records) {
+    const auto n = std::upper_bound(d.sorted_v.begin(), d.sorted_v.end(), limiting_v_mag) - d.sorted_v.begin();
+    return d.cumulative_v0[static_cast<std::size_t>(n)];
+  }
+  if (d.flux_table.empty()) return 0.0;
+  const double x = (limiting_v_mag - kFluxFirstMag) / kFluxStepMag;
+  if (x <= 0) return x < 0 ? 0.0 : d.flux_table.front();
+  const double last = static_cast<double>(d.flux_table.size() - 1);
+  if (x >= last) return d.flux_table.back();
+  const auto k = static_cast<std::size_t>(x);
+  return d.flux_table[k] + (x - static_cast<double>(k)) * (d.flux_table[k + 1] - d.flux_table[k]);
 }
 
 ApparentPlaceContext apparent_place_context_geocentric(const EngineTime& t, const Vec3& geocentric_position_m,

@@ -164,3 +164,16 @@ TEST(BackgroundLight, TabulatedInputsAndValidation) {
   EXPECT_THROW(standard_background(bad), eoir::Error);
   EXPECT_THROW(standard_background().band_irradiance(1.0, 0.5), eoir::Error);
 }
+
+// Spec 4.1.4's integrated starlight less the stars drawn as points (issue
+// 21): the whole sky's 450 V = 0 stars spread over 41,253 deg^2 are 109 S10;
+// the catalogue's stars to V = 10.5 (~220 V = 0 stars, tests/sky/
+// star_catalog_test.cpp) leave about half of it diffuse; drawing more light
+// than the sky holds leaves none.
+TEST(BackgroundLight, DiffuseStarlightLeavesOutTheStarsDrawn) {
+  EXPECT_NEAR(r::diffuse_starlight_S10V(0.0), 109.08, 0.01);
+  EXPECT_NEAR(r::diffuse_starlight_S10V(225.0), 0.5 * 109.08, 0.01);
+  EXPECT_EQ(r::diffuse_starlight_S10V(500.0), 0.0);
+  EXPECT_THROW(r::diffuse_starlight_S10V(-1.0), eoir::Error);
+  EXPECT_THROW(r::diffuse_starlight_S10V(std::nan("")), eoir::Error);
+}

@@ -29,6 +29,17 @@ static void term(eoir_engine e, uint32_t x, uint32_t y, int32_t which, double* o
   CHECK(n == N);
 }
 
+/* Every term of pixel (x, y), in the enum's order. */
+static void all_terms(eoir_engine e, uint32_t x, uint32_t y, double* surface, double* down, double* T, double* L,
+                      double* S, double* at) {
+  term(e, x, y, EOIR_PICK_TERM_SURFACE, surface);
+  term(e, x, y, EOIR_PICK_TERM_DOWNWELLING, down);
+  term(e, x, y, EOIR_PICK_TERM_TRANSMITTANCE, T);
+  term(e, x, y, EOIR_PICK_TERM_PATH_THERMAL, L);
+  term(e, x, y, EOIR_PICK_TERM_PATH_SCATTER, S);
+  term(e, x, y, EOIR_PICK_TERM_AT_SENSOR, at);
+}
+
 int main(void) {
   eoir_engine e = NULL;
   eoir_time t;
@@ -56,12 +67,7 @@ int main(void) {
   OK(eoir_sensor_point_at(e, "Geo", "Earth"));
 
   OK(eoir_render(e, "Geo"));
-  term(e, 16, 16, EOIR_PICK_TERM_SURFACE, surface);
-  term(e, 16, 16, EOIR_PICK_TERM_DOWNWELLING, down);
-  term(e, 16, 16, EOIR_PICK_TERM_TRANSMITTANCE, T);
-  term(e, 16, 16, EOIR_PICK_TERM_PATH_THERMAL, L);
-  term(e, 16, 16, EOIR_PICK_TERM_PATH_SCATTER, S);
-  term(e, 16, 16, EOIR_PICK_TERM_AT_SENSOR, at);
+  all_terms(e, 16, 16, surface, down, T, L, S, at);
   for (i = 0; i < N; ++i) {
     CHECK(T[i] == 1.0 && L[i] == 0.0 && S[i] == 0.0 && down[i] == 0.0);
     CHECK(surface[i] > 0 && at[i] == surface[i]);
@@ -69,12 +75,7 @@ int main(void) {
 
   OK(eoir_set_string(e, "Earth", "atmosphere", "simple"));
   OK(eoir_render(e, "Geo"));
-  term(e, 16, 16, EOIR_PICK_TERM_SURFACE, surface);
-  term(e, 16, 16, EOIR_PICK_TERM_DOWNWELLING, down);
-  term(e, 16, 16, EOIR_PICK_TERM_TRANSMITTANCE, T);
-  term(e, 16, 16, EOIR_PICK_TERM_PATH_THERMAL, L);
-  term(e, 16, 16, EOIR_PICK_TERM_PATH_SCATTER, S);
-  term(e, 16, 16, EOIR_PICK_TERM_AT_SENSOR, at);
+  all_terms(e, 16, 16, surface, down, T, L, S, at);
   printf("nadir at noon, 0.4-0.7 um: T_out %.3f..%.3f, L_scatter %.3g..%.3g, DownWelling %.3g of %.3g leaving\n", T[0],
          T[N - 1], S[0], S[N - 1], down[0], surface[0]);
   for (i = 0; i < N; ++i) {

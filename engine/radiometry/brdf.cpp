@@ -181,9 +181,7 @@ Brdf::Brdf(const BrdfParameters& parameters) : parameters_(parameters) {
   if (parameters.model == universe::BrdfModel::lunar_lommel_seeliger) {
     // N.L value() = 2 f(g) N.L / (pi (N.L + N.V)) < 2 max f / pi.
     lunar_ = true;
-    double most_f = 0;
-    for (int k = 0; k <= 1800; ++k) most_f = std::max(most_f, lunar_surface_phase(kPi * k / 1800.0));
-    max_projected_value_per_sr_ = 2.0 * most_f * kInvPi;
+    max_projected_value_per_sr_ = 2.0 * lunar_surface_phase_max() * kInvPi;
     return;
   }
   const double directional = 1.0 - parameters.k0;

@@ -62,6 +62,15 @@ double lunar_surface_phase(double phase_angle_rad) {
   return std::pow(10.0, -0.4 * lunar_phase_magnitude(g / kDeg)) / lommel_seeliger_sphere_phase(g);
 }
 
+double lunar_surface_phase_max() {
+  static const double most = [] {
+    double m = 0;
+    for (int k = 0; k <= 1800; ++k) m = std::max(m, lunar_surface_phase(constants::pi * k / 1800.0));
+    return m;
+  }();
+  return most;
+}
+
 double mallama_hilton_upper_limit_deg(DiskPhaseLaw planet) {
   switch (planet) {  // the observed ranges (Mallama & Hilton 2018, Table 2 and their code)
     case DiskPhaseLaw::mercury: return 170.0;

@@ -48,8 +48,10 @@ double lommel_seeliger_sphere_phase(double phase_angle_rad);
 // Allen's lunar Delta V(g) [mag] (g in degrees, |g| <= 150; the value at
 // 150 beyond).
 double lunar_phase_magnitude(double phase_angle_deg);
-// f(g) of the lunar Lommel-Seeliger surface (1 at 0; constant past 150 deg).
+// f(g) of the lunar Lommel-Seeliger surface (1 at 0; constant past 150 deg),
+// and its largest value over [0, pi] (sampled every 0.1 deg once).
 double lunar_surface_phase(double phase_angle_rad);
+double lunar_surface_phase_max();
 
 // Mallama & Hilton (2018): V(1, alpha) [mag] of a planet at 1 au from the
 // Sun and the observer, alpha in degrees within [0, upper limit]; and the

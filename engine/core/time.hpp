@@ -16,9 +16,10 @@ struct JulianDate {
 };
 
 // The dates the engine accepts, TT: 1000-01-01 to 3000-01-01 (JD 2086302.5 to
-// 2816787.5, J2000.0 -/+ 365,242.5 days), the span over which ERFA's
-// planetary ephemerides (eraPlan94) are valid; the Earth (eraEpv00) and the
-// Moon (eraMoon98) degrade gracefully over it. UTC before 1960 is TAI (ERFA
+// 2816787.5, J2000.0 -/+ 365,242.5 days), the span of ERFA's eraPlan94
+// (the planets' places before issue 21; the VSOP87B series that replaced it
+// hold to arcseconds over it); the Earth (eraEpv00) and the Moon (eraMoon98)
+// degrade gracefully over it. UTC before 1960 is TAI (ERFA
 // has no leap seconds before then).
 constexpr double min_tt_days_since_j2000 = 2086302.5 - 2451545.0;
 constexpr double max_tt_days_since_j2000 = 2816787.5 - 2451545.0;

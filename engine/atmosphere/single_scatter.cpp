@@ -64,13 +64,6 @@ SunlightTable::Corners SunlightTable::at(double altitude_m, double mu) const {
   return c;
 }
 
-void SunlightTable::transmittance(double altitude_m, double mu, std::vector<double>& out) const {
-  const Corners c = at(altitude_m, mu);
-  out.assign(intervals_, 0.0);
-  for (int q = 0; q < 4; ++q)
-    for (std::size_t i = 0; i < intervals_; ++i) out[i] += c.weight[q] * c.row[q][i];
-}
-
 ScatterPath ScatterPath::make(const PathOptics& optics, const PathColumns& path) {
   ScatterPath s;
   for (const PathSegment& g : path.segments) {

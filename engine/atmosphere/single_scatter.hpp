@@ -36,8 +36,6 @@ class SunlightTable {
     double weight[4];
   };
   Corners at(double altitude_m, double mu) const;
-  // Into out (intervals()).
-  void transmittance(double altitude_m, double mu, std::vector<double>& out) const;
 
  private:
   double radius_m_;

@@ -26,9 +26,8 @@ class Downwelling {
   // it, W cm^-2 sr^-1 um^-1) for a Sun whose zenith cosine is mu_sun over
   // the surface, of irradiance sun_irradiance per interval above the air.
   void add_over_pi(double mu_sun, const std::vector<double>& sun_irradiance, std::vector<double>& out) const;
-  // Its parts: per unit solar irradiance (scatter), and the air's emission.
+  // Its scatter per unit solar irradiance.
   void scatter_per_sun(double mu_sun, std::vector<double>& out) const;
-  const std::vector<double>& thermal() const { return thermal_; }
 
  private:
   std::vector<double> sun_mu_;  // nodes: the Sun's zenith cosine

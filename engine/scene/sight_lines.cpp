@@ -61,14 +61,14 @@ SightLines SightLines::make(const atmosphere::PathOptics& optics, const atmosphe
   // zenith cosine and the tangent altitude below the observer (dense toward
   // the dip of the horizon); above it by elevation (dense toward it).
   const double h = std::max(0.0, observer_altitude_m);
-  s.observer_radius_m = a + h;
-  const Vec3 observer = s.observer_radius_m * up;
+  const double r_observer = a + h;
+  const Vec3 observer = r_observer * up;
   const auto add_elevation = [&](double e) {
     bool ground = false;
     add(e, atmosphere::refracted_path_to_space(profile, earth, observer, std::sin(e) * up + std::cos(e) * across,
                                                ground));
   };
-  const auto elevation_of = [&](double p) { return -std::acos(std::min(1.0, p / s.observer_radius_m)); };
+  const auto elevation_of = [&](double p) { return -std::acos(std::min(1.0, p / r_observer)); };
   for (int k = kGroundNodes - 1; k >= 0; --k) {
     const double mu = std::pow(static_cast<double>(k) / (kGroundNodes - 1), 2.0);
     add_elevation(elevation_of(a * std::sqrt(1.0 - mu * mu)));

@@ -40,7 +40,6 @@ using Vec3 = Eigen::Vector3d;
 // the atmosphere shares one set).
 struct SightLines {
   bool above = false;            // nodes are impact parameters (m); else elevations (rad)
-  double observer_radius_m = 0;  // inside: the observer's radius in the sphere's space
   double top_radius_m = 0;       // of the air's top
   std::vector<double> node;      // ascending
   // Per node: the path from the observer (above the atmosphere: from where

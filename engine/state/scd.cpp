@@ -42,6 +42,11 @@ T field(const json& j, const std::string& key, const std::string& where) {
   }
 }
 
+template <class T>
+T optional_field(const json& j, const std::string& key, const T& absent, const std::string& where) {
+  return j.contains(key) ? field<T>(j, key, where) : absent;
+}
+
 void check_format(const json& doc, const char* format, int version, const std::string& where) {
   const auto f = field<std::string>(doc, "format", where);
   if (f != format) corrupt(where + ".format", "expected '" + std::string(format) + "', got '" + f + "'");
@@ -237,7 +242,8 @@ std::unique_ptr<Engine> engine_from_json(const json& doc, const EngineOptions& r
       check_fields(s, where, {"name", "source", "wavelength_um", "radiance_W_cm2_sr_um"},
                    {"name", "wavelength_um", "radiance_W_cm2_sr_um"});
       try {
-        universe::NamedSpectrum spectrum{field<std::string>(s, "name", where), s.value("source", std::string()),
+        universe::NamedSpectrum spectrum{field<std::string>(s, "name", where),
+                                         optional_field<std::string>(s, "source", std::string(), where),
                                          TabulatedFunction(field<std::vector<double>>(s, "wavelength_um", where),
                                                            field<std::vector<double>>(s, "radiance_W_cm2_sr_um", where),
                                                            where + ".radiance_W_cm2_sr_um")};
@@ -245,8 +251,6 @@ std::unique_ptr<Engine> engine_from_json(const json& doc, const EngineOptions& r
       } catch (const Error& err) {
         if (err.status() == Status::corrupt_file) throw;
         corrupt(where, err.what());
-      } catch (const json::exception&) {
-        corrupt(where + ".source", "expected a string");
       }
     }
   }
@@ -265,7 +269,7 @@ std::unique_ptr<Engine> engine_from_json(const json& doc, const EngineOptions& r
       if (the_sun) {
         // always present
       } else if (kind == ObjectKind::sensor) {
-        engine->add_sensor(name, j.value("parent", std::string()));
+        engine->add_sensor(name, optional_field<std::string>(j, "parent", std::string(), where));
       } else {
         engine->add_object(kind, name);
       }
@@ -319,7 +323,7 @@ sensor::SensorParameters sensor_from_json(const json& doc) {
   check_format(doc, "eoir-sensor", sensor_format_version, "sensor");
   Object o;
   o.kind = ObjectKind::sensor;
-  o.name = doc.value("name", std::string("sensor"));
+  o.name = optional_field<std::string>(doc, "name", std::string("sensor"), "sensor");
   apply_properties(ObjectKind::sensor, doc.at("parameters"), "sensor.parameters",
                    [&](const std::string& property, const Value& v) { universe::set_property(o, property, v); });
   try {

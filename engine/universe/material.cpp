@@ -75,7 +75,8 @@ Material material_from_json(const json& doc, const std::string& origin) {
     for (const char* k : known) ok = ok || it.key() == k;
     if (!ok) corrupt(origin + ": " + it.key(), "unknown field");
   }
-  if (doc.value("format", std::string()) != "eoir-material") corrupt(origin + ": format", "must be \"eoir-material\"");
+  if (!doc.contains("format") || !doc["format"].is_string() || doc["format"].get<std::string>() != "eoir-material")
+    corrupt(origin + ": format", "must be \"eoir-material\"");
   if (!doc.contains("version") || !doc["version"].is_number_integer() || doc["version"].get<int>() != 1)
     throw Error(Status::file_version, origin + ": version: this engine reads material format version 1");
   Material m;

@@ -16,7 +16,7 @@ void PredefinedComposites::load_directory(const std::string& dir) {
     if (entry.path().extension() != ".json") continue;
     const std::string path = entry.path().string();
     const nlohmann::json doc = parse_json_document(read_file(path, 16u << 20, "a composite file"), path);
-    if (!doc.is_object() || doc.value("format", "") != "eoir-composite" || !doc.contains("name") ||
+    if (!doc.is_object() || !doc.contains("format") || doc["format"] != "eoir-composite" || !doc.contains("name") ||
         !doc["name"].is_string() || !doc.contains("parts") || !doc["parts"].is_array())
       throw Error(Status::corrupt_file, path + ": not an eoir-composite file (format, name, parts)");
     parts_[doc["name"].get<std::string>()] = doc["parts"].dump();

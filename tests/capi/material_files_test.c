@@ -257,6 +257,11 @@ int main(void) {
                                 " \"sources\": [\"x\"], \"brdf\": {\"k0\": 1, \"k1\": 0, \"alpha\": 1, \"beta\": 1},\n"
                                 " \"wavelength_um\": [0.28, 28], \"reflectance\": [0.5, 0.5]}\n");
     FAILS(eoir_material_load(e, at("desc.json")), EOIR_ERR_CORRUPT_FILE, "desc.json: description: expected a string");
+    /* Found by fuzz.material_load: a format that is not a string. */
+    write_text(at("fmt.json"), "{\"format\": [\"x\"], \"version\": 1, \"name\": \"fmt\", \"sources\": [\"x\"],\n"
+                               " \"brdf\": {\"k0\": 1, \"k1\": 0, \"alpha\": 1, \"beta\": 1},\n"
+                               " \"wavelength_um\": [0.28, 28], \"reflectance\": [0.5, 0.5]}\n");
+    FAILS(eoir_material_load(e, at("fmt.json")), EOIR_ERR_CORRUPT_FILE, "fmt.json: format: must be");
   }
 
   /* Issue 25 item 8: a table must cover 0.28-28 um, every band a sensor may

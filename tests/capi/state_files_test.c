@@ -96,6 +96,19 @@ int main(void) {
   FAILS(eoir_sensor_load(e, "Cam", at("overflow.json")), EOIR_ERR_CORRUPT_FILE, "parameters.f_number: number out of range");
   FAILS(eoir_sensor_load(e, "Cam", at("overflow.json")), EOIR_ERR_CORRUPT_FILE, "overflow.json");
 
+  /* a field of the wrong type (found by fuzz.material_load in its loader) */
+  bad = replaced(scd, "\"parent\": \"Sat\"", "\"parent\": 5");
+  CHECK(strcmp(bad, scd) != 0);
+  write_text(at("parent.scd"), bad);
+  free(bad);
+  FAILS(eoir_state_load(e, at("parent.scd")), EOIR_ERR_CORRUPT_FILE, "scd.objects[");
+  FAILS(eoir_state_load(e, at("parent.scd")), EOIR_ERR_CORRUPT_FILE, ".parent: missing or of the wrong type");
+  bad = replaced(sensor, "\"name\": \"Cam\"", "\"name\": []");
+  CHECK(strcmp(bad, sensor) != 0);
+  write_text(at("name.json"), bad);
+  free(bad);
+  FAILS(eoir_sensor_load(e, "Cam", at("name.json")), EOIR_ERR_CORRUPT_FILE, "sensor.name: missing or of the wrong type");
+
   /* a key given twice */
   bad = replaced(sensor, "\"f_number\": ", "\"f_number\": 2.0, \"f_number\": ");
   write_text(at("duplicate.json"), bad);

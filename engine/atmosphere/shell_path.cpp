@@ -248,6 +248,69 @@ double ray_traced_refraction_rad(const AtmosphereProfile& profile, const EarthFi
   return bending;
 }
 
+ChordRefraction chord_refraction(const AtmosphereProfile& profile, const EarthFigure& earth, const Vec3& from_m,
+                                 const Vec3& apparent_direction, double range_m) {
+  ChordRefraction out;
+  const Stretch stretch(earth);
+  const double a = earth.equatorial_radius_m, top = a + profile.top_altitude_m();
+  const Vec3 x0 = stretch(from_m - earth.centre_m), u = stretch(apparent_direction.normalized()).normalized();
+  const double r0 = x0.norm();
+  if (!(r0 < top) || !(r0 > 0) || !(range_m > 0)) return out;
+  // The plane of the centre, the start and the ray: radial and horizontal axes.
+  const Vec3 e1 = x0 / r0;
+  const Vec3 across = u - u.dot(e1) * e1;
+  if (!(across.norm() > 1e-12)) return out;  // straight up: no bending
+  using P2 = Eigen::Vector2d;
+  const double pole_cos = x0.dot(earth.pole) / r0;
+  const auto h_of = [&](double r) { return (r - a) / (1.0 + stretch.extra * pole_cos * pole_cos); };
+  const auto n_of = [&](double r) { return 1.0 + refractivity(profile.at(h_of(r)).air_m3); };
+  // d t / ds = (grad n / n) across the ray; grad n = dn/dr along the radius.
+  const auto turn = [&](const P2& p, const P2& t) {
+    const double r = p.norm();
+    const double dn_dr = n_of(r + 0.5) - n_of(r - 0.5);
+    const P2 e = p / r;
+    return P2((dn_dr / n_of(r)) * (e - e.dot(t) * t));
+  };
+  const P2 p0(r0, 0.0), t0(u.dot(e1), u.dot(across.normalized()));
+  P2 p = p0, t = t0;
+  bool reached = false;
+  const auto angle = [](const P2& x, const P2& y) { return std::atan2(std::fabs(x.x() * y.y() - x.y() * y.x()), x.dot(y)); };
+  for (int step = 0; step < 100000; ++step) {
+    const double r = p.norm();
+    if (r >= top) break;
+    if (h_of(r) < std::min(h_of(r0), 0.0) - 1e-6) {
+      out.ends_on_ground = true;
+      break;
+    }
+    // Steps of 50 m near the ground, longer higher up and along level rays.
+    const double vertical = std::max(std::fabs(t.dot(p) / r), 0.02);
+    const double ds = std::min((50.0 + 0.02 * std::max(h_of(r), 0.0)) / vertical, 5000.0);
+    const P2 tm = (t + 0.5 * ds * turn(p, t)).normalized();
+    const P2 pm = p + 0.5 * ds * t;
+    const P2 next = p + ds * tm;
+    if (!reached && (next - p0).norm() >= range_m) {
+      // The point at the distance on this step (the chord length along the step's chord).
+      const P2 q = p - p0;
+      const double b = q.dot(tm), c = q.squaredNorm() - range_m * range_m;
+      out.chord_rad = angle(t0, q + (-b + std::sqrt(std::max(b * b - c, 0.0))) * tm);
+      reached = true;
+    }
+    t = (t + ds * turn(pm, tm)).normalized();
+    p = next;
+  }
+  if (out.ends_on_ground) {
+    if (!reached) out.chord_rad = angle(t0, p - p0);
+    return out;
+  }
+  out.bending_rad = angle(t0, t);
+  if (!reached) {  // beyond the top: straight on to the distance
+    const P2 q = p - p0;
+    const double b = q.dot(t), c = q.squaredNorm() - range_m * range_m;
+    out.chord_rad = c < 0 ? angle(t0, q + (-b + std::sqrt(b * b - c)) * t) : angle(t0, q);
+  }
+  return out;
+}
+
 Vec3 to_sphere_space(const EarthFigure& earth, const Vec3& v) { return Stretch(earth)(v); }
 
 double altitude_m(const EarthFigure& earth, const Vec3& point_m) {

@@ -83,6 +83,23 @@ PathColumns refracted_path_to_space(const AtmosphereProfile& profile, const Eart
 double ray_traced_refraction_rad(const AtmosphereProfile& profile, const EarthFigure& earth, const Vec3& from_m,
                                  const Vec3& apparent_direction);
 
+// The refraction toward a point at a finite distance (an aircraft, a LEO
+// satellite; issue 20 item 6): the ray leaving a point inside the
+// atmosphere along an apparent direction is marched through the shells
+// (d(n t)/ds = grad n, in the plane of the Earth's centre) out to the
+// distance range_m, straight beyond the top level. chord_rad is the angle
+// between the apparent direction and the chord to where the ray got: the
+// refraction of a source there (k D / 2 R_E for a low path near the ground,
+// the geodetic coefficient of refraction k); bending_rad the ray's whole
+// bending to space, the refraction of a source at infinity (0 with
+// ends_on_ground: the ray meets the ground, where it stops).
+struct ChordRefraction {
+  double chord_rad = 0, bending_rad = 0;
+  bool ends_on_ground = false;
+};
+ChordRefraction chord_refraction(const AtmosphereProfile& profile, const EarthFigure& earth, const Vec3& from_m,
+                                 const Vec3& apparent_direction, double range_m);
+
 // The refractivity n - 1 of air of number density air_m3 (visible light).
 double refractivity(double air_m3);
 

@@ -24,9 +24,8 @@ AtmosphericPathMetrics atmospheric_path(const scene::World& world, const scene::
       return std::asin(std::clamp(a.zenith.dot(u), -1.0, 1.0)) * constants::deg_per_rad;
     };
     m.elevation_deg = elevation_deg(to / range);
-    // Refracted as the image places it: targets beyond the atmosphere seen from inside it.
-    const bool refracted = a.observer_inside && m.target_altitude_km * 1e3 >= a.profile->top_altitude_m();
-    m.apparent_elevation_deg = refracted ? elevation_deg(a.apparent_direction(to / range)) : m.elevation_deg;
+    // Refracted as the image places it (WorldObject::seen).
+    m.apparent_elevation_deg = elevation_deg(target.seen.position_m.normalized());
   }
   const atmosphere::PathColumns c = a.path_to(to);
   m.air_mass = a.air_mass(c);

@@ -23,7 +23,7 @@ struct AtmosphericPathMetrics {
   double rayleigh_optical_depth_550 = 0;
   double length_in_atmosphere_km = 0;
   double elevation_deg = 0;     // of the target above the sensor's geodetic horizon (no refraction)
-  double apparent_elevation_deg = 0;  // raised by the refraction (sensors inside the atmosphere, targets above it)
+  double apparent_elevation_deg = 0;  // raised by the refraction (sensors inside the atmosphere; WorldObject::seen)
   double sensor_altitude_km = 0, target_altitude_km = 0;
 };
 

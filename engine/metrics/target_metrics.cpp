@@ -39,8 +39,8 @@ void point_target_terms(const sensor::StaticMetrics& m, double E_tgt, double L_b
 // Visible: some line of sight toward one of the target's parts (each part's
 // origin lies inside it) meets the target before anything else.
 bool unobstructed(const scene::World& world, const scene::WorldObject& target) {
-  for (const geometry::ShapePart& part : target.placed.parts) {
-    const Vec3 centre = target.placed.position_m + target.placed.body_to_frame * part.offset_m;
+  for (const geometry::ShapePart& part : target.seen.parts) {
+    const Vec3 centre = target.seen.position_m + target.seen.body_to_frame * part.offset_m;
     if (centre.norm() == 0) continue;
     if (world.caster.cast(centre.normalized()).object_id == target.id) return true;
   }
@@ -85,7 +85,7 @@ TargetMetrics target_metrics(const scene::World& world, const sensor::SensorMode
                  r.pixel_y <= p.vertical_pixels - 0.5;
   }
   r.visible = r.in_field && unobstructed(world, tp);
-  const Vec3 los = tp.placed.position_m.normalized();
+  const Vec3 los = tp.seen.position_m.normalized();  // where the observer's rays meet it
 
   const double R_L = m.peak_radiance_responsivity;
   const double ne_dark = m.dark_noise_electrons, SEe = m.saturation_electrons;

@@ -1,7 +1,6 @@
 #include "scene/apparent_grid.hpp"
 
 #include "atmosphere/refraction.hpp"
-#include "atmosphere/shell_path.hpp"
 #include "core/frames.hpp"
 
 namespace eoir::scene {
@@ -33,12 +32,6 @@ double ApparentGrid::max_refraction_rad() const {
   return refracting_ ? atmosphere::refraction_from_apparent_rad(world_.atmosphere.refraction, 0.0) : 0.0;
 }
 
-bool ApparentGrid::refracted(const WorldObject& o) const {
-  return refracting_ && o.imaging == Imaging::point_source && o.range_m > 0 &&
-         atmosphere::altitude_m(world_.atmosphere.earth, o.placed.position_m) >=
-             world_.atmosphere.profile->top_altitude_m();
-}
-
 bool ApparentGrid::star(const Vec3& d, GridPlace& out) const {
   const geometry::SampleGrid& grid = world_.grid();
   out = GridPlace{};
@@ -60,20 +53,19 @@ bool ApparentGrid::object(const WorldObject& o, GridPlace& out) const {
   if (!grid.sample_of(to_body_ * o.placed.position_m, out.column, out.row)) return false;
   out.streak_columns = o.streak_columns;
   out.streak_rows = o.streak_rows;
-  if (!refracted(o)) return true;
+  if (!refracting_ || !(o.refraction_fraction > 0)) return true;
   // The streak's geometric ends, placed as the world places them about the
-  // frame-time position, each refracted with the zenith of its instant.
+  // frame-time position, each refracted with the zenith of its instant by
+  // the share its distance gives (WorldObject::refraction_fraction).
   const double c = out.column, r = out.row;
   const Vec3 start = world_.observer.body_to_j2000_start *
                      grid.direction_body(c - 0.5 * o.streak_columns, r - 0.5 * o.streak_rows);
   const Vec3 end = world_.observer.body_to_j2000_end *
                    grid.direction_body(c + 0.5 * o.streak_columns, r + 0.5 * o.streak_rows);
-  if (!grid.sample_of(to_body_ * world_.atmosphere.apparent_direction(o.placed.position_m / o.range_m), out.column,
-                      out.row))
-    return false;
+  if (!grid.sample_of(to_body_ * o.seen.position_m, out.column, out.row)) return false;
   double c0 = 0, r0 = 0, c1 = 0, r1 = 0;
-  if (grid.sample_of(to_body_start_ * start_.apparent_direction(start), c0, r0) &&
-      grid.sample_of(to_body_end_ * end_.apparent_direction(end), c1, r1)) {
+  if (grid.sample_of(to_body_start_ * start_.apparent_direction(start, o.refraction_fraction), c0, r0) &&
+      grid.sample_of(to_body_end_ * end_.apparent_direction(end, o.refraction_fraction), c1, r1)) {
     out.streak_columns = c1 - c0;
     out.streak_rows = r1 - r0;
   }

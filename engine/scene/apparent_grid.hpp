@@ -3,12 +3,13 @@
 // raised toward the zenith by the refraction
 // (WorldAtmosphere::apparent_direction) at the frame time, and at the start
 // and the end of the integration for their streaks, with the observer's
-// zenith of those instants. Stars are refracted, and objects beyond the top
-// of the atmosphere, whose light crosses all of it along the refracted ray
-// that WorldAtmosphere::path_to follows; objects inside the atmosphere keep
-// their geometric direction, as their straight path does. Without the
-// atmosphere, or from above it, every place is the geometric one, bit for
-// bit. Occlusion tests and the truth's RA/Dec keep the geometric direction.
+// zenith of those instants. Stars are refracted by the whole refraction,
+// objects by the share their distance gives (WorldObject::seen,
+// refraction_fraction: nearly all of it beyond the atmosphere, about
+// k D / 2 R_E for an aircraft D away), as the image's rays meet extended
+// objects. Without the atmosphere, or from above it, every place is the
+// geometric one, bit for bit. The truth's RA/Dec keep the geometric
+// direction.
 #pragma once
 #include "scene/world.hpp"
 
@@ -35,7 +36,6 @@ class ApparentGrid {
   bool object(const WorldObject& o, GridPlace& out) const;
 
  private:
-  bool refracted(const WorldObject& o) const;
   const World& world_;
   Mat3 to_body_, to_body_start_, to_body_end_;  // J2000 to the sensor's body axes at the frame time, start, end
   bool refracting_ = false;       // the atmosphere is on and the observer inside it

@@ -27,7 +27,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
     GridPlace p;
     if (!apparent.object(*o, p) || !grid.in_field(p.column, p.row, 1e-4)) continue;
     const geometry::RayQuery others{geometry::ray_mask_all, o->id};
-    if (world.caster.occluded(o->placed.position_m / o->range_m, o->range_m, others)) continue;
+    if (world.caster.occluded(o->seen.position_m / o->range_m, o->range_m, others)) continue;
     out.image.point_sources.push_back(radiometry::PointSource{o->id, -1, p.column, p.row, o->point_irradiance_W_cm2(),
                                                               p.streak_columns, p.streak_rows});
   }
@@ -101,7 +101,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
           out.image.radiance_W_cm2_sr[i] = o.plain_radiance(part);
           return;
         }
-        const Vec3 point_body = o.placed.body_to_frame.transpose() * (range_m * d - o.placed.position_m);
+        const Vec3 point_body = o.seen.body_to_frame.transpose() * (range_m * d - o.seen.position_m);
         out.image.radiance_W_cm2_sr[i] = o.radiance_at(part, point_body, o.direction_to_body(normal_frame));
       },
       threads, extended);

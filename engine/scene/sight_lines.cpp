@@ -82,7 +82,8 @@ SightLines SightLines::make(const atmosphere::PathOptics& optics, const atmosphe
 
 SkyView::SkyView(std::shared_ptr<const SightLines> lines, std::shared_ptr<const atmosphere::SunlightTable> sunlight,
                  const atmosphere::EarthFigure& earth, const Vec3& to_sun, const std::vector<double>& sun_irradiance,
-                 const std::vector<double>& background_radiance, const radiometry::SpectralView& view)
+                 const std::vector<double>& background_radiance, const std::vector<double>& airglow_zenith,
+                 const radiometry::SpectralView& view)
     : lines_(std::move(lines)),
       intervals_(sunlight->intervals()),
       earth_(earth),
@@ -103,10 +104,19 @@ SkyView::SkyView(std::shared_ptr<const SightLines> lines, std::shared_ptr<const 
   made_ = std::make_unique<std::atomic<bool>[]>(scatter_.size());
   for (std::size_t k = 0; k < scatter_.size(); ++k) made_[k].store(false, std::memory_order_relaxed);
   for (std::size_t j = 0; j < L.node.size(); ++j) {
-    // What the line's air adds without the Sun: its emission and the background seen through it.
+    // What the line's air adds without the Sun: its emission, the background
+    // seen through it, and the airglow's layer (its near pass above nearly
+    // all the air, the far one through the line's).
     std::vector<double> sky = L.paths[j].terms.thermal;
+    const std::vector<double>& T = L.paths[j].terms.transmittance;
     if (!background_radiance.empty())
-      for (std::size_t i = 0; i < intervals_; ++i) sky[i] += background_radiance[i] * L.paths[j].terms.transmittance[i];
+      for (std::size_t i = 0; i < intervals_; ++i) sky[i] += background_radiance[i] * T[i];
+    if (!airglow_zenith.empty()) {
+      const double r = centre_.norm(), q = L.above ? L.node[j] / r : 0.0;
+      const double mu = L.above ? -std::sqrt(std::max(0.0, 1.0 - q * q)) : std::sin(L.node[j]);
+      const atmosphere::Airglow::Passes g = atmosphere::Airglow::passes(earth.equatorial_radius_m, r, mu);
+      for (std::size_t i = 0; i < intervals_; ++i) sky[i] += airglow_zenith[i] * (g.near + g.far * T[i]);
+    }
     sky_band_.push_back(view.integrate(sky));
     sky_.push_back(std::move(sky));
   }

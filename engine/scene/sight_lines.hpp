@@ -27,6 +27,7 @@
 #include <mutex>
 #include <vector>
 
+#include "atmosphere/airglow.hpp"
 #include "atmosphere/path_optics.hpp"
 #include "atmosphere/shell_path.hpp"
 #include "atmosphere/single_scatter.hpp"
@@ -54,10 +55,13 @@ class SkyView {
  public:
   // earth: the Earth's figure relative to the observer; to_sun: unit;
   // sun_irradiance per interval above the air; background_radiance: E_bkg /
-  // pi per interval (empty: none); view: integrates a spectrum (eq. 48).
+  // pi per interval (empty: none); airglow_zenith: the airglow's zenith
+  // radiance per interval (atmosphere/airglow.hpp; empty: none); view:
+  // integrates a spectrum (eq. 48).
   SkyView(std::shared_ptr<const SightLines> lines, std::shared_ptr<const atmosphere::SunlightTable> sunlight,
           const atmosphere::EarthFigure& earth, const Vec3& to_sun, const std::vector<double>& sun_irradiance,
-          const std::vector<double>& background_radiance, const radiometry::SpectralView& view);
+          const std::vector<double>& background_radiance, const std::vector<double>& airglow_zenith,
+          const radiometry::SpectralView& view);
   // Band radiance (W cm^-2 sr^-1) of the air along the unit direction d
   // from the observer: the scatter alone (`scatter_band`: the line ends on
   // a surface, whose own T_out and L_path are the surface's) or, for a

@@ -20,11 +20,12 @@ constexpr double kMasToRad = constants::pi / (180.0 * 3600.0 * 1000.0);
 constexpr double kCullMargin_rad = 2.0e-3;
 
 // Whether some object of the world lies along the direction (from the
-// observer, toward infinity): an angular bounding-sphere test first, one
-// occlusion ray only where a sphere covers the direction.
+// observer, toward infinity; both where they appear): an angular
+// bounding-sphere test first, one occlusion ray only where a sphere covers
+// the direction.
 bool hidden(const World& w, const Vec3& direction) {
   for (const auto& o : w.objects) {
-    const Vec3& c = o->placed.position_m;
+    const Vec3& c = o->seen.position_m;
     const double along = c.dot(direction), radius = o->bounding_radius_m;
     if (along < -radius) continue;
     if ((c - along * direction).squaredNorm() > radius * radius) continue;
@@ -37,6 +38,8 @@ void build_background(World& w, const universe::StarFieldProperties& p, const un
                       const std::string& field, double imaged_v0_stars) {
   radiometry::BackgroundLightParameters parameters;
   parameters.zodiacal_scale = p.zodiacal_light_scale;
+  // The atmosphere's airglow layer replaces the spec's three lines.
+  if (w.atmosphere.on() && w.atmosphere.settings.airglow) parameters.airglow_total_irradiance_W_cm2 = 0.0;
   // Spec 4.1.4's integrated starlight less the stars imaged as points.
   parameters.starlight_S10V = radiometry::diffuse_starlight_S10V(imaged_v0_stars);
   const TabulatedFunction& sun = library.spectra.sun().radiance_W_cm2_sr_um;
@@ -86,12 +89,13 @@ void build_sky(World& w, const universe::Object& star_field, const universe::Lib
   for (const std::size_t i : selection.indices) {
     if (catalogue.unit_vector(i).dot(boresight) < cos_limit) continue;
     const universe::CatalogStar star = catalogue.star(i);
-    // d: the apparent place (geometric: occlusion, truth's RA/Dec); on the
-    // grid where it appears, refracted from inside the atmosphere.
+    // d: the apparent place (geometric: truth's RA/Dec); on the grid and
+    // behind the objects where it appears, refracted from inside the
+    // atmosphere.
     const Vec3 d = universe::apparent_direction(star, context);
     GridPlace place;
     if (!apparent.star(d, place) || !grid.in_field(place.column, place.row, 1e-4)) continue;
-    if (hidden(w, d)) continue;
+    if (hidden(w, w.atmosphere.apparent_direction(d))) continue;
     WorldStar s;
     s.catalogue_index = i;
     s.id = star.id;

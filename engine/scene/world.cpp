@@ -505,8 +505,8 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
     if (facing <= 0) continue;
     const std::vector<double> L = spectral_radiance(patch.part, patch.centre_body_m, patch.normal_body, toward);
     const double omega = facing * patch.area_m2 / r2;
-    const std::vector<double> seen = at_sensor(L, patch.centre_body_m, patch.normal_body);
-    for (std::size_t i = 0; i < E.size(); ++i) E[i] += seen[i] * omega;
+    const std::vector<double> received = at_sensor(L, patch.centre_body_m, patch.normal_body);
+    for (std::size_t i = 0; i < E.size(); ++i) E[i] += received[i] * omega;
   }
   return E;
 }
@@ -678,14 +678,28 @@ double WorldAtmosphere::air_mass_toward(const Vec3& direction) const {
                       : atmosphere::path_to_space(*profile, earth, Vec3::Zero(), direction, false));
 }
 
-Vec3 WorldAtmosphere::apparent_direction(const Vec3& d) const {
-  if (!on() || !observer_inside) return d;
+Vec3 WorldAtmosphere::apparent_direction(const Vec3& d, double fraction) const {
+  if (!on() || !observer_inside || !(fraction > 0)) return d;
   const double e = std::asin(std::clamp(d.dot(zenith), -1.0, 1.0));
   Vec3 horizontal = d - d.dot(zenith) * zenith;
   if (!(horizontal.norm() > 1e-12)) return d;  // the zenith: no refraction
   horizontal.normalize();
-  const double apparent = e + atmosphere::refraction_from_true_rad(refraction, e);
+  const double apparent = e + fraction * atmosphere::refraction_from_true_rad(refraction, e);
   return std::cos(apparent) * horizontal + std::sin(apparent) * zenith;
+}
+
+double WorldAtmosphere::refraction_fraction(const Vec3& point_m) const {
+  const double range = point_m.norm();
+  if (!on() || !observer_inside || !(range > 0)) return 0.0;
+  const Vec3 d = point_m / range;
+  const double R = atmosphere::refraction_from_true_rad(refraction, std::asin(std::clamp(d.dot(zenith), -1.0, 1.0)));
+  if (!(R > 0)) return 0.0;
+  const atmosphere::ChordRefraction c =
+      atmosphere::chord_refraction(*profile, earth, Vec3::Zero(), apparent_direction(d), range);
+  // Over the ray's own bending where it reaches space (the refraction
+  // formula's share); over the formula's where the ray meets the ground.
+  const double share = c.bending_rad > 0 ? c.chord_rad / c.bending_rad : c.chord_rad / R;
+  return std::clamp(share, 0.0, 1.0);
 }
 
 std::vector<double> WorldAtmosphere::to_space(const Vec3& point_m, const Vec3& direction) const {
@@ -816,6 +830,12 @@ std::shared_ptr<const Downwelling> WorldCache::downwelling(const std::shared_ptr
   return cached(downwelling_, optics.get(), make);
 }
 
+std::shared_ptr<const std::vector<double>> WorldCache::airglow(
+    const std::shared_ptr<const atmosphere::PathOptics>& optics, const std::function<std::vector<double>()>& make) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return cached(airglow_, optics.get(), make);
+}
+
 std::shared_ptr<const World> build_world(const universe::Universe& universe, const universe::Library& library,
                                          const EngineTime& t, const universe::Object& sensor,
                                          const ViewDefinition& view, WorldCache* cache) {
@@ -847,52 +867,12 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   const double sample_angle_rad = grid.sample_angle_rad();
   const Fidelity& f = world->view.fidelity;
 
-  // 1. Place and classify (DESIGN section 1, step 2).
-  std::vector<const universe::Object*> sources;
-  for (const universe::Object& o : universe.objects()) {
-    if (o.name == sensor.parent) continue;  // a sensor never images its parent (4.1.5.1)
-    std::unique_ptr<WorldObject> w = place(universe, o, t, *world);
-    if (!w) continue;
-    w->id = static_cast<std::int32_t>(world->objects.size());
-    w->world_ = world.get();
-    w->placed.object_id = w->id;
-    const double range = w->range_m, radius = w->bounding_radius_m;
-    if (outside_view(j2000_to_body * w->placed.position_m, radius, grid))
-      w->imaging = Imaging::outside;
-    else if (range > radius && 2.0 * std::asin(std::min(1.0, radius / range)) < sample_angle_rad)
-      w->imaging = Imaging::point_source;  // a distant area source smaller than a sample (4.1.6.1)
-    else
-      w->imaging = Imaging::extended;
-    w->placed.ray_mask = w->imaging == Imaging::extended ? geometry::ray_mask_extended : geometry::ray_mask_other;
-    if (w->imaging == Imaging::point_source && half_integration_s > 0) {
-      // Displacement on the grid over the integration: the object's and the
-      // sensor's motion and the sensor's rotation (positions as the host pushed them).
-      const Vec3 p0 = universe::kinematics_at(universe, o, start.plus_seconds(-w->light_time_s)).position_m -
-                      world->observer.position_start_m;
-      const Vec3 p1 = universe::kinematics_at(universe, o, end.plus_seconds(-w->light_time_s)).position_m -
-                      world->observer.position_end_m;
-      double c0 = 0, r0 = 0, c1 = 0, r1 = 0;
-      if (grid.sample_of(world->observer.body_to_j2000_start.transpose() * p0, c0, r0) &&
-          grid.sample_of(world->observer.body_to_j2000_end.transpose() * p1, c1, r1)) {
-        w->streak_columns = c1 - c0;
-        w->streak_rows = r1 - r0;
-      }
-    }
-    if (o.kind == ObjectKind::central_body && o.central_body == universe::CentralBody::sun) world->sun.object = w->id;
-    world->objects.push_back(std::move(w));
-    sources.push_back(&o);
-  }
-
   // The Earth's atmosphere, when its central body has it on (spec 4.3.1.1):
   // each object's light reaches the sensor through it (T_out) with the
   // path's own thermal radiance (L_path), and the Sun's reaches the object
   // through it (T_in), at the object's centre; the Earth's surface through
   // the tables of SurfacePaths. The settings and figure are the universe's
   // Earth's, in the world or not (a sensor on the Earth does not image it).
-  std::int32_t earth_id = -1;
-  for (std::size_t i = 0; i < world->objects.size(); ++i)
-    if (sources[i]->kind == ObjectKind::central_body && sources[i]->central_body == universe::CentralBody::earth)
-      earth_id = world->objects[i]->id;
   for (const universe::Object& o : universe.objects()) {
     if (o.kind != ObjectKind::central_body || o.central_body != universe::CentralBody::earth ||
         o.atmosphere.model == universe::AtmosphereModel::none)
@@ -932,6 +912,55 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       a.sunlight = cache ? cache->sunlight(a.optics, make) : std::make_shared<const atmosphere::SunlightTable>(make());
     }
   }
+
+  // 1. Place and classify (DESIGN section 1, step 2).
+  std::vector<const universe::Object*> sources;
+  for (const universe::Object& o : universe.objects()) {
+    if (o.name == sensor.parent) continue;  // a sensor never images its parent (4.1.5.1)
+    std::unique_ptr<WorldObject> w = place(universe, o, t, *world);
+    if (!w) continue;
+    w->id = static_cast<std::int32_t>(world->objects.size());
+    w->world_ = world.get();
+    w->placed.object_id = w->id;
+    const double range = w->range_m, radius = w->bounding_radius_m;
+    // Seen where the refraction raises it (not an object around the observer).
+    w->seen = w->placed;
+    if (range > radius) {
+      w->refraction_fraction = world->atmosphere.refraction_fraction(w->placed.position_m);
+      w->seen.position_m = range * world->atmosphere.apparent_direction(w->placed.position_m / range,
+                                                                         w->refraction_fraction);
+    }
+    if (outside_view(j2000_to_body * w->seen.position_m, radius, grid))
+      w->imaging = Imaging::outside;
+    else if (range > radius && 2.0 * std::asin(std::min(1.0, radius / range)) < sample_angle_rad)
+      w->imaging = Imaging::point_source;  // a distant area source smaller than a sample (4.1.6.1)
+    else
+      w->imaging = Imaging::extended;
+    w->placed.ray_mask = w->imaging == Imaging::extended ? geometry::ray_mask_extended : geometry::ray_mask_other;
+    w->seen.ray_mask = w->placed.ray_mask;
+    if (w->imaging == Imaging::point_source && half_integration_s > 0) {
+      // Displacement on the grid over the integration: the object's and the
+      // sensor's motion and the sensor's rotation (positions as the host pushed them).
+      const Vec3 p0 = universe::kinematics_at(universe, o, start.plus_seconds(-w->light_time_s)).position_m -
+                      world->observer.position_start_m;
+      const Vec3 p1 = universe::kinematics_at(universe, o, end.plus_seconds(-w->light_time_s)).position_m -
+                      world->observer.position_end_m;
+      double c0 = 0, r0 = 0, c1 = 0, r1 = 0;
+      if (grid.sample_of(world->observer.body_to_j2000_start.transpose() * p0, c0, r0) &&
+          grid.sample_of(world->observer.body_to_j2000_end.transpose() * p1, c1, r1)) {
+        w->streak_columns = c1 - c0;
+        w->streak_rows = r1 - r0;
+      }
+    }
+    if (o.kind == ObjectKind::central_body && o.central_body == universe::CentralBody::sun) world->sun.object = w->id;
+    world->objects.push_back(std::move(w));
+    sources.push_back(&o);
+  }
+
+  std::int32_t earth_id = -1;
+  for (std::size_t i = 0; i < world->objects.size(); ++i)
+    if (sources[i]->kind == ObjectKind::central_body && sources[i]->central_body == universe::CentralBody::earth)
+      earth_id = world->objects[i]->id;
   if (world->atmosphere.on() && earth_id >= 0 &&
       world->objects[static_cast<std::size_t>(earth_id)]->imaging != Imaging::outside) {
     const WorldAtmosphere& a = world->atmosphere;
@@ -1109,7 +1138,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   }
 
   std::vector<const geometry::PlacedObject*> cast_against;
-  for (const auto& w : world->objects) cast_against.push_back(&w->placed);
+  for (const auto& w : world->objects) cast_against.push_back(&w->seen);
   world->caster.build(cast_against);
 
   // 5. The sky, if the universe has a star field, and under the atmosphere
@@ -1129,8 +1158,17 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     std::vector<double> background;
     if (world->sky.background)
       for (const double E : world->sky.background_irradiance) background.push_back(E / constants::pi);
+    std::vector<double> airglow;  // the night airglow's zenith radiance (atmosphere/airglow.hpp)
+    if (a.settings.airglow) {
+      const radiometry::SpectralBand b = a.optics->band();
+      const std::string dir = library.data_dir;
+      const auto make = [dir, b] {
+        return atmosphere::Airglow::load(dir).zenith_radiance(b.low_um, b.interval_um(), b.intervals);
+      };
+      airglow = cache ? *cache->airglow(a.optics, make) : make();
+    }
     a.sky = std::make_shared<const SkyView>(lines, a.sunlight, a.earth, a.to_sun, a.sun_irradiance, background,
-                                            world->view.spectral);
+                                            airglow, world->view.spectral);
     // Moonlight scattered by the air over an observer inside it: the Moon's
     // irradiance above the air as eq. 7 gives it (its disc, phase law and
     // emission), from the Moon's direction.
@@ -1146,7 +1184,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       std::vector<double> E(light.reflected.size());
       for (std::size_t i = 0; i < E.size(); ++i) E[i] = (light.reflected[i] * phase + light.emitted[i]) * omega;
       a.moon_sky = std::make_shared<const SkyView>(lines, a.sunlight, a.earth, to_moon, E, std::vector<double>{},
-                                                   world->view.spectral);
+                                                   std::vector<double>{}, world->view.spectral);
     }
   }
   return world;

@@ -136,8 +136,15 @@ struct WorldAtmosphere {
   // Where a source in the (true, unit) direction d appears to an observer
   // inside the atmosphere: raised toward the zenith by the refraction
   // (atmosphere/refraction.hpp); d itself for an observer above it or in
-  // vacuum.
-  Vec3 apparent_direction(const Vec3& d) const;
+  // vacuum. A point at a finite distance is raised by `fraction` of it
+  // (refraction_fraction).
+  Vec3 apparent_direction(const Vec3& d, double fraction = 1.0) const;
+  // The share of the refraction of a source at infinity in its direction
+  // that a point at its distance shows (atmosphere::chord_refraction): 1 for
+  // the stars, a little less for a satellite (the bent ray's parallax),
+  // about k D / (2 R_E) over the full refraction for an aircraft D away; 0
+  // where nothing is refracted.
+  double refraction_fraction(const Vec3& point_m) const;
   Vec3 zenith = Vec3::UnitZ();                      // the observer's geodetic vertical (J2000)
   atmosphere::RefractionConstants refraction;       // at the observer, at the band's centre wavelength
   std::shared_ptr<const SurfacePaths> surface;      // over the Earth's surface (when it is imaged)
@@ -174,6 +181,9 @@ class WorldCache {
                                                             const std::function<atmosphere::SunlightTable()>& make);
   std::shared_ptr<const Downwelling> downwelling(const std::shared_ptr<const atmosphere::PathOptics>& optics,
                                                  const std::function<Downwelling()>& make);
+  // The airglow's zenith radiance per interval of the optics' band.
+  std::shared_ptr<const std::vector<double>> airglow(const std::shared_ptr<const atmosphere::PathOptics>& optics,
+                                                     const std::function<std::vector<double>()>& make);
 
  private:
   std::mutex mutex_;
@@ -184,6 +194,7 @@ class WorldCache {
   std::map<std::pair<const atmosphere::PathOptics*, double>, std::shared_ptr<const SightLines>> sight_lines_;
   std::map<const atmosphere::PathOptics*, std::shared_ptr<const atmosphere::SunlightTable>> sunlight_;
   std::map<const atmosphere::PathOptics*, std::shared_ptr<const Downwelling>> downwelling_;
+  std::map<const atmosphere::PathOptics*, std::shared_ptr<const std::vector<double>>> airglow_;
 };
 
 class World;
@@ -196,6 +207,11 @@ class WorldObject {
   bool central_body = false;  // a background, not a target (per-frame truth)
   double equatorial_radius_m = 0, polar_radius_m = 0;  // central bodies: for latitude/longitude and eclipses
   geometry::PlacedObject placed;  // parts, position relative to the observer (J2000 axes), body frame
+  // Where the observer's rays meet it (the ray caster's): `placed`, raised
+  // by the refraction for an observer inside the atmosphere
+  // (WorldAtmosphere::apparent_direction); light and shadow use `placed`.
+  geometry::PlacedObject seen;
+  double refraction_fraction = 0;  // WorldAtmosphere::refraction_fraction of its centre
   Vec3 geocentric_position_m = Vec3::Zero();  // J2000
   double range_m = 0;             // observer to body origin
   double bounding_radius_m = 0;   // sphere about the body origin enclosing every part

@@ -31,11 +31,12 @@ struct AtmosphereSettings {
   AerosolModel aerosol = AerosolModel::rural;
   double visibility_km = 23.0;       // meteorological range (Koschmieder: 3.912 / extinction at 0.55 um)
   bool downwelling = true;           // the sky's light on surfaces (eq. 9; ERRATA row on 4.1.5.3)
+  bool airglow = true;               // the night airglow's layer (atmosphere/airglow.hpp)
   double water_vapor_scale = 1.0;    // multiplies the profile's H2O column
   double ozone_scale = 1.0;          // multiplies the profile's O3 column
   bool operator==(const AtmosphereSettings& o) const {
     return model == o.model && profile == o.profile && aerosol == o.aerosol && visibility_km == o.visibility_km &&
-           downwelling == o.downwelling && water_vapor_scale == o.water_vapor_scale && ozone_scale == o.ozone_scale;
+           downwelling == o.downwelling && airglow == o.airglow && water_vapor_scale == o.water_vapor_scale && ozone_scale == o.ozone_scale;
   }
 };
 

@@ -173,9 +173,14 @@ std::vector<Spec> atmosphere_properties() {
   t.push_back(bool_property<Object>(
       "downwelling",
       "The sky's diffuse light on surfaces (eq. 9's DownWelling: Rayleigh and aerosol scatter, and the sky's "
-      "thermal emission); off reproduces single-scatter references that carry the direct Sun only (ERRATA). Kept "
-      "and saved, but not yet read: DownWelling is not modeled in this release",
+      "thermal emission); off reproduces single-scatter references that carry the direct Sun only (ERRATA)",
       [](Object& o) -> auto& { return o.atmosphere.downwelling; }));
+  t.push_back(bool_property<Object>(
+      "airglow",
+      "The night airglow: the upper atmosphere's emission from a layer 85-95 km up (O I, Na D, O2 and OH bands, "
+      "a continuum; data/atmosphere/airglow_nightglow.csv), seen through the air below it; it replaces spec "
+      "4.1.4's three airglow lines of the background light",
+      [](Object& o) -> auto& { return o.atmosphere.airglow; }));
   t.push_back(number_property<Object>("water_vapor_scale", "-",
                                       "Multiplies the profile's water-vapour density at every altitude (its column)",
                                       [](Object& o) -> auto& { return o.atmosphere.water_vapor_scale; },

@@ -77,6 +77,66 @@ TEST(Refraction, HorizonBlendAndInverse) {
 }
 
 // The US standard profile's own ground humidity is 46 % (ERRATA on 6.2.5.4).
+// The refraction of a point at a finite distance (issue 20 item 6),
+// atmosphere::chord_refraction:
+// - a target 20 km away on a near-level line from the US76 ground is seen
+//   k D / (2 R_E) above its place, with the geodetic coefficient of
+//   refraction k = 503 P / T^2 (0.0343 + dT/dh) (P hPa, T K, dT/dh K/m;
+//   Brunner and Angus, e.g. Bomford "Geodesy" 4th ed., 3.07) for the US76
+//   ground (1013.25 hPa, 288.15 K, -0.0065 K/m): k = 0.171, within 3 %
+//   (the air changes over the 175 m the line climbs);
+// - a star (1e12 m) shows the ray's whole bending, which equals Smart's
+//   integral (ray_traced_refraction_rad) within 0.5" at 30 and 10 deg;
+// - a satellite 1,000 km up at 10 deg shows a little less (the bent ray's
+//   parallax), and the share grows with the distance;
+// - the chord is continuous across the top of the atmosphere and across
+//   the horizon of a site 3 km up.
+TEST(Refraction, ChordToPointsAtFiniteDistance) {
+  const auto p = us76();
+  const EarthFigure earth;
+  const double a = earth.equatorial_radius_m;
+  const Vec3 site(a, 0, 0);
+  const auto along = [](double h_deg) {
+    const double h = h_deg * constants::rad_per_deg;
+    return Vec3(std::sin(h), 0, std::cos(h));
+  };
+  {
+    const double D = 20e3, k = 503.0 * 1013.25 / (288.15 * 288.15) * (0.0343 - 0.0065);
+    const ChordRefraction c = chord_refraction(*p, earth, site, along(0.5), D);
+    EXPECT_FALSE(c.ends_on_ground);
+    EXPECT_NEAR(c.chord_rad / (k * D / (2.0 * a)), 1.0, 0.03) << c.chord_rad / kArcsec << "\"";
+  }
+  for (const double h_deg : {30.0, 10.0}) {
+    const ChordRefraction star = chord_refraction(*p, earth, site, along(h_deg), 1e12);
+    EXPECT_NEAR(star.bending_rad / kArcsec, ray_traced_refraction_rad(*p, earth, site, along(h_deg)) / kArcsec, 0.5);
+    EXPECT_NEAR(star.chord_rad / star.bending_rad, 1.0, 1e-5);
+  }
+  {
+    const ChordRefraction leo = chord_refraction(*p, earth, site, along(10.0), 3.0e6);
+    const ChordRefraction geo = chord_refraction(*p, earth, site, along(10.0), 3.8e7);
+    EXPECT_GT(leo.chord_rad / leo.bending_rad, 0.95);
+    EXPECT_LT(leo.chord_rad / leo.bending_rad, geo.chord_rad / geo.bending_rad);
+    EXPECT_LT(geo.chord_rad / geo.bending_rad, 1.0);
+  }
+  {  // straight up from the ground through the top (100 km up at 60 deg elevation ~ 115 km away)
+    const double top = p->top_altitude_m();
+    const auto at = [&](double altitude) {
+      const double e = 60.0 * constants::rad_per_deg;
+      const double R = std::sqrt((a + altitude) * (a + altitude) - a * a * std::cos(e) * std::cos(e)) - a * std::sin(e);
+      return chord_refraction(*p, earth, site, along(60.0), R).chord_rad;
+    };
+    EXPECT_NEAR(at(top - 10.0) / at(top + 10.0), 1.0, 1e-4);
+    EXPECT_GT(at(top - 10.0), at(0.5 * top));
+  }
+  {  // a site 3 km up looking 0.1 deg above and below its level line, 50 km out
+    const Vec3 high(a + 3000.0, 0, 0);
+    const double up = chord_refraction(*p, earth, high, along(0.1), 50e3).chord_rad;
+    const double down = chord_refraction(*p, earth, high, along(-0.1), 50e3).chord_rad;
+    EXPECT_GT(up, 0.0);
+    EXPECT_NEAR(down / up, 1.0, 0.05);
+  }
+}
+
 TEST(AerosolOptics, GroundHumidityAndSpectra) {
   const auto p = us76();
   const Densities g = p->at(0.0);

@@ -22,6 +22,30 @@ double poly(double x, std::initializer_list<double> c) {  // c0 + c1 x + c2 x^2 
   return sum;
 }
 
+double wrap_360(double deg) {
+  const double w = std::fmod(deg, 360.0);
+  return w < 0 ? w + 360.0 : (w >= 360.0 ? 0.0 : w);
+}
+
+// Stirling's interpolation formula (central differences, five nodes: the
+// tabulated x0 at or below the angle and two on either side), on a table of
+// 36 values every 10 deg around the circle. With p = (x - x0) / 10,
+// f = f0 + p mu.delta f0 + p^2/2 delta^2 f0 + p (p^2 - 1)/6 mu.delta^3 f0
+//     + p^2 (p^2 - 1)/24 delta^4 f0.
+double stirling_on_circle(const double (&table)[36], double deg) {
+  const double x = wrap_360(deg) / 10.0;
+  const int k = std::min(static_cast<int>(x), 35);
+  const double p = x - k;
+  double f[5];
+  for (int i = 0; i < 5; ++i) f[i] = table[(k - 2 + i + 36) % 36];
+  const double d1[4] = {f[1] - f[0], f[2] - f[1], f[3] - f[2], f[4] - f[3]};
+  const double d2[3] = {d1[1] - d1[0], d1[2] - d1[1], d1[3] - d1[2]};
+  const double d3[2] = {d2[1] - d2[0], d2[2] - d2[1]};
+  const double d4 = d3[1] - d3[0];
+  return f[2] + p * 0.5 * (d1[1] + d1[2]) + 0.5 * p * p * d2[1] + p * (p * p - 1) / 6.0 * 0.5 * (d3[0] + d3[1]) +
+         p * p * (p * p - 1) / 24.0 * d4;
+}
+
 }  // namespace
 
 DiskPhaseLaw disk_phase_law(universe::CentralBody body) {
@@ -93,20 +117,108 @@ double mallama_hilton_v_1_alpha(DiskPhaseLaw planet, double a) {
     case DiskPhaseLaw::venus:  // eqs. 3 and 4
       return a < 163.7 ? poly(a, {-4.384, -1.044e-03, 3.687e-04, -2.814e-06, 8.938e-09})
                        : poly(a, {236.05828, -2.81914, 8.39034e-03});
-    case DiskPhaseLaw::mars:  // eqs. 6 and 7 (without L(lambda_e), L(Ls))
+    case DiskPhaseLaw::mars:  // eqs. 6 and 7 (L(lambda_e), L(Ls): face_terms_mag)
       return a <= 50.0 ? poly(a, {-1.601, 2.267e-02, -1.302e-04}) : poly(a, {-0.367, -0.02573, 0.0003445});
     case DiskPhaseLaw::jupiter: {  // eqs. 8 and 9
       if (a <= 12.0) return poly(a, {-9.395, -3.7e-04, 6.16e-04});
       return -9.428 - 2.5 * std::log10(poly(a / 180.0, {1.0, -1.507, -0.363, -0.062, 2.809, -1.876}));
     }
-    case DiskPhaseLaw::saturn:  // eqs. 11 and 12, the globe alone
+    case DiskPhaseLaw::saturn:  // eqs. 11 and 12, the globe alone (the rings: face_terms_mag)
       return a <= 6.5 ? poly(a, {-8.95, -3.7e-04, 6.16e-04}) : poly(a, {-8.94, 2.446e-04, 2.672e-04, -1.506e-06, 4.767e-09});
-    case DiskPhaseLaw::uranus:  // eqs. 13 and 14 (sub-latitude term left out)
+    case DiskPhaseLaw::uranus:  // eqs. 13 and 14 (the sub-latitude term: face_terms_mag)
       return a <= 3.1 ? -7.110 : poly(a, {-7.110, 6.587e-03, 1.045e-04});
     case DiskPhaseLaw::neptune:  // eqs. 16 (after 2000.0) and 17
       return a <= 1.9 ? -7.00 : poly(a, {-7.00, 7.944e-03, 9.617e-05});
     default: throw Error(Status::out_of_range, "disk photometry: not a planet of Mallama & Hilton (2018)");
   }
+}
+
+FaceAngles face_angles(const DiscView& view) {
+  FaceAngles a;
+  const frames::Vec3 sun = view.to_sun.normalized(), observer = view.to_observer.normalized();
+  a.phase_deg = std::acos(std::clamp(sun.dot(observer), -1.0, 1.0)) / kDeg;
+  const frames::Vec3 s = view.body_to_j2000.transpose() * sun, o = view.body_to_j2000.transpose() * observer;
+  const auto west = [](const frames::Vec3& d) { return wrap_360(-std::atan2(d.y(), d.x()) / kDeg); };
+  a.sub_solar_latitude_deg = std::asin(std::clamp(s.z(), -1.0, 1.0)) / kDeg;
+  a.sub_observer_latitude_deg = std::asin(std::clamp(o.z(), -1.0, 1.0)) / kDeg;
+  a.sub_solar_west_longitude_deg = west(s);
+  a.sub_observer_west_longitude_deg = west(o);
+  // The body seen from the Sun, in the J2000 ecliptic (obliquity 84381.406",
+  // IAU 2006).
+  constexpr double eps = 84381.406 / 3600.0 * kDeg;
+  const frames::Vec3 h = -sun;
+  a.heliocentric_ecliptic_longitude_deg =
+      wrap_360(std::atan2(h.y() * std::cos(eps) + h.z() * std::sin(eps), h.x()) / kDeg);
+  return a;
+}
+
+double mars_effective_central_meridian_deg(double sub_observer_west_deg, double sub_solar_west_deg) {
+  double cm = 0.5 * (sub_observer_west_deg + sub_solar_west_deg);
+  if (std::fabs(sub_observer_west_deg - sub_solar_west_deg) > 180.0) cm += 180.0;
+  return wrap_360(cm);
+}
+
+double mars_solar_longitude_deg(double heliocentric_ecliptic_longitude_deg) {
+  return wrap_360(heliocentric_ecliptic_longitude_deg - 85.0);
+}
+
+double mars_rotational_correction_mag(double effective_central_meridian_deg) {
+  return stirling_on_circle(mars_corrections::kRotationMag, effective_central_meridian_deg);
+}
+
+double mars_orbital_correction_mag(double solar_longitude_deg) {
+  return stirling_on_circle(mars_corrections::kOrbitMag, solar_longitude_deg);
+}
+
+double saturn_ring_opening_deg(double sub_solar_latitude_deg, double sub_observer_latitude_deg) {
+  const double product = sub_solar_latitude_deg * sub_observer_latitude_deg;
+  return product > 0 ? std::sqrt(product) : 0.0;
+}
+
+double saturn_with_rings_v_1_alpha(double a, double ring_opening_deg) {  // eq. 10
+  const double sin_b = std::sin(ring_opening_deg * kDeg);
+  return -8.914 - 1.825 * sin_b + 0.026 * a - 0.378 * sin_b * std::exp(-2.25 * a);
+}
+
+double uranus_sub_latitude_mag(double sub_solar_planetographic_deg, double sub_observer_planetographic_deg) {
+  return -0.00084 * 0.5 * (std::fabs(sub_solar_planetographic_deg) + std::fabs(sub_observer_planetographic_deg));
+}
+
+double face_terms_mag(DiskPhaseLaw law, bool rings, const FaceAngles& f) {
+  switch (law) {
+    case DiskPhaseLaw::mars:
+      return mars_rotational_correction_mag(
+                 mars_effective_central_meridian_deg(f.sub_observer_west_longitude_deg, f.sub_solar_west_longitude_deg)) +
+             mars_orbital_correction_mag(mars_solar_longitude_deg(f.heliocentric_ecliptic_longitude_deg));
+    case DiskPhaseLaw::saturn: {
+      if (!rings) return 0.0;
+      constexpr double kPhaseLimitDeg = 6.5, kOpeningLimitDeg = 27.0;  // eq. 10's observed range
+      const double a = std::min(f.phase_deg, kPhaseLimitDeg);
+      const double b = std::min(saturn_ring_opening_deg(f.sub_solar_latitude_deg, f.sub_observer_latitude_deg),
+                                kOpeningLimitDeg);
+      return saturn_with_rings_v_1_alpha(a, b) - mallama_hilton_v_1_alpha(DiskPhaseLaw::saturn, a);
+    }
+    case DiskPhaseLaw::uranus: {
+      // Planetographic latitude: tan(phi_g) = tan(phi_c) (a / c)^2.
+      const universe::CentralBodyInfo& u = universe::central_body_info(universe::CentralBody::uranus);
+      const double k = (u.equatorial_radius_m / u.polar_radius_m) * (u.equatorial_radius_m / u.polar_radius_m);
+      const auto graphic = [k](double centric_deg) {
+        return std::atan2(std::sin(centric_deg * kDeg) * k, std::cos(centric_deg * kDeg)) / kDeg;
+      };
+      return uranus_sub_latitude_mag(graphic(f.sub_solar_latitude_deg), graphic(f.sub_observer_latitude_deg));
+    }
+    default: return 0.0;
+  }
+}
+
+bool DiskPhotometry::has_face_terms() const {
+  return law_ == DiskPhaseLaw::mars || law_ == DiskPhaseLaw::uranus || rings_;
+}
+
+double DiskPhotometry::phase(const DiscView& view) const {
+  const double cos_psi = view.to_sun.dot(view.to_observer);  // (unit vectors)
+  if (!has_face_terms()) return phase(cos_psi);
+  return phase(cos_psi) * std::pow(10.0, -0.4 * face_terms_mag(law_, rings_, face_angles(view)));
 }
 
 double DiskPhotometry::geometric_albedo_per_srf() const { return law_ == DiskPhaseLaw::moon ? 1.0 : 2.0 / 3.0; }

@@ -182,7 +182,8 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
     w->bounding_radius_m =
         std::max(w->bounding_radius_m, part.offset_m.norm() + geometry::shape_bounding_radius_m(part.geom));
   w->volumetric_radius_m = volumetric_radius_m(po.parts);
-  if (w->central_body) w->disk_photometry = radiometry::DiskPhotometry(radiometry::disk_phase_law(o.central_body));
+  if (w->central_body)
+    w->disk_photometry = radiometry::DiskPhotometry(radiometry::disk_phase_law(o.central_body), o.body.rings);
   w->patch_size_m = patch_size_m(o, po.parts, world.view.fidelity);
   const universe::PointSourceModel model = o.body.point_source_model;
   w->detailed_point_source =
@@ -236,7 +237,18 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     if (cos_i > 0) {
       const double f = sun_fraction(p);
       if (f > 0) {
-        const double g = f * universe::sun_projected_solid_angle_sr(d) * cos_i * brdf.value(I, toward, n);
+        double g = f * universe::sun_projected_solid_angle_sr(d) * cos_i * brdf.value(I, toward, n);
+        // A planet's resolved disc (Lambertian patches) carries its observed
+        // law (issue 21): sunlight times Phase_law / Phase_Lambert at the
+        // angle Sun-planet-`toward`, so that the disc's total toward the
+        // observer (or a receiver) is the law's, face terms included.
+        if (!disk_photometry.lambertian() && disk_photometry.law() != radiometry::DiskPhaseLaw::moon &&
+            brdf.lambertian()) {
+          const Vec3 centre_to_sun = (w.sun.position_m - placed.position_m).normalized();
+          const double lambert = radiometry::lambertian_sphere_phase(centre_to_sun.dot(toward));
+          if (lambert > 0)
+            g *= disk_photometry.phase(radiometry::DiscView{centre_to_sun, toward, placed.body_to_frame}) / lambert;
+        }
         if (under_atmosphere_) {  // eq. 9's T_in at the point's Sun zenith angle
           thread_local std::vector<double> T;
           w.atmosphere.surface->sun_at(cos_i, T);
@@ -287,7 +299,8 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
       for (std::size_t i = 0; i < count; ++i) out[i] += g * spectra.emitted[i];
       continue;
     }
-    const double phase = w.objects[static_cast<std::size_t>(src.object)]->disk_photometry.phase(-src.to_sun.dot(I));
+    const WorldObject& source = *w.objects[static_cast<std::size_t>(src.object)];
+    const double phase = source.disk_photometry.phase(radiometry::DiscView{src.to_sun, -I, source.placed.body_to_frame});
     for (std::size_t i = 0; i < count; ++i) out[i] += g * (spectra.reflected[i] * phase + spectra.emitted[i]);
   }
 }
@@ -299,11 +312,21 @@ const LightSpectra& WorldObject::light_spectra() const {
     std::vector<double> srf(n, 0.0), e(n);
     std::vector<double>& emitted = light_spectra_.emitted;
     emitted.assign(n, 0.0);
-    double total_area = 0;
+    double total_area = 0, srf_weight = 0;
+    // The Moon's SRF is its albedo map's mean over the disc seen (projected
+    // area, as data/moon/make_albedo.py normalises the map to p over the
+    // near-side disc): its law is the observed disc's. Its receivers are near
+    // the observer as the Moon sees them, so the observer's disc stands for
+    // theirs. (The whole sphere's mean is 0.1396 for the near side's 0.12:
+    // the bitmap Moon's light was 0.16 mag too bright.) Others: the area mean.
+    const bool seen_disc = surface->varying() && disk_photometry.law() == radiometry::DiskPhaseLaw::moon;
+    const Vec3 toward = toward_observer_body();
     const auto add = [&](const SurfaceSite& site, double area) {
       const SurfacePoint point = surface->at(site);
+      const double weight = seen_disc ? area * std::max(0.0, site.normal_body.dot(toward)) : area;
       if (surface->reflects(point))
-        for (std::size_t i = 0; i < n; ++i) srf[i] += area * point.spectrum->srf()[i];
+        for (std::size_t i = 0; i < n; ++i) srf[i] += weight * point.spectrum->srf()[i];
+      srf_weight += weight;
       std::fill(e.begin(), e.end(), 0.0);
       surface->add_emission(point, e);
       for (std::size_t i = 0; i < n; ++i) emitted[i] += area * e[i];
@@ -319,7 +342,7 @@ const LightSpectra& WorldObject::light_spectra() const {
     }
     if (total_area > 0)
       for (std::size_t i = 0; i < n; ++i) {
-        srf[i] /= total_area;
+        srf[i] /= srf_weight > 0 ? srf_weight : total_area;
         emitted[i] /= total_area;
       }
     const double fraction = sun_fraction(placed.position_m);
@@ -491,7 +514,8 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
     const LightSpectra& self = light_spectra();
     const double omega = constants::pi * volumetric_radius_m * volumetric_radius_m / r2;
     const Vec3 to_observer = -placed.position_m / range_m;
-    const double phase = disk_photometry.phase(w.lights[static_cast<std::size_t>(light_)].to_sun.dot(to_observer));
+    const double phase = disk_photometry.phase(
+        radiometry::DiscView{w.lights[static_cast<std::size_t>(light_)].to_sun, to_observer, placed.body_to_frame});
     for (std::size_t i = 0; i < E.size(); ++i) E[i] = (self.reflected[i] * phase + self.emitted[i]);
     E = at_sensor(std::move(E));
     for (double& e : E) e *= omega;

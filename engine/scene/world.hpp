@@ -289,8 +289,10 @@ class WorldObject {
   bool plain() const { return surface->plain() && !under_atmosphere_; }
 
   // This object as a source of eq. 7: its area-weighted SRF and emission
-  // (per patch where the temperature varies, per part otherwise), made on
-  // first use (thread-safe): only frames that light another object read it.
+  // (per patch where the temperature varies, per part otherwise; the Moon's
+  // SRF weighted over the disc it shows the observer, as its albedo map is
+  // normalised), made on first use (thread-safe): only frames that light
+  // another object or image it as a simple point source read it.
   const LightSpectra& light_spectra() const;
 
   // Visible fraction of the Sun's disc at a point of this object (umbra 0,

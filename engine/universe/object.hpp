@@ -83,6 +83,7 @@ struct BodyProperties {
   double eclipse_temperature_K = 200.0;   // thermal model eclipse: in full shadow
   PointSourceModel point_source_model = PointSourceModel::automatic;
   std::string spectrum;  // a tabulated self-radiance (universe/spectrum_table.hpp) instead of eps B(T); "" none
+  bool rings = false;    // Saturn (central body): its disc's brightness with the rings' (on by default)
 };
 
 // The shape parts of a body in its body frame: the composite's parts, one part

@@ -134,6 +134,27 @@ std::vector<Spec> body_properties(bool missile) {
   return t;
 }
 
+// Saturn's rings in its disc's brightness (radiometry/disk_photometry.hpp:
+// Mallama & Hilton 2018 eq. 10): a property of every central body, true by
+// default for Saturn only, and only Saturn's may be true.
+Spec rings_property() {
+  Spec rings = bool_property<Object>(
+      "rings",
+      "Saturn: its brightness as a point source and as a light includes its rings' (Mallama & Hilton 2018 eq. 10, "
+      "from the ring opening seen and lit; true, the default, as observed magnitudes do); false: the globe alone "
+      "(eqs. 11-12). The rings are not drawn in images",
+      [](Object& o) -> auto& { return o.body.rings; });
+  const auto set = rings.set;
+  rings.set = [set](Object& o, const Value& v) {
+    Object probe = o;
+    set(probe, v);
+    if (probe.body.rings && !(o.kind == ObjectKind::central_body && o.central_body == CentralBody::saturn))
+      throw Error(Status::not_allowed, "rings: only Saturn's rings are modeled, not " + o.name + "'s");
+    set(o, v);
+  };
+  return rings;
+}
+
 // The Earth's atmosphere (spec 4.3.1.1, 4.1.5.3 eq. 9): properties of every
 // central body, but only the Earth's may be switched on.
 std::vector<Spec> atmosphere_properties() {
@@ -293,6 +314,7 @@ const std::vector<Spec>& properties_of(ObjectKind kind) {
   static const std::vector<Spec> sites = site_properties();
   static const std::vector<Spec> central = [] {
     std::vector<Spec> t = body_properties(false);
+    t.push_back(rings_property());
     for (Spec& s : atmosphere_properties()) t.push_back(std::move(s));
     return t;
   }();

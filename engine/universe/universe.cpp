@@ -61,6 +61,7 @@ Object& Universe::add(ObjectKind kind, const std::string& name, const std::strin
       if (surface.climatology) o.body.thermal_model = ThermalModel::climatology;
       o.body.shape = ShapeKind::oblate;
       o.body.dimensions_m = {body->equatorial_radius_m, body->polar_radius_m};
+      o.body.rings = body->id == CentralBody::saturn;  // observed magnitudes include them
       break;
     }
     case ObjectKind::star_field:

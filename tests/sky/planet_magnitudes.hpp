@@ -11,6 +11,11 @@
 // paper's reference code (Ap_Mag_V3.f90).
 #pragma once
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace eoir::test_oracle {
 
@@ -62,6 +67,89 @@ inline double neptune_v_mag(double r_au, double delta_au, double a) {
   const double distance = 5.0 * std::log10(r_au * delta_au);
   if (a <= 1.9) return -7.00 + distance;                  // eq. 16 (after 2000.0)
   return -7.00 + distance + 7.944e-3 * a + 9.617e-5 * a * a;  // eq. 17
+}
+
+// Mars' corrections L(lambda_e) + L(Ls) of eqs. 6-7 (Mallama 2007 Tables 6
+// and 8), for the tests: the table of data/planets/
+// mars_brightness_corrections.csv read here (36 rows, 0-350 deg), the cubic
+// through the four nodes around the angle (the engine interpolates with
+// Stirling's five-node formula: they differ by a few 0.001 mag), and Mars'
+// orientation from the IAU WGCCRE 2015 elements (Archinal et al. 2018:
+// pole RA 317.68143 - 0.1061 T, Dec 52.88650 - 0.0609 T, W = 176.630 +
+// 350.89198226 d).
+struct MarsCorrectionTables {
+  std::vector<double> rotation, orbit;
+};
+
+inline MarsCorrectionTables read_mars_corrections(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  MarsCorrectionTables t;
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header) {
+      header = false;
+      continue;
+    }
+    std::istringstream row(line);
+    std::string angle, rot, orb;
+    std::getline(row, angle, ',');
+    std::getline(row, rot, ',');
+    std::getline(row, orb, ',');
+    t.rotation.push_back(std::stod(rot));
+    t.orbit.push_back(std::stod(orb));
+  }
+  if (t.rotation.size() != 36) throw std::runtime_error(path + ": 36 rows expected");
+  return t;
+}
+
+inline double cubic_on_circle(const std::vector<double>& table, double deg) {
+  const double x = std::fmod(std::fmod(deg, 360.0) + 360.0, 360.0) / 10.0;
+  const int k = static_cast<int>(x) % 36;
+  const double u = x - std::floor(x);
+  const auto f = [&](int i) { return table[static_cast<std::size_t>((k + i + 36) % 36)]; };
+  return -u * (u - 1) * (u - 2) / 6 * f(-1) + (u + 1) * (u - 1) * (u - 2) / 2 * f(0) -
+         (u + 1) * u * (u - 2) / 2 * f(1) + (u + 1) * u * (u - 1) / 6 * f(2);
+}
+
+// West longitude [deg] on Mars under the unit direction `dir` (J2000, from
+// Mars' centre), d days (TDB) after J2000.0 at Mars (light time taken off).
+inline double mars_west_longitude_deg(const double dir[3], double d) {
+  const double deg = 3.14159265358979323846 / 180.0, T = d / 36525.0;
+  const double ra = (317.68143 - 0.1061 * T) * deg, dec = (52.88650 - 0.0609 * T) * deg;
+  const double node[3] = {-std::sin(ra), std::cos(ra), 0.0};  // the equator's ascending node on the ICRF equator
+  const double east[3] = {-std::sin(dec) * std::cos(ra), -std::sin(dec) * std::sin(ra), std::cos(dec)};
+  const double theta = std::atan2(dir[0] * east[0] + dir[1] * east[1] + dir[2] * east[2],
+                                  dir[0] * node[0] + dir[1] * node[1] + dir[2] * node[2]) /
+                       deg;
+  return std::fmod(std::fmod(176.630 + 350.89198226 * d - theta, 360.0) + 360.0, 360.0);
+}
+
+// L(lambda_e) + L(Ls) [mag] from the sub-observer and sub-solar west
+// longitudes and Mars' heliocentric J2000 ecliptic longitude [deg].
+inline double mars_corrections_mag(const MarsCorrectionTables& t, double sub_observer_west, double sub_solar_west,
+                                   double helio_ecliptic_lon) {
+  double cm = 0.5 * (sub_observer_west + sub_solar_west);
+  if (std::fabs(sub_observer_west - sub_solar_west) > 180.0) cm += 180.0;
+  return cubic_on_circle(t.rotation, cm) + cubic_on_circle(t.orbit, helio_ecliptic_lon - 85.0);
+}
+
+// The Uranus sub-latitude term of eqs. 13-14, -0.00084 mag per degree of
+// the mean absolute planetographic latitude under the Sun and the observer,
+// from unit directions (J2000, from Uranus' centre): IAU WGCCRE 2015 pole
+// RA 257.311, Dec -15.175; radii 25,559 and 24,973 km.
+inline double uranus_sub_latitude_term_mag(const double to_sun[3], const double to_observer[3]) {
+  const double deg = 3.14159265358979323846 / 180.0;
+  const double ra = 257.311 * deg, dec = -15.175 * deg;
+  const double pole[3] = {std::cos(dec) * std::cos(ra), std::cos(dec) * std::sin(ra), std::sin(dec)};
+  const double k = (25559.0 / 24973.0) * (25559.0 / 24973.0);
+  const auto graphic_deg = [&](const double u[3]) {
+    const double s = pole[0] * u[0] + pole[1] * u[1] + pole[2] * u[2];
+    return std::atan2(s * k, std::sqrt(std::fmax(0.0, 1.0 - s * s))) / deg;
+  };
+  return -0.00084 * 0.5 * (std::fabs(graphic_deg(to_sun)) + std::fabs(graphic_deg(to_observer)));
 }
 
 }  // namespace eoir::test_oracle

@@ -18,7 +18,10 @@
 // (eraPlan94 Mars, eraEpv00 Earth and Sun), within 1 %; eq. 7's phase law is
 // Mars' observed one (Mallama & Hilton 2018 eq. 6 as
 // tests/sky/planet_magnitudes.hpp transcribes it; issue 21) in place of the
-// Lambertian sphere's.
+// Lambertian sphere's, with Mars' rotational and orbital corrections
+// (-0.066 mag on this date: the table of data/planets/
+// mars_brightness_corrections.csv through the test's own interpolation and
+// IAU orientation, tests/sky/planet_magnitudes.hpp).
 #include <erfa.h>
 #include <gtest/gtest.h>
 
@@ -102,8 +105,21 @@ TEST(Spec_6_2_5_3, MarsAsPointSourceReflectedAndThermalPeaks) {
   const v::V3 to_sun = sun - mars, to_obs = observer - mars;
   const double d_sun = v::norm(to_sun), r = v::norm(to_obs);
   const double psi = std::acos(v::dot(to_sun, to_obs) / (d_sun * r));
-  const double phase = std::pow(10.0, -0.4 * (eoir::test_oracle::mars_v_mag(1.0, 1.0, psi / v::kDeg) -
-                                               eoir::test_oracle::mars_v_mag(1.0, 1.0, 0.0)));
+  // Mars' rotational and orbital corrections (issue 21), from the face seen
+  // (IAU orientation a light time before the epoch) and Mars' heliocentric
+  // ecliptic longitude.
+  namespace o = eoir::test_oracle;
+  const o::MarsCorrectionTables tables = o::read_mars_corrections(EOIR_MARS_CORRECTIONS_CSV);
+  const double d_at_mars = (tt1 - 2451545.0) + tt2 - v::norm(observer - mars) / 299792458.0 / 86400.0;
+  const v::V3 obs_unit = v::unit(observer - mars), sun_unit = v::unit(sun - mars);
+  const double u_obs[3] = {obs_unit[0], obs_unit[1], obs_unit[2]}, u_sun[3] = {sun_unit[0], sun_unit[1], sun_unit[2]};
+  const double eps = 84381.406 / 3600.0 * v::kDeg;
+  const double helio_lon = std::atan2(mars_h[0][1] * std::cos(eps) + mars_h[0][2] * std::sin(eps), mars_h[0][0]) / v::kDeg;
+  const double correction = o::mars_corrections_mag(tables, o::mars_west_longitude_deg(u_obs, d_at_mars),
+                                                    o::mars_west_longitude_deg(u_sun, d_at_mars), helio_lon);
+  const double phase = std::pow(10.0, -0.4 * (o::mars_v_mag(1.0, 1.0, psi / v::kDeg) - o::mars_v_mag(1.0, 1.0, 0.0) +
+                                              correction));
+  std::printf("      Mars' rotational and orbital corrections %+.4f mag\n", correction);
   const double R = std::cbrt(3396.19e3 * 3396.19e3 * 3376.20e3);  // volumetric radius (IAU 2015)
   const double omega = v::kPi * R * R / (r * r);
   std::printf("      distance %.6f au, Sun-Mars %.6f au, phase angle %.3f deg, Phase %.6f\n", r / v::kAu_m,

@@ -3,7 +3,9 @@
 // phase-law table (tests/data/allen_1973_lunar_phase_law.csv: V at full Moon
 // -12.73 at the mean distance 384,400 km and 1 au from the Sun, plus the
 // tabulated Delta V), within 0.15 mag, in the three ways the engine sees it:
-//  - simple point source (eq. 7 with the Moon's disc law),
+//  - simple point source (eq. 7 with the Moon's disc law), in the default
+//    scene mode and in bitmap mode (the albedo map's mean over the disc
+//    seen: the light the Moon sheds on other objects as eq. 7 too),
 //  - detailed point source (the sum over its patches of the lunar
 //    Lommel-Seeliger surface), in the default scene mode (material
 //    lunar_regolith) and in bitmap mode (the albedo map),
@@ -125,7 +127,7 @@ double allen_at(const std::vector<std::pair<double, double>>& table, double g) {
 }
 
 struct Views {
-  double phase_deg = 0, v_simple = 0, v_detailed = 0, v_bitmap = 0, v_image = 0, expected = 0;
+  double phase_deg = 0, v_simple = 0, v_detailed = 0, v_simple_bitmap = 0, v_bitmap = 0, v_image = 0, expected = 0;
 };
 
 // The V of the spectrum at the aperture, and its band irradiance.
@@ -183,6 +185,10 @@ Views views(double phase_deg, bool waning, const std::vector<std::pair<double, d
     out.v_detailed = v_of(host);
   }
   {
+    ScenarioHost host("v_mars2.json", scenario("simple", "bitmap", 16, 4.0));
+    out.v_simple_bitmap = v_of(host);
+  }
+  {
     // Bitmap: the albedo map; the image of the same scene, resolved (a
     // 1.04 deg Moon in a 2 deg field of 128 pixels, 4 x 4 samples each).
     constexpr int kPixels = 128;
@@ -196,8 +202,11 @@ Views views(double phase_deg, bool waning, const std::vector<std::pair<double, d
     const double band_image = img.sum() * step * step;
     out.v_image = out.v_bitmap - 2.5 * std::log10(band_image / band_detailed);
   }
-  std::printf("%s  g %5.1f deg  Allen V %+7.3f  simple %+7.3f  detailed %+7.3f  bitmap %+7.3f  image %+7.3f\n",
-              iso.c_str(), out.phase_deg, out.expected, out.v_simple, out.v_detailed, out.v_bitmap, out.v_image);
+  std::printf(
+      "%s  g %5.1f deg  Allen V %+7.3f  simple %+7.3f  detailed %+7.3f  bitmap: simple %+7.3f  detailed %+7.3f  "
+      "image %+7.3f\n",
+      iso.c_str(), out.phase_deg, out.expected, out.v_simple, out.v_detailed, out.v_simple_bitmap, out.v_bitmap,
+      out.v_image);
   return out;
 }
 
@@ -219,7 +228,107 @@ TEST(Spec_6_2_5, MoonFollowsAllen1973PhaseLawWithinPointOneFiveMag) {
     }
     const double expected = 0.5 * (waxing.expected + waning.expected);
     EXPECT_NEAR(0.5 * (waxing.v_bitmap + waning.v_bitmap), expected, 0.15) << g;
+    EXPECT_NEAR(0.5 * (waxing.v_simple_bitmap + waning.v_simple_bitmap), expected, 0.15) << g;
+    // The simple model's map mean is the seen disc's (was the sphere's: 0.16
+    // mag bright), so it and the patch sum agree on their mean.
+    EXPECT_NEAR(0.5 * (waxing.v_simple_bitmap + waning.v_simple_bitmap), 0.5 * (waxing.v_bitmap + waning.v_bitmap),
+                0.08)
+        << g;
     EXPECT_NEAR(0.5 * (waxing.v_image + waning.v_image), expected, 0.15) << g;
     EXPECT_NEAR(waxing.v_image, waxing.v_bitmap, 0.05) << g;  // the image sums what the patches give
+  }
+}
+
+namespace {
+
+// The Moon as a light (issue 21 item 4): the radiance of a gray sphere
+// (SRF 0.5, 0 K, 100 m beyond the observer of `views`, straight away from
+// the Moon) at the point facing the Moon, which the Sun does not reach at
+// these phase angles (the Moon's elongation is 180 deg - g), with no Earth
+// and no star field in the scene: moonlight alone, L = SRF / pi E_moon.
+// The Moon lights it as eq. 7 (its disc: the area_source_solid_angle_sr knob
+// above its 2.6e-4 sr) or as eq. 8 (its patches: the knob below it), in
+// bitmap mode (the albedo map). Returns E = pi L / SRF over the band
+// (W cm^-2), and the Moon's own band irradiance at the observer from the
+// point-source path of the same model (simple for eq. 7, detailed for eq. 8).
+struct Moonlight {
+  double as_disc = 0, as_patches = 0, simple = 0, detailed = 0;
+};
+
+Moonlight moonlight(double phase_deg, bool waning) {
+  const double seconds = seconds_at_phase(phase_deg, waning);
+  const Geometry g = geometry(seconds);
+  const std::string iso = iso_utc(seconds), later = iso_utc(seconds + 60.0);
+  const v::V3 observer = g.moon + 0.5 * v::norm(g.moon) * v::unit(-1.0 * g.moon);
+  const v::V3 ball = observer + 100.0 * v::unit(observer - g.moon);
+  constexpr double kSrf = 0.5;
+  const auto scenario = [&](const std::string& target, double knob_sr, const std::string& model) {
+    return [=](nlohmann::json& doc) {
+      doc["start"] = iso;
+      doc["stop"] = later;
+      doc["central_bodies"] =
+          nlohmann::json::array({{{"name", "Moon"}, {"properties", {{"point_source_model", model}}}}});
+      v::set_fixed_j2000(doc["objects"][0], iso, later, observer);
+      nlohmann::json sphere = {{"name", "Ball"},
+                               {"kind", "satellite"},
+                               {"properties",
+                                {{"shape", "sphere"}, {"dimensions_m", {1.0}}, {"reflectance", kSrf},
+                                 {"temperature_K", 0.0}}}};
+      v::set_fixed_j2000(sphere, iso, later, ball);
+      doc["objects"].push_back(sphere);
+      nlohmann::json& sensor = doc["sensors"][0];
+      sensor["pointing"]["target"] = target;
+      nlohmann::json& p = sensor["parameters"];
+      p["band_low_um"] = 0.46;
+      p["band_high_um"] = 0.71;
+      p["spectral_intervals"] = 50;
+      p["diffraction_wavelength_um"] = 0.55;
+      p["scene_mode"] = "bitmap";
+      p["area_source_solid_angle_sr"] = knob_sr;
+      p["horizontal_pixels"] = p["vertical_pixels"] = 17;  // pixel (8, 8) at the centre: the normal faces the Moon
+    };
+  };
+  Moonlight m;
+  for (const bool as_disc : {true, false}) {
+    ScenarioHost host("v_mars2.json", scenario("Ball", as_disc ? 1e-3 : 1e-7, "simple"));
+    host.render();
+    const auto pick = host.pick(8, 8, 1);  // the centre sample of pixel (8, 8)
+    EXPECT_TRUE(pick.hit);
+    EXPECT_EQ(pick.object, "Ball");
+    (as_disc ? m.as_disc : m.as_patches) = v::kPi * pick.effective_radiance / kSrf;
+  }
+  for (const bool simple : {true, false}) {
+    ScenarioHost host("v_mars2.json", scenario("Moon", 1e-3, simple ? "simple" : "detailed"));
+    std::vector<double> wl, E;
+    v::target_spectrum(host, "Moon", wl, E);
+    double band = 0;
+    for (std::size_t i = 0; i < wl.size(); ++i) band += E[i] * (0.71 - 0.46) / static_cast<double>(wl.size());
+    (simple ? m.simple : m.detailed) = band;
+  }
+  std::printf("%s  g %5.1f deg  moonlight as disc %.5e (simple point source %.5e)  as patches %.5e (detailed %.5e)  "
+              "disc/patches %+.3f mag\n",
+              iso.c_str(), g.phase_deg, m.as_disc, m.simple, m.as_patches, m.detailed,
+              -2.5 * std::log10(m.as_disc / m.as_patches));
+  return m;
+}
+
+}  // namespace
+
+// The light the bitmap Moon sheds, as eq. 7 and as eq. 8, is the light its
+// point source brings to the observer 100 m away (within 2 %: the band's
+// interval midpoints and the pick's half-sample offset), so it follows
+// Allen's law as the point sources do (Spec_6_2_5.MoonFollowsAllen1973*);
+// and the two agree on the mean of a waxing and a waning Moon within 0.08
+// mag (half of the 0.16 mag by which eq. 7 was too bright when it took the
+// map's mean over the whole sphere, 0.1396, for the near side's 0.12).
+TEST(Spec_6_2_5, MoonlightAsDiscAndAsPatchesFollowsItsPointSource) {
+  for (const double g : {20.0, 60.0}) {
+    const Moonlight waxing = moonlight(g, false), waning = moonlight(g, true);
+    for (const Moonlight* m : {&waxing, &waning}) {
+      EXPECT_NEAR(m->as_disc / m->simple, 1.0, 0.02) << g;
+      EXPECT_NEAR(m->as_patches / m->detailed, 1.0, 0.02) << g;
+    }
+    const double disc = 0.5 * (waxing.as_disc + waning.as_disc), patches = 0.5 * (waxing.as_patches + waning.as_patches);
+    EXPECT_NEAR(-2.5 * std::log10(disc / patches), 0.0, 0.08) << g;
   }
 }

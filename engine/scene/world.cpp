@@ -1186,10 +1186,10 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     if (a.settings.airglow) {
       const radiometry::SpectralBand b = a.optics->band();
       const std::string dir = library.data_dir;
-      const auto make = [dir, b] {
+      const auto zenith = [dir, b] {
         return atmosphere::Airglow::load(dir).zenith_radiance(b.low_um, b.interval_um(), b.intervals);
       };
-      airglow = cache ? *cache->airglow(a.optics, make) : make();
+      airglow = cache ? *cache->airglow(a.optics, zenith) : zenith();
     }
     a.sky = std::make_shared<const SkyView>(lines, a.sunlight, a.earth, a.to_sun, a.sun_irradiance, background,
                                             airglow, world->view.spectral);

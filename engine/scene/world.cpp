@@ -597,13 +597,17 @@ const radiometry::SpectralView& WorldObject::view() const {
 }
 
 namespace {
-// The node j below x (clamped to [0, 1]) among ascending nodes mu, and the
-// weight f of node j + 1 in the linear interpolation between them.
+// The node j below x (clamped to [0, 1]) among the nodes mu = (k / (n -
+// 1))^2 of SurfacePaths (the last below 1: at most n - 2), and the weight f
+// of node j + 1 in the linear interpolation between them. Found from
+// sqrt(x) (n - 1), then stepped to the right node (rounding).
 void node_below(const std::vector<double>& mu, double x, std::size_t& j, double& f) {
   const double m = std::clamp(x, 0.0, 1.0);
-  const std::size_t k = std::min<std::size_t>(
-      static_cast<std::size_t>(std::upper_bound(mu.begin(), mu.end(), m) - mu.begin()), mu.size() - 1);
-  j = k == 0 ? 0 : k - 1;
+  const std::size_t n = mu.size();
+  std::size_t k = std::min(static_cast<std::size_t>(std::sqrt(m) * static_cast<double>(n - 1)), n - 2);
+  while (k > 0 && mu[k] > m) --k;
+  while (k + 2 < n && mu[k + 1] <= m) ++k;
+  j = k;
   f = mu[j + 1] > mu[j] ? (m - mu[j]) / (mu[j + 1] - mu[j]) : 0.0;
 }
 

@@ -385,7 +385,8 @@ const Frame& Engine::render(const std::string& name) {
 
 void Engine::adaptive_frame(const std::string& name, const scene::FidelityChoice& choice, Frame& frame) {
   scene::FidelityChoice settings = choice;  // the key: the knobs, not the estimate
-  settings.spectral_error = settings.sampling_error = settings.patch_error = settings.point_source_error = 0;
+  settings.spectral_error = settings.sampling_error = settings.patch_error = settings.point_source_error =
+      settings.atmosphere_error = 0;
   const std::string key = settings.json();
   const universe::Object& s = universe_.sensor(name);
   CachedAdaptive& cached = adaptive_[name];

@@ -22,14 +22,15 @@ constexpr double kBackgroundHumidity_pct = 70.0;
 }  // namespace
 
 PathOptics::PathOptics(std::shared_ptr<const AtmosphereProfile> profile, const universe::AtmosphereSettings& settings,
-                       const std::string& data_dir, const radiometry::SpectralBand& band)
+                       const std::string& data_dir, const radiometry::SpectralBand& band,
+                       double sub_sample_spacing_cm1)
     : profile_(std::move(profile)), band_(band) {
   const double dl = band.interval_um();
   for (std::int64_t i = 0; i < band.intervals; ++i) {
     first_.push_back(wavelength_um_.size());
     const double lo = band.low_um + static_cast<double>(i) * dl, hi = lo + dl;
     const double width_cm1 = 1e4 / lo - 1e4 / hi;
-    const int n = std::max(1, static_cast<int>(std::ceil(width_cm1 / kSubSampleSpacing_cm1)));
+    const int n = std::max(1, static_cast<int>(std::ceil(width_cm1 / sub_sample_spacing_cm1)));
     for (int s = 0; s < n; ++s) wavelength_um_.push_back(lo + (s + 0.5) / n * dl);
   }
   first_.push_back(wavelength_um_.size());

@@ -7,7 +7,8 @@
 // molecular_absorption.hpp). Made once per atmosphere and band; each interval
 // is the mean of its sub-samples' transmittances, spaced at most
 // kSubSampleSpacing_cm1 apart in wavenumber (the band models' 20 cm^-1
-// resolution: finer sampling adds nothing they resolve).
+// resolution: finer sampling adds nothing they resolve; the fidelity knob
+// atmosphere_sub_sample_spacing_cm1).
 #pragma once
 #include <memory>
 #include <string>
@@ -47,7 +48,8 @@ struct OpticalDepths {
 class PathOptics {
  public:
   PathOptics(std::shared_ptr<const AtmosphereProfile> profile, const universe::AtmosphereSettings& settings,
-             const std::string& data_dir, const radiometry::SpectralBand& band);
+             const std::string& data_dir, const radiometry::SpectralBand& band,
+             double sub_sample_spacing_cm1 = kSubSampleSpacing_cm1);
   ~PathOptics();
   const radiometry::SpectralBand& band() const { return band_; }
   const AtmosphereProfile& profile() const { return *profile_; }

@@ -10,7 +10,6 @@
 
 namespace eoir::atmosphere {
 namespace {
-constexpr int kSunNodes = 33;
 
 // The cosine of the zenith angle of the ray from altitude h that grazes the ground.
 double grazing_mu(double radius_m, double altitude_m) {
@@ -19,8 +18,9 @@ double grazing_mu(double radius_m, double altitude_m) {
 }
 }  // namespace
 
-SunlightTable::SunlightTable(const PathOptics& optics, const EarthFigure& earth)
-    : radius_m_(earth.equatorial_radius_m), intervals_(static_cast<std::size_t>(optics.band().intervals)) {
+SunlightTable::SunlightTable(const PathOptics& optics, const EarthFigure& earth, int nodes)
+    : radius_m_(earth.equatorial_radius_m), intervals_(static_cast<std::size_t>(optics.band().intervals)),
+      nodes_(std::max(2, nodes)) {
   const AtmosphereProfile& profile = optics.profile();
   const Vec3 up = earth.pole.unitOrthogonal(), across = earth.pole.cross(up);
   std::vector<double> T;
@@ -28,8 +28,8 @@ SunlightTable::SunlightTable(const PathOptics& optics, const EarthFigure& earth)
     altitude_m_.push_back(l.altitude_m);
     const Vec3 point = earth.centre_m + (radius_m_ + l.altitude_m) * up;
     const double mu_g = grazing_mu(radius_m_, l.altitude_m);
-    for (int k = 0; k < kSunNodes; ++k) {
-      const double x = std::pow(static_cast<double>(k) / (kSunNodes - 1), 2.0);
+    for (int k = 0; k < nodes_; ++k) {
+      const double x = std::pow(static_cast<double>(k) / (nodes_ - 1), 2.0);
       const double mu = mu_g + x * (1.0 - mu_g);
       const Vec3 u = mu * up + std::sqrt(std::max(0.0, 1.0 - mu * mu)) * across;
       optics.transmittance(path_to_space(profile, earth, point, u), T);
@@ -51,11 +51,11 @@ SunlightTable::Corners SunlightTable::at(double altitude_m, double mu) const {
   for (int e = 0; e < 2; ++e) {
     const double mu_g = grazing_mu(radius_m_, h[level[e]]);
     const double x = mu < mu_g ? -1.0 : (mu - mu_g) / (1.0 - mu_g);
-    const double node = x < 0 ? 0.0 : std::sqrt(std::min(x, 1.0)) * (kSunNodes - 1);
-    const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(node), kSunNodes - 2);
+    const double node = x < 0 ? 0.0 : std::sqrt(std::min(x, 1.0)) * (nodes_ - 1);
+    const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(node), static_cast<std::size_t>(nodes_ - 2));
     const double f = node - static_cast<double>(k);
     const double lit = x < 0 ? 0.0 : 1.0;  // in the Earth's shadow: dark
-    const std::size_t base = (level[e] * kSunNodes + k) * intervals_;
+    const std::size_t base = (level[e] * static_cast<std::size_t>(nodes_) + k) * intervals_;
     c.row[2 * e] = &table_[base];
     c.row[2 * e + 1] = &table_[base + intervals_];
     c.weight[2 * e] = lit * level_weight[e] * (1.0 - f);

@@ -27,7 +27,9 @@ namespace eoir::atmosphere {
 // (refraction moves the shadow's edge by about a kilometre); 0 below mu_g.
 class SunlightTable {
  public:
-  SunlightTable(const PathOptics& optics, const EarthFigure& earth);
+  // nodes: per level over mu (at least 2; the fidelity knob atmosphere_sun_nodes).
+  SunlightTable(const PathOptics& optics, const EarthFigure& earth, int nodes = kDefaultNodes);
+  static constexpr int kDefaultNodes = 33;
   std::size_t intervals() const { return intervals_; }
   // Bilinear weights of the four table rows around (h, mu); weight 0 in
   // the Earth's shadow.
@@ -40,6 +42,7 @@ class SunlightTable {
  private:
   double radius_m_;
   std::size_t intervals_ = 0;
+  int nodes_ = kDefaultNodes;
   std::vector<double> altitude_m_;  // the profile's levels
   std::vector<double> table_;       // [altitude][node][interval]
 };

@@ -155,6 +155,34 @@ const std::vector<Spec>& fidelity_properties() {
                                    "Padding of the scene FFT beyond the guard band, in guard bands (the border "
                                    "samples repeated)",
                                    [](F& f) -> auto& { return f.fft_padding; }, Range{0, 16}, true));
+    t.push_back(number_property<F>("atmosphere_sub_sample_spacing_cm1", "cm^-1",
+                                   "The Earth's atmosphere: transmittance sub-samples of each spectral interval at "
+                                   "most this far apart in wavenumber (20: the band models' resolution)",
+                                   [](F& f) -> auto& { return f.atmosphere_sub_sample_spacing_cm1; }, Range{1, 1000},
+                                   true));
+    t.push_back(integer_property<F>("atmosphere_surface_nodes", "count",
+                                    "The Earth's atmosphere: nodes of T_out, L_path and T_in of the Earth's surface "
+                                    "over the zenith cosine, dense toward the horizon (mu = (k / (n - 1))^2)",
+                                    [](F& f) -> auto& { return f.atmosphere_surface_nodes; }, Range{3, 1025}, true));
+    t.push_back(integer_property<F>("atmosphere_sight_line_nodes", "count",
+                                    "The Earth's atmosphere: lines of sight of the sky and the haze that meet the "
+                                    "ground; those through the limb and above the horizon take (3 (n - 1) + 2) / 4 + 1",
+                                    [](F& f) -> auto& { return f.atmosphere_sight_line_nodes; }, Range{3, 1025},
+                                    true));
+    t.push_back(integer_property<F>("atmosphere_sky_azimuths", "count",
+                                    "The Earth's atmosphere: cells of the sky's single scatter in azimuth from the "
+                                    "Sun's vertical plane, 0 to 180 deg (made per frame where a line of sight needs "
+                                    "them)",
+                                    [](F& f) -> auto& { return f.atmosphere_sky_azimuths; }, Range{3, 1441}, true));
+    t.push_back(integer_property<F>("atmosphere_sun_nodes", "count",
+                                    "The Earth's atmosphere: nodes of the sunlight's transmittance T_sun over the "
+                                    "Sun's zenith cosine at each level of the profile, dense toward the grazing ray",
+                                    [](F& f) -> auto& { return f.atmosphere_sun_nodes; }, Range{3, 1025}, true));
+    t.push_back(integer_property<F>("atmosphere_downwelling_nodes", "count",
+                                    "The Earth's atmosphere: nodes of DownWelling over the Sun's zenith cosine, "
+                                    "uniform from 12 deg below the horizon to the zenith",
+                                    [](F& f) -> auto& { return f.atmosphere_downwelling_nodes; }, Range{3, 1025},
+                                    true));
     t.push_back(integer_property<F>("otf_curve_points", "count", "Samples of the OTF and MTF report curves",
                                     [](F& f) -> auto& { return f.otf_curve_points; }, Range{2, 100000}, true));
     t.push_back(integer_property<F>("target_window_max_half_samples", "count",

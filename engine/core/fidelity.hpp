@@ -85,6 +85,19 @@ struct Fidelity {
   double streak_steps_per_pixel = 8.0;
   double streak_steps_per_lambda_f = 1.0;
   double fft_padding = 1.0;  // FFT padding beyond the guard band, in guard bands
+  // The Earth's atmosphere (spec 4.3.1.1, eq. 9; issue 20 item 8): its
+  // tables, made once per atmosphere and band (the sky's cells per frame).
+  // Transmittance sub-samples of each spectral interval at most this far
+  // apart in wavenumber (atmosphere/path_optics.hpp: the band models' 20 cm^-1).
+  double atmosphere_sub_sample_spacing_cm1 = 20.0;
+  std::int64_t atmosphere_surface_nodes = 33;  // T_out, L_path, T_in of the Earth's surface over the zenith cosine
+  // Lines of sight of the sky and the haze (scene/sight_lines.hpp) that meet
+  // the ground; those through the limb and (from inside) above the horizon
+  // take (3 (n - 1) + 2) / 4 + 1 (25 of 33).
+  std::int64_t atmosphere_sight_line_nodes = 33;
+  std::int64_t atmosphere_sky_azimuths = 49;      // sky cells from the Sun's vertical plane, 0..pi
+  std::int64_t atmosphere_sun_nodes = 33;         // T_sun over the Sun's zenith cosine (atmosphere/single_scatter.hpp)
+  std::int64_t atmosphere_downwelling_nodes = 40; // DownWelling over the Sun's zenith cosine (scene/downwelling.hpp)
   // Reports (spec 5.12-5.13).
   std::int64_t otf_curve_points = 101;            // samples of the OTF/MTF report curves
   std::int64_t target_window_max_half_samples = 64;  // extended-target window: at most (2n+1)^2 rays

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -137,6 +138,81 @@ std::vector<ProbeSample> probe_field(const World& world, std::int64_t& stride, s
   return out;
 }
 
+// The atmosphere's table knobs (core/fidelity.hpp): each one's error at its
+// default (relative RMS of the pixel means against tables at the sweep's
+// reference settings, the largest over the sweep's atmosphere scenes:
+// tests/bench/results/fidelity_sweep.md), and the range the choice keeps
+// to. Linear interpolation between nodes errs as h^2.
+struct AtmosphereNodes {
+  std::int64_t Fidelity::*knob;
+  std::int64_t default_nodes;
+  double default_error;
+  std::int64_t fewest, most;
+};
+// (The sweep: GEO full disc in 0.45-0.75 and 8-12 um, a ground camera's
+// daytime sky; each knob halving its node spacing cut its error about 4x.)
+constexpr AtmosphereNodes kAtmosphereNodes[] = {
+    {&Fidelity::atmosphere_surface_nodes, 33, 3.73e-4, 5, 257},     // GEO visible
+    {&Fidelity::atmosphere_sight_line_nodes, 33, 1.09e-3, 5, 257},  // ground sky
+    {&Fidelity::atmosphere_sky_azimuths, 49, 3.53e-4, 7, 385},      // ground sky
+    {&Fidelity::atmosphere_sun_nodes, 33, 1.39e-4, 5, 257},         // ground sky
+    {&Fidelity::atmosphere_downwelling_nodes, 40, 1.24e-5, 5, 320}, // GEO visible
+};
+// The transmittance's sub-sample spacing: past the band models' 20 cm^-1
+// resolution the error jumps (their structure is missed), so the sweep's
+// errors at its values are the model, coarsest first.
+struct SpacingError {
+  double spacing_cm1, error;
+};
+constexpr SpacingError kSpacingErrors[] = {{80.0, 2.42e-3}, {40.0, 1.61e-3}, {20.0, 3.18e-4}, {10.0, 4.05e-5}};  // GEO 8-12 um
+
+// Chooses the atmosphere's knobs the frame reads (world.atmosphere's tables)
+// within `share`, summed over them (not in quadrature: their errors can
+// share a sign -- the same haze brighter from two tables -- and on the
+// sweep's GEO disc the frame's error exceeded their quadrature sum); returns
+// that sum.
+double choose_atmosphere(const World& world, double share, Fidelity& f) {
+  const WorldAtmosphere& a = world.atmosphere;
+  if (!a.on()) return 0.0;
+  // The knobs this frame reads: the sub-samples always; the surface's paths
+  // where the Earth is imaged; the sky's lines and azimuths and T_sun in
+  // sunlight; DownWelling where it is on.
+  const bool reads[] = {a.surface != nullptr, a.sky != nullptr, a.sky != nullptr, a.sunlight != nullptr,
+                        a.downwelling != nullptr};
+  int count = 1;
+  for (const bool r : reads) count += r ? 1 : 0;
+  const double each = share / static_cast<double>(count);
+  double sum = 0;
+  std::size_t k = 0;
+  for (const AtmosphereNodes& knob : kAtmosphereNodes) {
+    if (!reads[k++]) continue;
+    const auto error = [&](std::int64_t n) {
+      const double r = static_cast<double>(knob.default_nodes - 1) / static_cast<double>(n - 1);
+      return knob.default_error * r * r;
+    };
+    // Node counts (n0 - 1) 2^j + 1 (rounded), j = -3..3, coarsest first.
+    std::int64_t n = knob.most;
+    for (int j = -3; j <= 3; ++j) {
+      const auto m = std::clamp<std::int64_t>(
+          std::llround(static_cast<double>(knob.default_nodes - 1) * std::ldexp(1.0, j)) + 1, knob.fewest, knob.most);
+      if (error(m) <= each) {
+        n = m;
+        break;
+      }
+    }
+    f.*knob.knob = n;
+    sum += error(n);
+  }
+  const SpacingError* s = &kSpacingErrors[std::size(kSpacingErrors) - 1];
+  for (const SpacingError& x : kSpacingErrors)
+    if (x.error <= each) {
+      s = &x;
+      break;
+    }
+  f.atmosphere_sub_sample_spacing_cm1 = s->spacing_cm1;
+  return sum + s->error;
+}
+
 // Coverage error of n x n samples on an edge pixel, RMS, in units of the
 // contrast: each sample row quantises the covered length to 1 / n of the
 // pixel, a uniform error of RMS 1 / (n sqrt 12); rows parallel to the edge
@@ -147,7 +223,7 @@ double edge_coverage_rms(std::int64_t n) { return 1.0 / (static_cast<double>(n) 
 
 double FidelityChoice::estimated_error() const {
   return std::sqrt(spectral_error * spectral_error + sampling_error * sampling_error + patch_error * patch_error +
-                   point_source_error * point_source_error);
+                   point_source_error * point_source_error + atmosphere_error * atmosphere_error);
 }
 
 std::string FidelityChoice::json() const {
@@ -158,6 +234,7 @@ std::string FidelityChoice::json() const {
   j["sampling_error"] = sampling_error;
   j["patch_error"] = patch_error;
   j["point_source_error"] = point_source_error;
+  j["atmosphere_error"] = atmosphere_error;
   j["spectral_intervals"] = spectral_intervals;
   for (const PropertySpec<Fidelity>& k : fidelity_properties()) {
     if (std::string(k.name) == "error_budget") continue;
@@ -189,6 +266,9 @@ FidelityChoice choose_fidelity(const World& world, const universe::Universe& uni
   c.spectral_intervals =
       spectral_intervals_for(world, planck_terms(world, universe), spectral_intervals, cheap_share, c.spectral_error);
 
+  // The atmosphere's tables (issue 20 item 8).
+  c.atmosphere_error = choose_atmosphere(world, cheap_share, f);
+
   // Detailed point sources (spec 4.1.6.1, ERRATA eq. 11): d against the finest d;
   // where none is within the share, the finest and its distance to the one before.
   bool composite_points = false;
@@ -217,7 +297,8 @@ FidelityChoice choose_fidelity(const World& world, const universe::Universe& uni
 
   // Samples per pixel (spec 4.1.3, 5.2) and coarse patches (4.2.1) or smooth
   // mode (4.2.2): the cheapest pair within what the budget leaves.
-  const double spent2 = c.spectral_error * c.spectral_error + c.point_source_error * c.point_source_error;
+  const double spent2 = c.spectral_error * c.spectral_error + c.point_source_error * c.point_source_error +
+                        c.atmosphere_error * c.atmosphere_error;
   const geometry::SampleGrid& g = world.grid();
   bool extended = false;
   std::int64_t fewest = 1;  // keeps every object imaged extended so (spec 4.1.6.1)

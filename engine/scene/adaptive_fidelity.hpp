@@ -23,7 +23,16 @@
 //    budget;
 //  - detailed point sources (spec 4.1.6.1, ERRATA eq. 11): the sum over
 //    patches at object_patch_divisions d against 2 d, the smallest d whose
-//    change is within the share.
+//    change is within the share;
+//  - the Earth's atmosphere (issue 20 item 8), a tenth of the budget shared
+//    (summed, not in quadrature: their errors can add) by the knobs of its
+//    tables that the frame reads: each
+//    knob's error at its default as the speed-against-accuracy sweep
+//    measured it (tests/bench/results/fidelity_sweep.md, atmosphere scenes),
+//    scaled as linear interpolation between nodes, ((n0 - 1) / (n - 1))^2
+//    (as the sweep finds them), and the transmittance's sub-sample spacing
+//    at the sweep's values (10-80 cm^-1) with its errors there; the
+//    coarsest setting within the share.
 // Knobs outside the model (PSF reach, point-source tables, FFT padding,
 // table sizes) keep the sensor's values.
 #pragma once
@@ -41,11 +50,11 @@ struct FidelityChoice {
   std::int64_t spectral_intervals = 0;   // N of spec 5.3 the frame is rendered with
   double error_budget = 0;               // 0: the sensor's own settings, not chosen
   // The error model's terms (relative RMS of the pixel means).
-  double spectral_error = 0, sampling_error = 0, patch_error = 0, point_source_error = 0;
+  double spectral_error = 0, sampling_error = 0, patch_error = 0, point_source_error = 0, atmosphere_error = 0;
   double estimated_error() const;  // their quadrature sum
   // {"error_budget": b, "estimated_error": e, "spectral_intervals": N,
   //  "spectral_error": ..., "sampling_error": ..., "patch_error": ...,
-  //  "point_source_error": ..., "<knob>": value, ...} with every fidelity
+  //  "point_source_error": ..., "atmosphere_error": ..., "<knob>": value, ...} with every fidelity
   //  knob (core/fidelity.hpp).
   std::string json() const;
 };

@@ -10,7 +10,6 @@
 namespace eoir::scene {
 namespace {
 constexpr double kLowestSun_deg = -12.0;
-constexpr int kSunNodes = 40;  // uniform in the Sun's zenith cosine, from sin(-12 deg) to 1
 constexpr int kAzimuths = 25;  // 0..pi, 7.5 deg apart (the hemisphere's integral)
 
 // Trapezoid weights of nodes x over [x.front(), x.back()].
@@ -25,10 +24,12 @@ std::vector<double> trapezoid(const std::vector<double>& x) {
 }  // namespace
 
 Downwelling::Downwelling(const atmosphere::PathOptics& optics, const atmosphere::SunlightTable& sunlight,
-                         const atmosphere::EarthFigure& figure) {
+                         const atmosphere::EarthFigure& figure, int sun_nodes, int sight_line_nodes) {
+  // sun_nodes uniform in the Sun's zenith cosine, from sin(-12 deg) to 1
+  const int kSunNodes = std::max(2, sun_nodes);
   atmosphere::EarthFigure earth = figure;
   earth.centre_m = Vec3::Zero();
-  const SightLines lines = SightLines::make(optics, earth, 0.0);
+  const SightLines lines = SightLines::make(optics, earth, 0.0, sight_line_nodes);
   const Vec3 up = earth.pole.unitOrthogonal(), across = earth.pole.cross(up), side = up.cross(across);
   const Vec3 ground = earth.equatorial_radius_m * up;
   const std::size_t n = static_cast<std::size_t>(optics.band().intervals);

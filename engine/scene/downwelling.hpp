@@ -20,8 +20,10 @@ namespace eoir::scene {
 
 class Downwelling {
  public:
+  // sun_nodes over the Sun's zenith cosine (the fidelity knob
+  // atmosphere_downwelling_nodes), the sky's lines of sight as SightLines::make's.
   Downwelling(const atmosphere::PathOptics& optics, const atmosphere::SunlightTable& sunlight,
-              const atmosphere::EarthFigure& earth);
+              const atmosphere::EarthFigure& earth, int sun_nodes = 40, int sight_line_nodes = 33);
   // Adds E_down / pi per interval (what a reflector of unit SRF returns of
   // it, W cm^-2 sr^-1 um^-1) for a Sun whose zenith cosine is mu_sun over
   // the surface, of irradiance sun_irradiance per interval above the air.

@@ -8,10 +8,13 @@
 
 namespace eoir::scene {
 namespace {
-constexpr int kGroundNodes = 33;     // lines that meet the ground, from above: mu_g = (k / 32)^2 there
-constexpr int kLimbNodes = 25;       // lines through the limb: tangent altitude top (k / 24)^2
-constexpr int kElevationNodes = 25;  // from inside, above the horizon: (pi / 2) (k / 24)^1.6
-constexpr std::size_t kAzimuths = 49;  // 0..pi from the Sun's vertical plane, 3.75 deg apart
+// Nodes (by default, the fidelity's atmosphere_sight_line_nodes n = 33 and
+// atmosphere_sky_azimuths 49): n lines that meet the ground, from above:
+// mu_g = (k / (n - 1))^2 there; m = (3 (n - 1) + 2) / 4 + 1 (25) lines through
+// the limb: tangent altitude top (k / (m - 1))^2, and from inside, above the
+// horizon: (pi / 2) (k / (m - 1))^1.6; azimuths 0..pi from the Sun's
+// vertical plane (3.75 deg apart).
+int other_nodes(int ground_nodes) { return (3 * (ground_nodes - 1) + 2) / 4 + 1; }
 
 // atan2(y, x) for y >= 0, in [0, pi], within 1e-5 rad (Abramowitz and
 // Stegun 4.4.49): a per-sample lookup's azimuth.
@@ -27,7 +30,9 @@ double azimuth_rad(double y, double x) {
 }  // namespace
 
 SightLines SightLines::make(const atmosphere::PathOptics& optics, const atmosphere::EarthFigure& figure,
-                            double observer_altitude_m) {
+                            double observer_altitude_m, int ground_nodes) {
+  const int kGroundNodes = std::max(2, ground_nodes);
+  const int kLimbNodes = std::max(2, other_nodes(kGroundNodes)), kElevationNodes = kLimbNodes;
   SightLines s;
   const atmosphere::AtmosphereProfile& profile = optics.profile();
   atmosphere::EarthFigure earth = figure;
@@ -83,11 +88,11 @@ SightLines SightLines::make(const atmosphere::PathOptics& optics, const atmosphe
 SkyView::SkyView(std::shared_ptr<const SightLines> lines, std::shared_ptr<const atmosphere::SunlightTable> sunlight,
                  const atmosphere::EarthFigure& earth, const Vec3& to_sun, const std::vector<double>& sun_irradiance,
                  const std::vector<double>& background_radiance, const std::vector<double>& airglow_zenith,
-                 const radiometry::SpectralView& view)
+                 const radiometry::SpectralView& view, std::size_t azimuths)
     : lines_(std::move(lines)),
       intervals_(sunlight->intervals()),
       earth_(earth),
-      azimuths_(kAzimuths),
+      azimuths_(std::max<std::size_t>(2, azimuths)),
       sunlight_(std::move(sunlight)),
       sun_irradiance_(sun_irradiance),
       view_(view) {

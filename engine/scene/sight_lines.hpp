@@ -46,8 +46,10 @@ struct SightLines {
   // Per node: the path from the observer (above the atmosphere: from where
   // the line enters it) out, with its terms.
   std::vector<atmosphere::ScatterPath> paths;
+  // ground_nodes: lines that meet the ground (the fidelity knob
+  // atmosphere_sight_line_nodes; the limb's and the sky's: (3 (n - 1) + 2) / 4 + 1).
   static SightLines make(const atmosphere::PathOptics& optics, const atmosphere::EarthFigure& earth,
-                         double observer_altitude_m);
+                         double observer_altitude_m, int ground_nodes = 33);
 };
 
 // Eq. 9's sky terms over the view of one frame.
@@ -61,7 +63,7 @@ class SkyView {
   SkyView(std::shared_ptr<const SightLines> lines, std::shared_ptr<const atmosphere::SunlightTable> sunlight,
           const atmosphere::EarthFigure& earth, const Vec3& to_sun, const std::vector<double>& sun_irradiance,
           const std::vector<double>& background_radiance, const std::vector<double>& airglow_zenith,
-          const radiometry::SpectralView& view);
+          const radiometry::SpectralView& view, std::size_t azimuths = 49);
   // Band radiance (W cm^-2 sr^-1) of the air along the unit direction d
   // from the observer: the scatter alone (`scatter_band`: the line ends on
   // a surface, whose own T_out and L_path are the surface's) or, for a

@@ -85,6 +85,8 @@ class SurfaceModel {
   // One radiance per part, whatever the point and the light.
   bool plain() const { return !reflects_ && !varying(); }
   bool bitmap() const { return geography_.bitmap(); }
+  // Its radiance is tabulated (no temperature, no material's emissivity).
+  bool tabulated() const { return !self_radiance_.empty(); }
 
   // Self-emission eps B(T) (or the tabulated radiance) at the view's
   // wavelengths added to `out`, its band integral (eq. 48; exact where the

@@ -46,6 +46,17 @@ void SurfaceSpectrum::add_emission(double temperature_K, std::vector<double>& ou
   }
 }
 
+bool SurfaceSpectrum::emissivity(std::vector<double>& weights, double& scale) const {
+  if (view_->integration != BandIntegration::grid) return false;
+  weights.assign(srf_.size(), 1.0);
+  scale = 1.0;
+  if (gray_)
+    scale = radiometry::emissivity_from_reflectance(gray_reflectance_);
+  else
+    for (std::size_t i = 0; i < srf_.size(); ++i) weights[i] = 1.0 - srf_[i];
+  return true;
+}
+
 double SurfaceSpectrum::emission_radiance(double temperature_K) const {
   if (gray_) return view_->gray_body_radiance(temperature_K, gray_reflectance_);
   if (emission_table_) return emission_table_->radiance(temperature_K);

@@ -28,6 +28,11 @@ class SurfaceSpectrum {
   void add_emission(double temperature_K, std::vector<double>& out) const;
   // Its band integral (eq. 48), W cm^-2 sr^-1.
   double emission_radiance(double temperature_K) const;
+  // Its emission as scale x the weights of an L(T) table (eps = scale x
+  // weights[i] at the grid's wavelengths: 1 - SRF, or a gray body's eps
+  // times ones), for tables of that emission through a path; false where
+  // the view integrates exactly (no grid sum to tabulate).
+  bool emissivity(std::vector<double>& weights, double& scale) const;
 
  private:
   const radiometry::SpectralView* view_;

@@ -409,10 +409,35 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
   if (plain()) return plain_radiance(part);
   if (under_atmosphere_) {  // eq. 9 interval by interval: the path changes with the point
     thread_local std::vector<double> L, E;  // per-sample scratch (eq. 8 sources below allocate their own)
+    const World& w = *world_;
     const Vec3 d = to_frame(point_body_m).normalized();
-    spectral_radiance_into(part, point_body_m, normal_body, -d, false, L, E, true);
+    const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
+    const auto table = surface->tabulated() ? w.atmosphere.surface_emission.end()
+                                            : w.atmosphere.surface_emission.find(point.spectrum);
+    if (table == w.atmosphere.surface_emission.end()) {
+      spectral_radiance_into(part, point_body_m, normal_body, -d, false, L, E, true);
+      to_sensor(L, point_body_m, normal_body, false);
+      return w.view.spectral.integrate(L) + w.atmosphere.scatter_band(d);
+    }
+    // The reflected light interval by interval through the path, the
+    // emission through it from PathEmission's tables (as
+    // spectral_radiance_into, less what cannot reach kNegligible of the
+    // reflected light).
+    L.assign(w.view.spectral.sample_wavelengths_um.size(), 0.0);
+    bool emits = true;
+    if (surface->reflects(point)) {
+      E.assign(L.size(), 0.0);
+      const SurfaceSpectrum& s = *point.spectrum;
+      add_reflected_irradiance(to_frame(point_body_m), placed.body_to_frame * normal_body, -d, s.brdf(), false, E);
+      for (std::size_t i = 0; i < L.size(); ++i) L[i] = E[i] * s.srf()[i];
+      emits = !(w.view.spectral.integrate(L) > surface->emission_bound() / kNegligible);
+    }
+    const double emitted =
+        emits ? table->second.scale *
+                    table->second.table->radiance((placed.body_to_frame * normal_body).dot(-d), surface->temperature_K(point))
+              : 0.0;
     to_sensor(L, point_body_m, normal_body, false);
-    return world_->view.spectral.integrate(L) + world_->atmosphere.scatter_band(d);
+    return w.view.spectral.integrate(L) + emitted + w.atmosphere.scatter_band(d);
   }
   const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
   double reflected = 0;
@@ -596,26 +621,37 @@ const radiometry::SpectralView& WorldObject::view() const {
 }
 
 namespace {
+// The node j below x (clamped to [0, 1]) among the nodes mu = (k / (n -
+// 1))^2 of SurfacePaths (the last below 1: at most n - 2), and the weight f
+// of node j + 1 in the linear interpolation between them. Found from
+// sqrt(x) (n - 1), then stepped to the right node (rounding).
+void node_below(const std::vector<double>& mu, double x, std::size_t& j, double& f) {
+  const double m = std::clamp(x, 0.0, 1.0);
+  const std::size_t n = mu.size();
+  std::size_t k = std::min(static_cast<std::size_t>(std::sqrt(m) * static_cast<double>(n - 1)), n - 2);
+  while (k > 0 && mu[k] > m) --k;
+  while (k + 2 < n && mu[k + 1] <= m) ++k;
+  j = k;
+  f = mu[j + 1] > mu[j] ? (m - mu[j]) / (mu[j + 1] - mu[j]) : 0.0;
+}
+
 // Linear interpolation between the rows of a table over mu.
 void interpolate_rows(const std::vector<double>& mu, const std::vector<std::vector<double>>& rows, double x,
                       std::vector<double>& out) {
-  const double m = std::clamp(x, 0.0, 1.0);
-  const std::size_t k = std::min<std::size_t>(
-      static_cast<std::size_t>(std::upper_bound(mu.begin(), mu.end(), m) - mu.begin()), mu.size() - 1);
-  const std::size_t j = k == 0 ? 0 : k - 1;
-  const double f = mu[j + 1] > mu[j] ? (m - mu[j]) / (mu[j + 1] - mu[j]) : 0.0;
+  std::size_t j = 0;
+  double f = 0;
+  node_below(mu, x, j, f);
   const std::vector<double>& a = rows[j];
   const std::vector<double>& b = rows[j + 1];
   out.resize(a.size());
   for (std::size_t i = 0; i < a.size(); ++i) out[i] = a[i] + f * (b[i] - a[i]);
 }
 
-// Nodes of the surface tables.
-constexpr int kSurfacePathNodes = 33;
-
 // The surface tables for an observer at altitude H: paths from a point of
-// the equator at view (and Sun) zenith cosines mu.
-SurfacePaths surface_paths(const WorldAtmosphere& a, double observer_altitude_m) {
+// the equator at view (and Sun) zenith cosines mu, on `nodes` nodes (the
+// fidelity's atmosphere_surface_nodes).
+SurfacePaths surface_paths(const WorldAtmosphere& a, double observer_altitude_m, std::int64_t nodes) {
+  const int kSurfacePathNodes = static_cast<int>(std::max<std::int64_t>(2, nodes));
   SurfacePaths t;
   const atmosphere::AtmosphereProfile& profile = *a.profile;
   const Vec3 up = a.earth.pole.unitOrthogonal();
@@ -662,6 +698,45 @@ void SurfacePaths::view_at(double mu_view, std::vector<double>& T, std::vector<d
 }
 
 void SurfacePaths::sun_at(double mu_sun, std::vector<double>& T) const { interpolate_rows(mu, sun_T, mu_sun, T); }
+
+std::shared_ptr<const PathEmission> SurfacePaths::emission(const radiometry::SpectralView& view,
+                                                           const std::vector<double>& weights) const {
+  std::vector<double> key = weights;
+  key.insert(key.end(), view.sample_wavelengths_um.begin(), view.sample_wavelengths_um.end());
+  key.insert(key.end(), view.transmittance.begin(), view.transmittance.end());
+  key.push_back(view.band.interval_um());
+  const std::lock_guard<std::mutex> lock(emission_cache->mutex);
+  auto& tables = emission_cache->tables;
+  const auto it = tables.find(key);
+  if (it != tables.end()) return it->second;
+  if (tables.size() >= 64) tables.clear();  // bounded: worlds keep what they hold
+  return tables.emplace(std::move(key), std::make_shared<const PathEmission>(*this, view, weights)).first->second;
+}
+
+PathEmission::PathEmission(const SurfacePaths& paths, const radiometry::SpectralView& view,
+                           const std::vector<double>& weights)
+    : mu_(paths.mu) {
+  for (const std::vector<double>& T : paths.view_T) {
+    std::vector<double> w(weights.size());
+    bool any = false;
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      w[i] = weights[i] * T[i] * (view.transmittance.empty() ? 1.0 : view.transmittance[i]);
+      any = any || w[i] > 0;
+    }
+    tables_.push_back(any ? std::make_unique<radiometry::BandPlanckTable>(view.band, view.sample_wavelengths_um,
+                                                                          std::move(w))
+                          : nullptr);
+  }
+}
+
+double PathEmission::radiance(double mu_view, double temperature_K) const {
+  std::size_t j = 0;
+  double f = 0;
+  node_below(mu_, mu_view, j, f);
+  const auto at = [&](std::size_t k) { return tables_[k] ? tables_[k]->radiance(temperature_K) : 0.0; };
+  const double below = f < 1 ? at(j) : 0.0;
+  return f > 0 ? below + f * (at(j + 1) - below) : below;
+}
 
 atmosphere::PathColumns WorldAtmosphere::path_to(const Vec3& point_m) const {
   atmosphere::PathColumns c;
@@ -804,15 +879,17 @@ constexpr std::size_t kWorldCacheEntries = 16;
 
 std::shared_ptr<const atmosphere::PathOptics> WorldCache::optics(const universe::AtmosphereSettings& settings,
                                                                  const std::string& data_dir,
-                                                                 const radiometry::SpectralBand& band) {
+                                                                 const radiometry::SpectralBand& band,
+                                                                 double sub_sample_spacing_cm1) {
   std::lock_guard<std::mutex> lock(mutex_);
-  for (const auto& [s, dir, low, high, n, optics] : optics_)
-    if (s == settings && dir == data_dir && low == band.low_um && high == band.high_um && n == band.intervals)
+  for (const auto& [s, dir, low, high, n, spacing, optics] : optics_)
+    if (s == settings && dir == data_dir && low == band.low_um && high == band.high_um && n == band.intervals &&
+        spacing == sub_sample_spacing_cm1)
       return optics;
   auto made = std::make_shared<const atmosphere::PathOptics>(atmosphere::AtmosphereProfile::make(settings, data_dir),
-                                                             settings, data_dir, band);
+                                                             settings, data_dir, band, sub_sample_spacing_cm1);
   if (optics_.size() >= kWorldCacheEntries) optics_.clear();  // bounded: worlds keep what they hold
-  optics_.emplace_back(settings, data_dir, band.low_um, band.high_um, band.intervals, made);
+  optics_.emplace_back(settings, data_dir, band.low_um, band.high_um, band.intervals, sub_sample_spacing_cm1, made);
   return made;
 }
 
@@ -831,27 +908,31 @@ std::shared_ptr<const T> cached(std::map<Key, std::shared_ptr<const T>>& map, co
 }  // namespace
 
 std::shared_ptr<const SurfacePaths> WorldCache::surface(const std::shared_ptr<const atmosphere::PathOptics>& optics,
-                                                        double altitude_m, const std::function<SurfacePaths()>& make) {
+                                                        double altitude_m, std::int64_t nodes,
+                                                        const std::function<SurfacePaths()>& make) {
   std::lock_guard<std::mutex> lock(mutex_);
-  return cached(surface_, std::make_pair(optics.get(), altitude_m), make);
+  return cached(surface_, Key{optics.get(), altitude_m, nodes, 0}, make);
 }
 
 std::shared_ptr<const SightLines> WorldCache::sight_lines(const std::shared_ptr<const atmosphere::PathOptics>& optics,
-                                                          double altitude_m, const std::function<SightLines()>& make) {
+                                                          double altitude_m, std::int64_t nodes,
+                                                          const std::function<SightLines()>& make) {
   std::lock_guard<std::mutex> lock(mutex_);
-  return cached(sight_lines_, std::make_pair(optics.get(), altitude_m), make);
+  return cached(sight_lines_, Key{optics.get(), altitude_m, nodes, 0}, make);
 }
 
 std::shared_ptr<const atmosphere::SunlightTable> WorldCache::sunlight(
-    const std::shared_ptr<const atmosphere::PathOptics>& optics, const std::function<atmosphere::SunlightTable()>& make) {
+    const std::shared_ptr<const atmosphere::PathOptics>& optics, std::int64_t nodes,
+    const std::function<atmosphere::SunlightTable()>& make) {
   std::lock_guard<std::mutex> lock(mutex_);
-  return cached(sunlight_, optics.get(), make);
+  return cached(sunlight_, Key{optics.get(), 0.0, nodes, 0}, make);
 }
 
-std::shared_ptr<const Downwelling> WorldCache::downwelling(const std::shared_ptr<const atmosphere::PathOptics>& optics,
+std::shared_ptr<const Downwelling> WorldCache::downwelling(const std::shared_ptr<const atmosphere::SunlightTable>& sunlight,
+                                                           std::int64_t nodes, std::int64_t sight_line_nodes,
                                                            const std::function<Downwelling()>& make) {
   std::lock_guard<std::mutex> lock(mutex_);
-  return cached(downwelling_, optics.get(), make);
+  return cached(downwelling_, Key{sunlight.get(), 0.0, nodes, sight_line_nodes}, make);
 }
 
 std::shared_ptr<const std::vector<double>> WorldCache::airglow(
@@ -903,10 +984,10 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       continue;
     WorldAtmosphere& a = world->atmosphere;
     a.settings = o.atmosphere;
-    a.optics = cache ? cache->optics(o.atmosphere, library.data_dir, band)
+    a.optics = cache ? cache->optics(o.atmosphere, library.data_dir, band, f.atmosphere_sub_sample_spacing_cm1)
                      : std::make_shared<const atmosphere::PathOptics>(
                            atmosphere::AtmosphereProfile::make(o.atmosphere, library.data_dir), o.atmosphere,
-                           library.data_dir, band);
+                           library.data_dir, band, f.atmosphere_sub_sample_spacing_cm1);
     a.profile = a.optics->profile_ptr();
     a.earth.centre_m = -world->observer.position_m;  // the Earth at the geocentre, as place() puts it
     a.earth.pole = frames::j2000_to_earth_fixed(t).transpose().col(2);
@@ -932,8 +1013,10 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       for (const double L : world->sun.radiance) a.sun_irradiance.push_back(L * omega);
       const atmosphere::EarthFigure figure = a.earth;
       const auto optics = a.optics;
-      const auto make = [optics, figure] { return atmosphere::SunlightTable(*optics, figure); };
-      a.sunlight = cache ? cache->sunlight(a.optics, make) : std::make_shared<const atmosphere::SunlightTable>(make());
+      const int nodes = static_cast<int>(f.atmosphere_sun_nodes);
+      const auto make = [optics, figure, nodes] { return atmosphere::SunlightTable(*optics, figure, nodes); };
+      a.sunlight = cache ? cache->sunlight(a.optics, nodes, make)
+                         : std::make_shared<const atmosphere::SunlightTable>(make());
     }
   }
 
@@ -990,16 +1073,21 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     const WorldAtmosphere& a = world->atmosphere;
     // (every observer above the atmosphere sees the same paths)
     const double altitude = std::min(atmosphere::altitude_m(a.earth, Vec3::Zero()), a.profile->top_altitude_m() + 1.0);
-    const auto make = [&a, altitude] { return surface_paths(a, altitude); };
-    world->atmosphere.surface = cache ? cache->surface(a.optics, altitude, make)
+    const std::int64_t nodes = f.atmosphere_surface_nodes;
+    const auto make = [&a, altitude, nodes] { return surface_paths(a, altitude, nodes); };
+    world->atmosphere.surface = cache ? cache->surface(a.optics, altitude, nodes, make)
                                       : std::make_shared<const SurfacePaths>(make());
     if (a.settings.downwelling && a.sunlight) {
       const auto optics = a.optics;
       const auto sunlight = a.sunlight;
       const atmosphere::EarthFigure figure = a.earth;
-      const auto tables = [optics, sunlight, figure] { return Downwelling(*optics, *sunlight, figure); };
-      world->atmosphere.downwelling =
-          cache ? cache->downwelling(a.optics, tables) : std::make_shared<const Downwelling>(tables());
+      const int sun_nodes = static_cast<int>(f.atmosphere_downwelling_nodes);
+      const int line_nodes = static_cast<int>(f.atmosphere_sight_line_nodes);
+      const auto tables = [optics, sunlight, figure, sun_nodes, line_nodes] {
+        return Downwelling(*optics, *sunlight, figure, sun_nodes, line_nodes);
+      };
+      world->atmosphere.downwelling = cache ? cache->downwelling(a.sunlight, sun_nodes, line_nodes, tables)
+                                            : std::make_shared<const Downwelling>(tables());
     }
     world->objects[static_cast<std::size_t>(earth_id)]->under_atmosphere_ = true;
   }
@@ -1114,6 +1202,16 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
                                                f.scene_mode == SceneMode::smooth ? f.temperature_table_size : 0);
   }
 
+  // The emission of the Earth's materials through its paths (PathEmission).
+  if (world->atmosphere.surface)
+    for (const auto& spectrum : world->spectra) {
+      std::vector<double> weights;
+      double scale = 1;
+      if (spectrum->emissivity(weights, scale))
+        world->atmosphere.surface_emission[spectrum.get()] =
+            WorldAtmosphere::SurfaceEmission{world->atmosphere.surface->emission(world->view.spectral, weights), scale};
+    }
+
   // 4. Every object but the Sun as a light source (eq. 7; eq. 8 where large).
   for (const auto& wp : world->objects) {
     WorldObject& w = *wp;
@@ -1177,8 +1275,11 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     const double altitude = std::min(atmosphere::altitude_m(a.earth, Vec3::Zero()), a.profile->top_altitude_m());
     const atmosphere::EarthFigure figure = a.earth;
     const auto optics = a.optics;
-    const auto make = [optics, figure, altitude] { return SightLines::make(*optics, figure, altitude); };
-    const auto lines = cache ? cache->sight_lines(a.optics, altitude, make) : std::make_shared<const SightLines>(make());
+    const int nodes = static_cast<int>(f.atmosphere_sight_line_nodes);
+    const auto make = [optics, figure, altitude, nodes] { return SightLines::make(*optics, figure, altitude, nodes); };
+    const auto lines =
+        cache ? cache->sight_lines(a.optics, altitude, nodes, make) : std::make_shared<const SightLines>(make());
+    const auto azimuths = static_cast<std::size_t>(f.atmosphere_sky_azimuths);
     std::vector<double> background;
     if (world->sky.background)
       for (const double E : world->sky.background_irradiance) background.push_back(E / constants::pi);
@@ -1192,7 +1293,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       airglow = cache ? *cache->airglow(a.optics, zenith) : zenith();
     }
     a.sky = std::make_shared<const SkyView>(lines, a.sunlight, a.earth, a.to_sun, a.sun_irradiance, background,
-                                            airglow, world->view.spectral);
+                                            airglow, world->view.spectral, azimuths);
     // Moonlight scattered by the air over an observer inside it: the Moon's
     // irradiance above the air as eq. 7 gives it (its disc, phase law and
     // emission), from the Moon's direction.
@@ -1208,7 +1309,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       std::vector<double> E(light.reflected.size());
       for (std::size_t i = 0; i < E.size(); ++i) E[i] = (light.reflected[i] * phase + light.emitted[i]) * omega;
       a.moon_sky = std::make_shared<const SkyView>(lines, a.sunlight, a.earth, to_moon, E, std::vector<double>{},
-                                                   std::vector<double>{}, world->view.spectral);
+                                                   std::vector<double>{}, world->view.spectral, azimuths);
     }
   }
   return world;

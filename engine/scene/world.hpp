@@ -19,6 +19,7 @@
 #include <mutex>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "atmosphere/path_optics.hpp"
@@ -94,6 +95,7 @@ struct Eq9Terms {
   std::vector<double> surface, downwelling, transmittance, path_thermal, path_scatter, at_sensor;
 };
 
+class PathEmission;
 struct SurfacePaths {
   std::vector<double> mu;                      // nodes, 0..1
   std::vector<std::vector<double>> view_T, view_L, sun_T;  // [node][interval]
@@ -101,6 +103,35 @@ struct SurfacePaths {
   // Interpolated at mu (clamped to [0, 1]) into out.
   void view_at(double mu_view, std::vector<double>& T, std::vector<double>& L) const;
   void sun_at(double mu_sun, std::vector<double>& T) const;
+  // The emission through these paths of a surface of emissivity `weights`
+  // on the view's grid (PathEmission), made on first use and kept with the
+  // paths (thread-safe), so that every frame of an engine shares it.
+  std::shared_ptr<const PathEmission> emission(const radiometry::SpectralView& view,
+                                               const std::vector<double>& weights) const;
+  struct EmissionCache {
+    std::mutex mutex;
+    std::map<std::vector<double>, std::shared_ptr<const PathEmission>> tables;  // key: weights, then wavelengths
+  };
+  std::shared_ptr<EmissionCache> emission_cache = std::make_shared<EmissionCache>();
+};
+
+// Eq. 9's self-emission term through a surface point's path, sum_i
+// T_out,i(mu) eps_i B_i(T) dlambda (eq. 48 of the emission times T_out),
+// for one emissivity on the view's grid: per node of SurfacePaths an L(T)
+// table (radiometry/band_planck_table.hpp) of weights eps_i T_out,i,
+// blended in mu with view_at's weights. That is the per-interval sum with
+// view_at's T_out (T_out is linear in mu between nodes, so is the sum) within
+// the tables' 3e-13 relative, for two exps per sample instead of a Planck
+// term per interval (issue 20 item 8).
+class PathEmission {
+ public:
+  PathEmission(const SurfacePaths& paths, const radiometry::SpectralView& view, const std::vector<double>& weights);
+  // W cm^-2 sr^-1, at the view's zenith cosine mu (clamped to [0, 1]).
+  double radiance(double mu_view, double temperature_K) const;
+
+ private:
+  std::vector<double> mu_;
+  std::vector<std::unique_ptr<radiometry::BandPlanckTable>> tables_;  // per node; null: T_out eps 0 throughout
 };
 
 // The Earth's atmosphere in the world (spec 4.3.1.1, DESIGN "The atmosphere
@@ -161,39 +192,56 @@ struct WorldAtmosphere {
   double scatter_band(const Vec3& d) const;
   void add_scatter(const Vec3& d, std::vector<double>& out) const;
   std::shared_ptr<const Downwelling> downwelling;  // on the Earth's surface, when the setting has it
+  // Per material of the world (grid integration), its emission through
+  // `surface` (PathEmission) and the scale of its emissivity (a gray
+  // body's eps; its table is the black body's).
+  struct SurfaceEmission {
+    std::shared_ptr<const PathEmission> table;
+    double scale = 1.0;
+  };
+  std::unordered_map<const SurfaceSpectrum*, SurfaceEmission> surface_emission;
 };
 
 // What the worlds of one engine build once and share (thread-safe): the
-// atmosphere's path optics per setting and band, and its surface tables
-// per observer altitude (clamped at the top of the atmosphere, so that every
-// observer above it shares one). Owned by the engine.
+// atmosphere's path optics per setting, band and sub-sample spacing, and
+// its tables per observer altitude (clamped at the top of the atmosphere,
+// so that every observer above it shares one) and table size (the
+// fidelity's atmosphere knobs). Owned by the engine.
 class WorldCache {
  public:
   std::shared_ptr<const atmosphere::PathOptics> optics(const universe::AtmosphereSettings& settings,
                                                        const std::string& data_dir,
-                                                       const radiometry::SpectralBand& band);
-  // The tables of `optics` for an observer at that (clamped) altitude, made by `make` if new.
+                                                       const radiometry::SpectralBand& band,
+                                                       double sub_sample_spacing_cm1 = atmosphere::kSubSampleSpacing_cm1);
+  // The tables of `optics` for an observer at that (clamped) altitude with
+  // that many nodes (and, for DownWelling, the sight lines' nodes), made by
+  // `make` if new.
   std::shared_ptr<const SurfacePaths> surface(const std::shared_ptr<const atmosphere::PathOptics>& optics,
-                                              double altitude_m, const std::function<SurfacePaths()>& make);
+                                              double altitude_m, std::int64_t nodes,
+                                              const std::function<SurfacePaths()>& make);
   std::shared_ptr<const SightLines> sight_lines(const std::shared_ptr<const atmosphere::PathOptics>& optics,
-                                                double altitude_m, const std::function<SightLines()>& make);
+                                                double altitude_m, std::int64_t nodes,
+                                                const std::function<SightLines()>& make);
   std::shared_ptr<const atmosphere::SunlightTable> sunlight(const std::shared_ptr<const atmosphere::PathOptics>& optics,
+                                                            std::int64_t nodes,
                                                             const std::function<atmosphere::SunlightTable()>& make);
-  std::shared_ptr<const Downwelling> downwelling(const std::shared_ptr<const atmosphere::PathOptics>& optics,
+  std::shared_ptr<const Downwelling> downwelling(const std::shared_ptr<const atmosphere::SunlightTable>& sunlight,
+                                                 std::int64_t nodes, std::int64_t sight_line_nodes,
                                                  const std::function<Downwelling()>& make);
   // The airglow's zenith radiance per interval of the optics' band.
   std::shared_ptr<const std::vector<double>> airglow(const std::shared_ptr<const atmosphere::PathOptics>& optics,
                                                      const std::function<std::vector<double>()>& make);
 
  private:
+  using Key = std::tuple<const void*, double, std::int64_t, std::int64_t>;
   std::mutex mutex_;
-  std::vector<std::tuple<universe::AtmosphereSettings, std::string, double, double, std::int64_t,
+  std::vector<std::tuple<universe::AtmosphereSettings, std::string, double, double, std::int64_t, double,
                          std::shared_ptr<const atmosphere::PathOptics>>>
       optics_;
-  std::map<std::pair<const atmosphere::PathOptics*, double>, std::shared_ptr<const SurfacePaths>> surface_;
-  std::map<std::pair<const atmosphere::PathOptics*, double>, std::shared_ptr<const SightLines>> sight_lines_;
-  std::map<const atmosphere::PathOptics*, std::shared_ptr<const atmosphere::SunlightTable>> sunlight_;
-  std::map<const atmosphere::PathOptics*, std::shared_ptr<const Downwelling>> downwelling_;
+  std::map<Key, std::shared_ptr<const SurfacePaths>> surface_;
+  std::map<Key, std::shared_ptr<const SightLines>> sight_lines_;
+  std::map<Key, std::shared_ptr<const atmosphere::SunlightTable>> sunlight_;
+  std::map<Key, std::shared_ptr<const Downwelling>> downwelling_;
   std::map<const atmosphere::PathOptics*, std::shared_ptr<const std::vector<double>>> airglow_;
 };
 

@@ -56,7 +56,7 @@ struct Sky {
                                        SpectralQuadrature::interval_midpoint);
     auto& lines = lines_[h];
     if (!lines) lines = std::make_shared<const scene::SightLines>(scene::SightLines::make(*optics, kEarth, h));
-    return scene::SkyView(lines, sunlight, e, to_sun, std::vector<double>(4, 1e-3), {}, v);
+    return scene::SkyView(lines, sunlight, e, to_sun, std::vector<double>(4, 1e-3), {}, {}, v);
   }
 };
 

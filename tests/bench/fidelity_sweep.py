@@ -8,6 +8,22 @@ Scenes (scenario files, driven through eoir.Scenario, the CLI's own scenario cod
   limb       tests/bench/scenes/leo_limb.json: the Earth's sunlit limb from LEO, 0.45-0.75 um
   star_field scenarios/demo/star_field.json: a GEO stare at a GEO satellite among ~30 stars
   spec_7_7_1 scenarios/validation/valid_sens_pt_src_tgt_uniform_bkg.json: the spec 7.7.1 point target
+  atmosphere_geo_visible, atmosphere_geo_lwir
+             tests/bench/scenes/geo_disc_atmosphere_{visible,lwir}.json: the GEO full disc through the
+             Earth's atmosphere, 0.45-0.75 um and 8-12 um (issue 20 item 8)
+  atmosphere_ground_sky
+             tests/bench/scenes/ground_sky_atmosphere.json: the daytime sky from the ground, 0.45-0.75 um
+
+The atmosphere scenes sweep the atmosphere's knobs (ATMOSPHERE_KNOBS) one at a
+time about their reference ATMOSPHERE_REFERENCE (every other atmosphere knob
+there, every other knob at its default, in the swept frames and the
+reference alike), so that each row's error is that knob's alone: the error
+model of adaptive fidelity (engine/scene/adaptive_fidelity.cpp) takes each
+knob's error at its default from these rows. Their tables are made once per
+engine, so the `chosen` column gives the first frame's time with that
+setting (its tables made) beside the steady frames' median, both with every
+other knob at its default (each in a new engine). `--scenes a,b` reruns those scenes and keeps the other scenes'
+rows of the existing CSV.
 
 For each scene, every knob of KNOBS is set to each of its values with every other
 property at its default; a frame is rendered once to warm up (tables, FFT plans),
@@ -44,7 +60,11 @@ SCENES = {
     "limb": ("tests/bench/scenes/leo_limb.json", "Limb"),
     "star_field": ("scenarios/demo/star_field.json", "SkyCam"),
     "spec_7_7_1": ("scenarios/validation/valid_sens_pt_src_tgt_uniform_bkg.json", "Sensor1"),
+    "atmosphere_geo_visible": ("tests/bench/scenes/geo_disc_atmosphere_visible.json", "Disc"),
+    "atmosphere_geo_lwir": ("tests/bench/scenes/geo_disc_atmosphere_lwir.json", "Disc"),
+    "atmosphere_ground_sky": ("tests/bench/scenes/ground_sky_atmosphere.json", "Sky"),
 }
+ATMOSPHERE_SCENES = {"atmosphere_geo_visible", "atmosphere_geo_lwir", "atmosphere_ground_sky"}
 
 # Where a scene's reference departs from REFERENCE, and why.
 REFERENCE_OVERRIDES = {
@@ -78,6 +98,24 @@ KNOBS = {
     "fft_padding": [0.0, 1.0, 2.0],
 }
 
+# The atmosphere's knobs (README "Speed", issue 20 item 8), swept on the atmosphere scenes.
+ATMOSPHERE_KNOBS = {
+    "atmosphere_sub_sample_spacing_cm1": [80.0, 40.0, 20.0, 10.0],
+    "atmosphere_surface_nodes": [9, 17, 33, 65],
+    "atmosphere_sight_line_nodes": [9, 17, 33, 65],
+    "atmosphere_sky_azimuths": [13, 25, 49, 97],
+    "atmosphere_sun_nodes": [9, 17, 33, 65],
+    "atmosphere_downwelling_nodes": [10, 20, 40, 80],
+}
+ATMOSPHERE_REFERENCE = {
+    "atmosphere_sub_sample_spacing_cm1": 5.0,
+    "atmosphere_surface_nodes": 129,
+    "atmosphere_sight_line_nodes": 129,
+    "atmosphere_sky_azimuths": 193,
+    "atmosphere_sun_nodes": 129,
+    "atmosphere_downwelling_nodes": 160,
+}
+
 # High-fidelity settings of the reference frame.
 REFERENCE = {
     "spectral_intervals": 100,
@@ -98,12 +136,16 @@ REFERENCE = {
 }
 
 
-def frame(sc, sensor, settings, repeat):
-    """Median wall time (ms) of `repeat` renders and the noise-free pixel means."""
+def frame(sc, sensor, settings, repeat, first=None):
+    """Median wall time (ms) of `repeat` renders and the noise-free pixel means
+    (first: a list that receives the warm-up render's time, ms)."""
     engine = sc.engine
     for k, v in settings.items():
         engine.set(sensor, k, v)
+    t0 = time.perf_counter()
     engine.render(sensor)  # warm-up: tables, plans
+    if first is not None:
+        first.append((time.perf_counter() - t0) * 1e3)
     times = []
     for _ in range(repeat):
         t0 = time.perf_counter()
@@ -144,14 +186,29 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "tests", "bench", "results"))
     ap.add_argument("--scenes", default=",".join(SCENES))
     args = ap.parse_args()
+    run = args.scenes.split(",")
     rows = []
-    for name in args.scenes.split(","):
+    kept = os.path.join(args.out, "fidelity_sweep.csv")
+    if os.path.exists(kept) and set(run) != set(SCENES):  # the other scenes' rows, as they were
+        with open(kept, newline="") as f:
+            for r in list(csv.reader(f))[1:]:
+                if r[0] not in run:
+                    value = r[2]
+                    try:
+                        value = float(value) if "." in value or "e" in value else int(value)
+                    except ValueError:
+                        pass
+                    rows.append([r[0], r[1], value, float(r[3]), float(r[4]), r[5] == "True", r[6]])
+    for name in run:
         path, sensor = SCENES[name]
+        atmosphere = name in ATMOSPHERE_SCENES
+        knobs = ATMOSPHERE_KNOBS if atmosphere else KNOBS
+        reference = ATMOSPHERE_REFERENCE if atmosphere else {**REFERENCE, **REFERENCE_OVERRIDES.get(name, {})}
         with eoir.Scenario.load(os.path.join(ROOT, path)) as sc:
             t = sc.times()[0]
             sc.set_time(t)
-            defaults = {k: sc.engine.get(sensor, k) for k in KNOBS}
-            ref_ms, ref = frame(sc, sensor, {**REFERENCE, **REFERENCE_OVERRIDES.get(name, {})}, args.repeat)
+            defaults = {k: sc.engine.get(sensor, k) for k in knobs}
+            ref_ms, ref = frame(sc, sensor, reference, args.repeat)
             ref_step = step_ms(sc, sensor, t, STEP_REPEAT)
             rows.append([name, "(reference)", "", ref_ms, 0.0, False, f"time step {ref_step:.1f} ms"])
             for k, v in defaults.items():  # back to the defaults
@@ -160,7 +217,7 @@ def main():
             rows.append([name, "(all defaults)", "", base_ms, relative_rms(base, ref), True, ""])
             print(f"{name}: reference {ref_ms:.1f} ms; defaults {base_ms:.1f} ms, error {rows[-1][4]:.2e}",
                   file=sys.stderr)
-            for budget in ADAPTIVE_BUDGETS:
+            for budget in ([] if atmosphere else ADAPTIVE_BUDGETS):
                 ms, img = frame(sc, sensor, {"error_budget": budget}, args.repeat)
                 chosen = sc.engine.frame_fidelity(sensor)
                 step = step_ms(sc, sensor, t, STEP_REPEAT)
@@ -173,12 +230,24 @@ def main():
                 print(f"  adaptive {budget}: {ms:.1f} ms ({ms / ref_ms:.2f} of the reference), error {err:.2e}; "
                       f"time step {step:.1f} ms ({step / ref_step:.3f} of {ref_step:.1f}); {shown}", file=sys.stderr)
             sc.engine.set(sensor, "error_budget", 0.0)
-            for knob, values in KNOBS.items():
+            for knob, values in knobs.items():
                 for value in values:
-                    ms, img = frame(sc, sensor, {knob: value}, args.repeat)
+                    first = []
+                    if atmosphere:
+                        # The error about the reference; the time (steady and first frame, its tables
+                        # made) with every other knob at its default, each in a new engine.
+                        with eoir.Scenario.load(os.path.join(ROOT, path)) as fresh:
+                            fresh.set_time(t)
+                            _, img = frame(fresh, sensor, {**reference, knob: value}, 1)
+                        with eoir.Scenario.load(os.path.join(ROOT, path)) as fresh:
+                            fresh.set_time(t)
+                            ms, _ = frame(fresh, sensor, {knob: value}, args.repeat, first)
+                    else:
+                        ms, img = frame(sc, sensor, {knob: value}, args.repeat)
                     err = relative_rms(img, ref)
-                    rows.append([name, knob, value, ms, err, value == defaults[knob], ""])
-                    print(f"  {knob} = {value}: {ms:.1f} ms, error {err:.2e}", file=sys.stderr)
+                    note = f"first frame {first[0]:.0f} ms" if atmosphere else ""
+                    rows.append([name, knob, value, ms, err, value == defaults[knob], note])
+                    print(f"  {knob} = {value}: {ms:.1f} ms, error {err:.2e} {note}", file=sys.stderr)
                 sc.engine.set(sensor, knob, defaults[knob])
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "fidelity_sweep.csv"), "w", newline="") as f:
@@ -233,7 +302,12 @@ def write_table(rows, out, repeat):
              f"Written by `tests/bench/fidelity_sweep.py` (median of {repeat} frames after a warm-up; error = relative "
              "RMS of the noise-free pixel means against the frame with every knob at its high-fidelity value: "
              + ", ".join(f"{k} {v}" for k, v in REFERENCE.items()) + "; star_field with 4 x 4 samples per pixel: "
-             "its satellite is a point source there and an under-sampled extended object at 8 x 8). `*` marks the "
+             "its satellite is a point source there and an under-sampled extended object at 8 x 8; the atmosphere "
+             "scenes' reference has every other knob at its default and the atmosphere's at "
+             + ", ".join(f"{k} {v}" for k, v in ATMOSPHERE_REFERENCE.items()) + ", and each of their knobs is "
+             "swept with the others there, so that a row's error is that knob's alone; its times are with every "
+             "other knob at its default, and `chosen` gives the first frame's time, its tables made, in a new "
+             "engine). `*` marks the "
              "default; **bold** rows are on the scene's Pareto front. `(adaptive) error_budget` rows: the engine "
              "chose the knobs for the budget (red stars in the chart; `chosen`: what it reported, and its time "
              "as a ratio to the reference frame's). Frame times are of renders at one instant, whose world and "

@@ -54,15 +54,17 @@ TEST(Airglow, PassesFromOrbit) {
   EXPECT_EQ(miss.near + miss.far, 0.0);
 }
 
-// The table's units: the O I 557.7 nm line's 320 R (Johnson 1992) in a
-// 1 nm interval around it is 320 x 1e6 / (4 pi) photons s^-1 cm^-2 sr^-1
+// The table's units: the O I 557.7 nm line's 320 R (Johnson 1992) and the
+// continuum's 1352 R over 0.45-0.76 um (4.36 R/nm) in the 1 nm interval
+// around the line are (320 + 4.36) x 1e6 / (4 pi) photons s^-1 cm^-2 sr^-1
 // of h c / 557.7 nm each (the rayleigh's definition, Hunten, Roach and
 // Chamberlain 1956), within 1e-4; nothing where the table has nothing.
 TEST(Airglow, RayleighsToRadiance) {
   const Airglow a = Airglow::load(resolve_data_dir(""));
   const std::vector<double> L = a.zenith_radiance(0.5572, 0.001, 1);
   const double photon_J = constants::planck_J_s * constants::speed_of_light_m_per_s / 0.5577e-6;
-  EXPECT_NEAR(L[0] * 0.001 / (320.0 * 1e6 / (4.0 * constants::pi) * photon_J), 1.0, 1e-4);
+  const double rayleighs = 320.0 + 1352.0 * 0.001 / (0.760 - 0.450);
+  EXPECT_NEAR(L[0] * 0.001 / (rayleighs * 1e6 / (4.0 * constants::pi) * photon_J), 1.0, 1e-4);
   EXPECT_EQ(a.zenith_radiance(8.0, 1.0, 4), std::vector<double>(4, 0.0));
 }
 

@@ -52,10 +52,14 @@ class SurfaceMap {
 };
 
 // A central body's maps in the data folder (empty pointers where there are
-// none): the Earth's land mask and land cover, the Moon's and Mars' albedo.
+// none): the Earth's land mask and land cover, the brightness of its land
+// relative to its class and its cloud fraction (data/earth/README.md), the
+// Moon's and Mars' albedo.
 struct BodyMaps {
   std::shared_ptr<const SurfaceMap> land_mask;
   std::shared_ptr<const SurfaceMap> land_cover;
+  std::shared_ptr<const SurfaceMap> land_brightness;
+  std::shared_ptr<const SurfaceMap> clouds;
   std::shared_ptr<const SurfaceMap> albedo;
 };
 

@@ -136,10 +136,8 @@ SurfacePoint SurfaceModel::at(const SurfaceSite& site) const {
   const Geography& g = geography_;
   if (g.bitmap() || g.clouds || (g.climatology && g.land_mask))
     g.locate(site.point_body_m, point);
-  if (g.clouds)
-    point.cloud_fraction = std::clamp(
-        g.clouds->value_offset() + g.clouds->value_scale() * g.clouds->at(point.latitude_deg, point.longitude_deg),
-        0.0, 1.0);
+  if (g.clouds)  // (bilinear: the map's 0.7-deg cells are wider than a GEO view's samples)
+    point.cloud_fraction = std::clamp(g.clouds->interpolated(point.latitude_deg, point.longitude_deg), 0.0, 1.0);
   if (g.land_cover) {
     constexpr std::uint8_t water = 17;  // IGBP water bodies (data/earth/README.md)
     const std::uint8_t c = g.land_cover->at(point.latitude_deg, point.longitude_deg);

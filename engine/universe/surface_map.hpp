@@ -22,6 +22,10 @@ class RasterLevel {
   ~RasterLevel();
   // The cell holding (lat, lon) (deg; longitude any value, wrapped).
   std::uint8_t at(double latitude_deg, double longitude_deg) const;
+  // The physical value (value_offset + value_scale x cell) interpolated
+  // bilinearly between the four cell centres around (lat, lon) (longitude
+  // wrapped on a global map, latitude held at the first and last rows).
+  double interpolated(double latitude_deg, double longitude_deg) const;
   double cell_deg() const { return cell_deg_; }
   double value_scale() const { return value_scale_; }
   double value_offset() const { return value_offset_; }

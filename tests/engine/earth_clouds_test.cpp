@@ -181,3 +181,21 @@ TEST(EarthClouds, CloudTopsEmitAtTheirTemperature) {
   const eoir::scene::WorldObject& earth2 = *colder->find("Earth");
   EXPECT_LT(earth2.surface->emission_radiance(earth2.surface->at(cloudy.site)), 0.8 * L_cloudy);
 }
+
+// The cloud fraction is read bilinearly between the map's cell centres
+// (universe/surface_map.hpp): at a centre the cell's value, halfway between
+// two centres their mean, across the date line too (columns 511 and 0).
+TEST(EarthClouds, CloudFractionBilinearBetweenCellCentres) {
+  Engine e;
+  const eoir::universe::RasterLevel& m =
+      e.library().maps_of(eoir::universe::CentralBody::earth)->clouds->finest();
+  const double cell = 360.0 / 512, scale = 1.0 / 255;
+  for (const auto& [i, j] : {std::pair{40, 100}, std::pair{128, 300}, std::pair{200, 511}}) {
+    const double lat = 90 - (i + 0.5) * cell, lon = -180 + (j + 0.5) * cell;
+    const double here = scale * m.at(lat, lon), east = scale * m.at(lat, lon + cell),
+                 south = scale * m.at(lat - cell, lon);
+    EXPECT_NEAR(m.interpolated(lat, lon), here, 1e-12);
+    EXPECT_NEAR(m.interpolated(lat, lon + cell / 2), 0.5 * (here + east), 1e-12) << i << " " << j;
+    EXPECT_NEAR(m.interpolated(lat - cell / 4, lon), 0.75 * here + 0.25 * south, 1e-12);
+  }
+}

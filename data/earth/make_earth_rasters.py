@@ -120,15 +120,12 @@ def classify_image(path):
     put(gr < 0.80, 7)                                    # red arid: open shrubland
     put((V >= 165) & (br >= 0.63), 16)                   # pale desert
     put(V >= 165, 7)
-    green = gr >= 1.15
-    put(green & tropics, 8)
-    put(green, 12)
-    olive = gr >= 0.95
-    put(olive & tropics & (V < 90), 8)
-    put(olive & tropics, 9)
-    put(olive, 10)
-    put((alat < 35) & (V >= 130), 7)                     # brown, dry: open shrubland
-    put(tropics, 9)
+    # Colour alone from here: a latitude cut (the tropics' savannas against
+    # grassland and cropland, dry shrubland within 35 deg) left straight
+    # seams where classes of unlike materials met (issue 20 item 7).
+    put(gr >= 1.15, 12)                                  # green: croplands
+    put(gr >= 0.95, 10)                                  # olive: grasslands
+    put(V >= 130, 7)                                     # brown, dry: open shrubland
     put(np.ones_like(tropics), 10)
     assert (cls > 0).all()
 

@@ -50,6 +50,7 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
     for (const PartSurface& s : parts_) reflects_ = reflects_ || s.spectrum->reflects();
     for (const auto* s : geography_.class_spectra) reflects_ = reflects_ || (s && s->reflects());
     for (const auto* s : geography_.albedo_spectra) reflects_ = reflects_ || (s && s->reflects());
+    if (geography_.clouds) reflects_ = reflects_ || geography_.cloud_spectrum->reflects();
   }
   for (const PartSurface& s : parts_)
     part_radiance_.push_back(self_radiance_.empty() ? s.spectrum->emission_radiance(s.temperature_K)
@@ -98,16 +99,55 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
   for (const PartSurface& s : parts_) bound(s.spectrum);
   for (const auto* s : geography_.class_spectra) bound(s);
   for (const auto* s : geography_.albedo_spectra) bound(s);
+  // The land's brightness scales an SRF by up to min(1 / max SRF, the map's
+  // largest value): the emission (1 - s) B + s eps B lies between the black
+  // body's and the one at the top scale, the reflection grows with s.
+  if (geography_.land_brightness) {
+    const universe::RasterLevel& b = *geography_.land_brightness;
+    const double map_top = b.value_offset() + 255.0 * b.value_scale();
+    const auto scaled = [&](const SurfaceSpectrum* s) {
+      if (!s || !(s->max_srf() > 0)) return;
+      const double top = std::min(map_top, 1.0 / s->max_srf());
+      emission_bound_ = std::max(emission_bound_, view.gray_body_radiance(hottest_K, 0.0));
+      const double floor = coldest_K > 0 ? (1.0 - top) * view.gray_body_radiance(coldest_K, 0.0) +
+                                               top * s->emission_radiance(coldest_K)
+                                         : 0.0;
+      emission_floor_ = std::min(emission_floor_, std::max(floor, 0.0));
+      srf_bound_ = std::max(srf_bound_, top * s->max_srf());
+      reflection_bound_per_sr_ =
+          std::max(reflection_bound_per_sr_, top * s->max_srf() * s->brdf().max_projected_value_per_sr());
+    };
+    for (const PartSurface& s : parts_) scaled(s.spectrum);
+    for (const auto* s : geography_.class_spectra) scaled(s);
+  }
+  // The cloud top: its own temperature (a blend lies between its layers).
+  if (const SurfaceSpectrum* cloud = geography_.cloud_spectrum; cloud && geography_.clouds) {
+    const double L = cloud->emission_radiance(geography_.cloud_temperature_K);
+    emission_bound_ = std::max(emission_bound_, L);
+    emission_floor_ = std::min(emission_floor_, L);
+    srf_bound_ = std::max(srf_bound_, cloud->max_srf());
+    reflection_bound_per_sr_ =
+        std::max(reflection_bound_per_sr_, cloud->max_srf() * cloud->brdf().max_projected_value_per_sr());
+  }
 }
 
 SurfacePoint SurfaceModel::at(const SurfaceSite& site) const {
   SurfacePoint point{site, parts_[index(site.part)].spectrum};
   const Geography& g = geography_;
-  if (g.bitmap() || (g.climatology && g.land_mask))
+  if (g.bitmap() || g.clouds || (g.climatology && g.land_mask))
     g.locate(site.point_body_m, point);
+  if (g.clouds)  // (bilinear: the map's 0.7-deg cells are wider than a GEO view's samples)
+    point.cloud_fraction = std::clamp(g.clouds->interpolated(point.latitude_deg, point.longitude_deg), 0.0, 1.0);
   if (g.land_cover) {
+    constexpr std::uint8_t water = 17;  // IGBP water bodies (data/earth/README.md)
     const std::uint8_t c = g.land_cover->at(point.latitude_deg, point.longitude_deg);
     if (c < g.class_spectra.size() && g.class_spectra[c]) point.spectrum = g.class_spectra[c];
+    if (g.land_brightness && c != water && point.spectrum->max_srf() > 0) {
+      const universe::RasterLevel& b = *g.land_brightness;
+      point.reflectance_scale =
+          std::clamp(b.value_offset() + b.value_scale() * b.at(point.latitude_deg, point.longitude_deg), 0.0,
+                     1.0 / point.spectrum->max_srf());
+    }
   } else if (g.albedo) {
     if (const SurfaceSpectrum* s = g.albedo_spectra[g.albedo->at(point.latitude_deg, point.longitude_deg)])
       point.spectrum = s;
@@ -130,16 +170,48 @@ void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& 
     for (std::size_t i = 0; i < out.size(); ++i) out[i] += self_radiance_[i];
     return;
   }
-  point.spectrum->add_emission(temperature_K(point), out);
+  const double f = point.cloud_fraction, s = point.reflectance_scale;
+  if (f == 0.0 && s == 1.0) return point.spectrum->add_emission(temperature_K(point), out);
+  // Emissivity 1 - s SRF: (1 - s) B + s (1 - SRF) B; the cloud top's by its fraction.
+  thread_local std::vector<double> black, surface, cloud;  // per-sample scratch
+  const double T = temperature_K(point);
+  black.assign(out.size(), 0.0);
+  surface.assign(out.size(), 0.0);
+  cloud.assign(out.size(), 0.0);
+  if (f < 1.0) {
+    view_->add_gray_body_spectrum(T, 0.0, black);
+    point.spectrum->add_emission(T, surface);
+  }
+  if (f > 0.0) geography_.cloud_spectrum->add_emission(geography_.cloud_temperature_K, cloud);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] += (1.0 - f) * ((1.0 - s) * black[i] + s * surface[i]) + f * cloud[i];
 }
 
 double SurfaceModel::emission_radiance(const SurfacePoint& point) const {
   if (!varying()) return part_radiance(point.site.part);
-  return point.spectrum->emission_radiance(temperature_K(point));
+  const double f = point.cloud_fraction, s = point.reflectance_scale;
+  if (f == 0.0 && s == 1.0) return point.spectrum->emission_radiance(temperature_K(point));
+  double L = 0;
+  if (f < 1.0) {
+    const double T = temperature_K(point);
+    L = (1.0 - f) * ((1.0 - s) * view_->gray_body_radiance(T, 0.0) + s * point.spectrum->emission_radiance(T));
+  }
+  if (f > 0.0) L += f * geography_.cloud_spectrum->emission_radiance(geography_.cloud_temperature_K);
+  return L;
+}
+
+void SurfaceModel::add_srf(const SurfacePoint& point, double weight, std::vector<double>& srf) const {
+  const double f = point.cloud_fraction;
+  if (point.spectrum->reflects()) {
+    const double w = weight * (1.0 - f) * point.reflectance_scale;
+    for (std::size_t i = 0; i < srf.size(); ++i) srf[i] += w * point.spectrum->srf()[i];
+  }
+  if (f > 0.0)
+    for (std::size_t i = 0; i < srf.size(); ++i) srf[i] += weight * f * geography_.cloud_spectrum->srf()[i];
 }
 
 double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point) const {
-  if (!thermal_.subsolar || table_.empty() || geography_.bitmap() || geography_.climatology)
+  if (!thermal_.subsolar || table_.empty() || geography_.bitmap() || geography_.climatology || geography_.clouds)
     return emission_radiance(point);
   const auto& row = table_[index(point.site.part)];
   const double last = static_cast<double>(row.size() - 1);

@@ -2,11 +2,15 @@
 // 4.3.1.3): per shape part its material as the view sees it and its
 // temperature, the thermal field that varies it, a tabulated self-radiance
 // (spec 4.1.4) in place of eps B(T), and on central bodies the geography
-// that maps, in bitmap mode, give each point its own material (spec 4.2.3)
-// and, with the climatology thermal model, land or water temperatures. The
-// world combines it with the light that reaches a point (eq. 4).
+// that maps, in bitmap mode, give each point its own material (spec 4.2.3),
+// scaled by the land's brightness within its class, and, with the
+// climatology thermal model, land or water temperatures; on the Earth the
+// optional cloud layer blends a cloud top over the surface by its fraction
+// (issue 20 item 7). The world combines it with the light that reaches a
+// point (eq. 4) through reflect().
 #pragma once
 #include <Eigen/Core>
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -42,6 +46,8 @@ struct SurfacePoint {
   const SurfaceSpectrum* spectrum = nullptr;
   double latitude_deg = 0.0, longitude_deg = 0.0;  // central bodies with maps or a climatology
   double sin_latitude = 0.0, cos_latitude = 1.0;
+  double reflectance_scale = 1.0;  // multiplies the spectrum's SRF (bitmap mode: the land's brightness)
+  double cloud_fraction = 0.0;     // the cloud layer's share of the point
 };
 
 // A central body's coordinates and the maps read at a point.
@@ -52,6 +58,13 @@ struct Geography {
   // each albedo value (index 0..255).
   const universe::RasterLevel* land_cover = nullptr;
   std::vector<const SurfaceSpectrum*> class_spectra;
+  // Bitmap mode: the land's brightness relative to its class's mean, which
+  // scales the class's SRF (at most to SRF 1; not water's).
+  const universe::RasterLevel* land_brightness = nullptr;
+  // The cloud layer: its fraction, the cloud top's material, height and temperature.
+  const universe::RasterLevel* clouds = nullptr;
+  const SurfaceSpectrum* cloud_spectrum = nullptr;
+  double cloud_height_m = 0, cloud_temperature_K = 0;
   const universe::RasterLevel* albedo = nullptr;
   std::vector<const SurfaceSpectrum*> albedo_spectra;
   // Thermal model climatology: land or water from the mask, then the tables.
@@ -79,9 +92,23 @@ class SurfaceModel {
   double temperature_K(const SurfacePoint& point) const;
   // Some part (or map class) reflects light in the band.
   bool reflects() const { return reflects_; }
-  bool reflects(const SurfacePoint& point) const { return self_radiance_.empty() && point.spectrum->reflects(); }
+  bool reflects(const SurfacePoint& point) const {
+    return self_radiance_.empty() && (point.spectrum->reflects() || point.cloud_fraction > 0);
+  }
+  // The reflected spectrum at a point (eq. 4, SRF x E): `out` = the sum over
+  // its layers (the surface, and the cloud top by its fraction) of the
+  // layer's SRF times irradiance(brdf, height_m, E), which fills E with the
+  // light the layer's BRDF reflects toward the observer at the point raised
+  // by height_m along its normal. E is scratch. Only where reflects(point).
+  template <class Irradiance>
+  void reflect(const SurfacePoint& point, Irradiance&& irradiance, std::vector<double>& out,
+               std::vector<double>& E) const;
+  // Adds weight x the point's SRF (its layers blended) to `srf`.
+  void add_srf(const SurfacePoint& point, double weight, std::vector<double>& srf) const;
   // The temperature or the material varies over a part.
-  bool varying() const { return thermal_.subsolar || geography_.bitmap() || geography_.climatology; }
+  bool varying() const {
+    return thermal_.subsolar || geography_.bitmap() || geography_.climatology || geography_.clouds;
+  }
   // One radiance per part, whatever the point and the light.
   bool plain() const { return !reflects_ && !varying(); }
   bool bitmap() const { return geography_.bitmap(); }
@@ -123,5 +150,26 @@ class SurfaceModel {
   double emission_bound_ = 0, emission_floor_ = 0, reflection_bound_per_sr_ = 0, srf_bound_ = 0;
   std::vector<std::vector<double>> table_;  // per part, L at T0 + k dT
 };
+
+template <class Irradiance>
+void SurfaceModel::reflect(const SurfacePoint& point, Irradiance&& irradiance, std::vector<double>& out,
+                           std::vector<double>& E) const {
+  const std::size_t n = out.size();
+  const double f = point.cloud_fraction;
+  std::fill(out.begin(), out.end(), 0.0);
+  if (f < 1.0 && point.spectrum->reflects()) {
+    E.assign(n, 0.0);
+    irradiance(point.spectrum->brdf(), 0.0, E);
+    const std::vector<double>& srf = point.spectrum->srf();
+    const double w = (1.0 - f) * point.reflectance_scale;
+    for (std::size_t i = 0; i < n; ++i) out[i] = E[i] * (w * srf[i]);
+  }
+  if (f > 0.0) {
+    const SurfaceSpectrum& cloud = *geography_.cloud_spectrum;
+    E.assign(n, 0.0);
+    irradiance(cloud.brdf(), geography_.cloud_height_m, E);
+    for (std::size_t i = 0; i < n; ++i) out[i] += E[i] * (f * cloud.srf()[i]);
+  }
+}
 
 }  // namespace eoir::scene

@@ -21,6 +21,7 @@ SurfaceSpectrum::SurfaceSpectrum(const universe::Material& material, double gray
   srf_ = gray_ ? std::vector<double>(static_cast<std::size_t>(b.intervals), gray_reflectance)
                : material.reflectance.interval_means(b.low_um, b.interval_um(), b.intervals);
   reflects_ = std::any_of(srf_.begin(), srf_.end(), [](double r) { return r > 0.0; });
+  if (!srf_.empty()) max_srf_ = *std::max_element(srf_.begin(), srf_.end());
   if (!gray_ && view.integration == BandIntegration::grid) {
     std::vector<double> emissivity(srf_.size());
     for (std::size_t i = 0; i < srf_.size(); ++i)

@@ -22,6 +22,8 @@ class SurfaceSpectrum {
   const std::vector<double>& srf() const { return srf_; }
   // True if it reflects anything in the band (some SRF > 0).
   bool reflects() const { return reflects_; }
+  // The largest SRF of the band (a scale of the SRF up to 1 / max_srf keeps it a reflectance).
+  double max_srf() const { return max_srf_; }
   const radiometry::Brdf& brdf() const { return brdf_; }
   // Adds eps_lambda B_lambda(T) (W cm^-2 sr^-1 um^-1) at the view's
   // wavelengths to `out` (N values).
@@ -39,6 +41,7 @@ class SurfaceSpectrum {
   bool gray_ = true;
   double gray_reflectance_ = 0.0;
   bool reflects_ = false;
+  double max_srf_ = 0.0;
   std::vector<double> srf_;
   radiometry::Brdf brdf_;
   // emission_radiance's table, weights (1 - SRF) times the view's transmittance (grid integration, not gray).

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/frames.hpp"
 #include "geometry/projected_area.hpp"
+#include "scene/cloud_top.hpp"
 #include "universe/object_motion.hpp"
 #include "universe/rotation_models.hpp"
 
@@ -107,6 +108,12 @@ class WorldBuilder {
     if (it != index_.end()) return world_.spectra[it->second].get();
     world_.spectra.push_back(std::make_unique<SurfaceSpectrum>(m, gray_reflectance, view));
     index_[key] = world_.spectra.size() - 1;
+    return world_.spectra.back().get();
+  }
+
+  // A material made for this world alone (the cloud tops).
+  const SurfaceSpectrum* own(const universe::Material& material, const radiometry::SpectralView& view) {
+    world_.spectra.push_back(std::make_unique<SurfaceSpectrum>(material, 0.0, view));
     return world_.spectra.back().get();
   }
 
@@ -324,8 +331,7 @@ const LightSpectra& WorldObject::light_spectra() const {
     const auto add = [&](const SurfaceSite& site, double area) {
       const SurfacePoint point = surface->at(site);
       const double weight = seen_disc ? area * std::max(0.0, site.normal_body.dot(toward)) : area;
-      if (surface->reflects(point))
-        for (std::size_t i = 0; i < n; ++i) srf[i] += weight * point.spectrum->srf()[i];
+      if (surface->reflects(point)) surface->add_srf(point, weight, srf);
       srf_weight += weight;
       std::fill(e.begin(), e.end(), 0.0);
       surface->add_emission(point, e);
@@ -386,10 +392,13 @@ void WorldObject::spectral_radiance_into(std::int32_t part, const Vec3& point_bo
   out.assign(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
   const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
   if (surface->reflects(point)) {
-    E.assign(out.size(), 0.0);
-    const SurfaceSpectrum& s = *point.spectrum;
-    add_reflected_irradiance(to_frame(point_body_m), placed.body_to_frame * normal_body, toward, s.brdf(), sun_only, E);
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = E[i] * s.srf()[i];
+    const Vec3 p = to_frame(point_body_m), n = placed.body_to_frame * normal_body;
+    surface->reflect(
+        point,
+        [&](const radiometry::Brdf& brdf, double height_m, std::vector<double>& into) {
+          add_reflected_irradiance(p + height_m * n, n, toward, brdf, sun_only, into);
+        },
+        out, E);
     // (as effective_radiance leaves out what cannot reach kNegligible of the reflected light)
     if (skip_negligible_emission && world_->view.spectral.integrate(out) > surface->emission_bound() / kNegligible)
       return;
@@ -442,13 +451,16 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
   const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
   double reflected = 0;
   if (surface->reflects(point)) {
-    const Vec3 p = to_frame(point_body_m);
-    thread_local std::vector<double> E;  // per-sample scratch: no allocation per call
-    E.assign(world_->view.spectral.sample_wavelengths_um.size(), 0.0);
-    const SurfaceSpectrum& s = *point.spectrum;
-    add_reflected_irradiance(p, placed.body_to_frame * normal_body, -p.normalized(), s.brdf(), false, E);
-    for (std::size_t i = 0; i < E.size(); ++i) E[i] *= s.srf()[i];
-    reflected = view().integrate(E);
+    const Vec3 p = to_frame(point_body_m), n = placed.body_to_frame * normal_body, toward = -p.normalized();
+    thread_local std::vector<double> E, L;  // per-sample scratch: no allocation per call
+    L.resize(world_->view.spectral.sample_wavelengths_um.size());
+    surface->reflect(
+        point,
+        [&](const radiometry::Brdf& brdf, double height_m, std::vector<double>& into) {
+          add_reflected_irradiance(p + height_m * n, n, toward, brdf, false, into);
+        },
+        L, E);
+    reflected = view().integrate(L);
   }
   // Self-emission that cannot reach kNegligible of the reflected
   // light (a visible band by day: B(0.75 um, 380 K) ~ 1e-22 of the Sun's) is
@@ -599,7 +611,9 @@ Eq9Terms WorldObject::eq9_terms(std::int32_t part, const Vec3& point_body_m, con
       if (surface->reflects(p)) {
         w.atmosphere.downwelling->add_over_pi((placed.body_to_frame * normal_body).dot(w.atmosphere.to_sun),
                                               w.atmosphere.sun_irradiance, t.downwelling);
-        for (std::size_t i = 0; i < n; ++i) t.downwelling[i] *= p.spectrum->srf()[i];
+        std::vector<double> srf(n, 0.0);
+        surface->add_srf(p, 1.0, srf);
+        for (std::size_t i = 0; i < n; ++i) t.downwelling[i] *= srf[i];
       }
     }
     w.atmosphere.surface->view_at((placed.body_to_frame * normal_body).dot(toward), t.transmittance, t.path_thermal);
@@ -1178,6 +1192,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
                 geography.class_spectra[static_cast<std::size_t>(c)] =
                     builder.spectrum(name, 0.0, o.name + ".bitmap", w.view());
           }
+          if (maps->land_brightness) geography.land_brightness = &maps->land_brightness->finest();
         }
         if (f.scene_mode == SceneMode::bitmap && maps->albedo) {
           const universe::RasterLevel& level = maps->albedo->level_for(gsd_m, w.equatorial_radius_m);
@@ -1192,6 +1207,17 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
           geography.climatology = library.climatology.get();
           geography.climatology_now = ClimatologyInstant(*geography.climatology, calendar_instant(t));
         }
+      }
+      if (o.clouds.enabled) {  // (the property refuses every body but the Earth)
+        const universe::BodyMaps* maps = library.maps_of(o.central_body);
+        if (!maps || !maps->clouds)
+          throw Error(Status::io, o.name + ".clouds: the data folder has no cloud map (earth/clouds_L0.json; "
+                                           "data/earth/README.md)");
+        geography.clouds = &maps->clouds->finest();
+        geography.cloud_spectrum =
+            builder.own(cloud_top_material(library.materials, o.clouds.reflectance, o.name + ".clouds"), w.view());
+        geography.cloud_height_m = 1e3 * o.clouds.top_altitude_km;
+        geography.cloud_temperature_K = o.clouds.top_temperature_K;
       }
       if (o.body.thermal_model == universe::ThermalModel::climatology && !geography.climatology)
         throw Error(Status::not_allowed, o.name + ".thermal_model: climatology is the Earth's (land and water tables)");

@@ -22,6 +22,11 @@ Library Library::load(const std::string& data_dir) {
   e.land_mask = SurfaceMap::load({earth + "landmask_L0.json", earth + "landmask_L1.json", earth + "landmask_L2.json"});
   e.land_cover =
       SurfaceMap::load({earth + "landcover_L0.json", earth + "landcover_L1.json", earth + "landcover_L2.json"});
+  // (optional: a data folder built without them has flat land classes and no clouds)
+  std::error_code missing;
+  if (std::filesystem::exists(earth + "land_brightness_L0.json", missing))
+    e.land_brightness = SurfaceMap::load({earth + "land_brightness_L0.json"});
+  if (std::filesystem::exists(earth + "clouds_L0.json", missing)) e.clouds = SurfaceMap::load({earth + "clouds_L0.json"});
   lib.maps[CentralBody::moon].albedo = SurfaceMap::load({moon + "moon_albedo_L0.json", moon + "moon_albedo_L1.json"});
   lib.maps[CentralBody::mars].albedo = SurfaceMap::load({moon + "mars_albedo_L0.json"});
   lib.climatology = std::make_shared<const SurfaceClimatology>(SurfaceClimatology::load(data_dir));

@@ -11,6 +11,7 @@
 #include "core/frames.hpp"
 #include "core/time.hpp"
 #include "universe/atmosphere_settings.hpp"
+#include "universe/cloud_settings.hpp"
 #include "universe/central_bodies.hpp"
 #include "universe/sensor_parameters.hpp"
 #include "universe/shapes.hpp"
@@ -117,6 +118,7 @@ struct Object {
   std::string parent;  // sensors only
   BodyProperties body;
   AtmosphereSettings atmosphere;  // central bodies: only the Earth's may be on
+  CloudSettings clouds;           // central bodies: only the Earth's may be on
   StarFieldProperties stars;
   SensorParameters sensor;
   SiteProperties site;

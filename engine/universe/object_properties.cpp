@@ -212,6 +212,42 @@ std::vector<Spec> atmosphere_properties() {
   return t;
 }
 
+// The Earth's cloud layer (universe/cloud_settings.hpp): properties of every
+// central body, but only the Earth's may be switched on.
+std::vector<Spec> cloud_properties() {
+  std::vector<Spec> t;
+  Spec clouds = bool_property<Object>(
+      "clouds",
+      "The cloud layer (off by default): the cloud fraction of the data folder's cloud map blends a backscattering "
+      "cloud top at cloud_top_altitude_km, emitting at cloud_top_temperature_K, over the surface beneath; the "
+      "Earth's only",
+      [](Object& o) -> auto& { return o.clouds.enabled; });
+  const auto set_clouds = clouds.set;
+  clouds.set = [set_clouds](Object& o, const Value& v) {
+    Object probe = o;
+    set_clouds(probe, v);
+    if (probe.clouds.enabled && !(o.kind == ObjectKind::central_body && o.central_body == CentralBody::earth))
+      throw Error(Status::not_allowed, "clouds: only the Earth's cloud layer is modeled, not " + o.name + "'s");
+    set_clouds(o, v);
+  };
+  t.push_back(clouds);
+  t.push_back(number_property<Object>(
+      "cloud_top_altitude_km", "km",
+      "Height of the cloud tops above the ellipsoid, where they take the Sun's light (5 km: ISCCP's mean cloud-top "
+      "pressure of ~550 hPa)",
+      [](Object& o) -> auto& { return o.clouds.top_altitude_km; }, Range{0.0, 20.0}));
+  t.push_back(number_property<Object>(
+      "cloud_top_temperature_K", "K",
+      "Temperature of the cloud tops' emission (255.7 K: US Standard Atmosphere 1976 at 5 km)",
+      [](Object& o) -> auto& { return o.clouds.top_temperature_K; }, Range{150.0, 320.0}));
+  t.push_back(number_property<Object>(
+      "cloud_reflectance", "",
+      "Spectral reflectance (SRF) of the cloud tops at 0.55 um; the spectrum has the shape of the fine_snow "
+      "material's (water ice: bright to 1 um, dark at 1.5 and 2 um, nearly black in the thermal infrared)",
+      [](Object& o) -> auto& { return o.clouds.reflectance; }, Range{0.0, 1.0}));
+  return t;
+}
+
 std::vector<Spec> star_field_properties() {
   std::vector<Spec> t;
   t.push_back(number_property<Object>(
@@ -316,6 +352,7 @@ const std::vector<Spec>& properties_of(ObjectKind kind) {
     std::vector<Spec> t = body_properties(false);
     t.push_back(rings_property());
     for (Spec& s : atmosphere_properties()) t.push_back(std::move(s));
+    for (Spec& s : cloud_properties()) t.push_back(std::move(s));
     return t;
   }();
   switch (kind) {

@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -116,6 +117,30 @@ std::uint8_t RasterLevel::at(double latitude_deg, double longitude_deg) const {
   auto j = static_cast<std::int64_t>(std::floor(lon * per_degree));
   j = std::clamp<std::int64_t>(j, 0, width_ - 1);
   return row(i)[j];
+}
+
+double RasterLevel::interpolated(double latitude_deg, double longitude_deg) const {
+  const double per_degree = cells_per_degree_ > 0 ? static_cast<double>(cells_per_degree_) : 1.0 / cell_deg_;
+  // Position in cells from the centre of cell (0, 0).
+  const double last_row = static_cast<double>(height_ - 1);
+  const double y = std::clamp((lat_north_deg_ - latitude_deg) * per_degree - 0.5, 0.0, last_row);
+  double lon = longitude_deg - lon_west_deg_;
+  if (lon < -360.0 || lon >= 360.0) lon = std::fmod(lon, 360.0);
+  if (lon < 0) lon += 360.0;
+  const double x = lon * per_degree - 0.5;
+  const auto i0 = std::min(static_cast<std::int64_t>(y), height_ - 1), i1 = std::min(i0 + 1, height_ - 1);
+  const auto j = static_cast<std::int64_t>(std::floor(x));
+  const bool global = std::fabs(static_cast<double>(width_) / per_degree - 360.0) < 1e-9;
+  const auto column = [&](std::int64_t k) {
+    if (global) return ((k % width_) + width_) % width_;
+    return std::clamp<std::int64_t>(k, 0, width_ - 1);
+  };
+  const std::int64_t j0 = column(j), j1 = column(j + 1);
+  const double u = x - static_cast<double>(j), v = y - static_cast<double>(i0);
+  const std::uint8_t* r0 = row(i0);
+  const std::uint8_t* r1 = row(i1);
+  const double top = (1 - u) * r0[j0] + u * r0[j1], bottom = (1 - u) * r1[j0] + u * r1[j1];
+  return value_offset_ + value_scale_ * ((1 - v) * top + v * bottom);
 }
 
 std::shared_ptr<const SurfaceMap> SurfaceMap::load(const std::vector<std::string>& sidecars) {

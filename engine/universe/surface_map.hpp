@@ -22,6 +22,10 @@ class RasterLevel {
   ~RasterLevel();
   // The cell holding (lat, lon) (deg; longitude any value, wrapped).
   std::uint8_t at(double latitude_deg, double longitude_deg) const;
+  // The physical value (value_offset + value_scale x cell) interpolated
+  // bilinearly between the four cell centres around (lat, lon) (longitude
+  // wrapped on a global map, latitude held at the first and last rows).
+  double interpolated(double latitude_deg, double longitude_deg) const;
   double cell_deg() const { return cell_deg_; }
   double value_scale() const { return value_scale_; }
   double value_offset() const { return value_offset_; }
@@ -52,10 +56,14 @@ class SurfaceMap {
 };
 
 // A central body's maps in the data folder (empty pointers where there are
-// none): the Earth's land mask and land cover, the Moon's and Mars' albedo.
+// none): the Earth's land mask and land cover, the brightness of its land
+// relative to its class and its cloud fraction (data/earth/README.md), the
+// Moon's and Mars' albedo.
 struct BodyMaps {
   std::shared_ptr<const SurfaceMap> land_mask;
   std::shared_ptr<const SurfaceMap> land_cover;
+  std::shared_ptr<const SurfaceMap> land_brightness;
+  std::shared_ptr<const SurfaceMap> clouds;
   std::shared_ptr<const SurfaceMap> albedo;
 };
 

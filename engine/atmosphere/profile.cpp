@@ -72,7 +72,7 @@ AtmosphereProfile::AtmosphereProfile(std::vector<ProfileLevel> levels) : levels_
 }
 
 std::shared_ptr<const AtmosphereProfile> AtmosphereProfile::make(const universe::AtmosphereSettings& settings,
-                                                                 const std::string& data_dir) {
+                                                                 const std::string& data_dir, std::size_t layer_stride) {
   const std::string path = data_dir + "/atmosphere/" + afgl_file(settings.profile);
   const std::vector<AfglRow> rows = read_afgl(path);
   const AerosolProfile aerosol = AerosolProfile::make(settings, data_dir);
@@ -100,6 +100,12 @@ std::shared_ptr<const AtmosphereProfile> AtmosphereProfile::make(const universe:
     d.aerosol_550_per_m = aerosol.extinction_550_per_m(z);
     d.boundary_aerosol_550_per_m = z <= kBoundaryLayerTop_m ? d.aerosol_550_per_m : 0.0;
     levels.push_back(l);
+  }
+  if (layer_stride > 1) {
+    std::vector<ProfileLevel> kept;
+    for (std::size_t i = 0; i < levels.size(); i += layer_stride) kept.push_back(levels[i]);
+    if (kept.back().altitude_m != levels.back().altitude_m) kept.push_back(levels.back());
+    levels = std::move(kept);
   }
   return std::make_shared<const AtmosphereProfile>(std::move(levels));
 }

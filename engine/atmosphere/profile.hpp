@@ -55,8 +55,9 @@ class AtmosphereProfile {
  public:
   // The profile the settings name, from the data folder's atmosphere/ files
   // (throws io or corrupt_file naming the file and line).
+  // layer_stride keeps every n-th level (the first and the last always).
   static std::shared_ptr<const AtmosphereProfile> make(const universe::AtmosphereSettings& settings,
-                                                       const std::string& data_dir);
+                                                       const std::string& data_dir, std::size_t layer_stride = 1);
   // From levels (ascending altitude, at least two): tests and user profiles.
   explicit AtmosphereProfile(std::vector<ProfileLevel> levels);
 

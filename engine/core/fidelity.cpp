@@ -160,6 +160,11 @@ const std::vector<Spec>& fidelity_properties() {
                                    "most this far apart in wavenumber (20: the band models' resolution)",
                                    [](F& f) -> auto& { return f.atmosphere_sub_sample_spacing_cm1; }, Range{1, 1000},
                                    true));
+    t.push_back(integer_property<F>("atmosphere_layer_stride", "count",
+                                    "The Earth's atmosphere: the profile's levels the paths cross, every n-th (the "
+                                    "ground's and the top always kept): layers about n times thicker, densities "
+                                    "log-linear across them (1: every level)",
+                                    [](F& f) -> auto& { return f.atmosphere_layer_stride; }, Range{1, 16}, true));
     t.push_back(integer_property<F>("atmosphere_surface_nodes", "count",
                                     "The Earth's atmosphere: nodes of T_out, L_path and T_in of the Earth's surface "
                                     "over the zenith cosine, dense toward the horizon (mu = (k / (n - 1))^2)",

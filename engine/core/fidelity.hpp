@@ -90,6 +90,9 @@ struct Fidelity {
   // Transmittance sub-samples of each spectral interval at most this far
   // apart in wavenumber (atmosphere/path_optics.hpp: the band models' 20 cm^-1).
   double atmosphere_sub_sample_spacing_cm1 = 20.0;
+  // The profile's levels the paths cross: every n-th (the ground's and the
+  // top always), so its layers are about n times thicker (1: every level).
+  std::int64_t atmosphere_layer_stride = 1;
   std::int64_t atmosphere_surface_nodes = 33;  // T_out, L_path, T_in of the Earth's surface over the zenith cosine
   // Lines of sight of the sky and the haze (scene/sight_lines.hpp) that meet
   // the ground; those through the limb and (from inside) above the horizon

@@ -210,6 +210,10 @@ double choose_atmosphere(const World& world, double share, Fidelity& f) {
       break;
     }
   f.atmosphere_sub_sample_spacing_cm1 = s->spacing_cm1;
+  // Every level of the profile: a coarser one (atmosphere_layer_stride)
+  // only shortens the making of the tables, once per atmosphere and band,
+  // never a frame (the sweep's errors for it are in fidelity_sweep.md).
+  f.atmosphere_layer_stride = 1;
   return sum + s->error;
 }
 

@@ -421,8 +421,10 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
     const World& w = *world_;
     const Vec3 d = to_frame(point_body_m).normalized();
     const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
-    const auto table = surface->tabulated() ? w.atmosphere.surface_emission.end()
-                                            : w.atmosphere.surface_emission.find(point.spectrum);
+    // (Under clouds the exact sum: their light comes from another height.)
+    const auto table = surface->tabulated() || point.cloud_fraction > 0.0
+                           ? w.atmosphere.surface_emission.end()
+                           : w.atmosphere.surface_emission.find(point.spectrum);
     if (table == w.atmosphere.surface_emission.end()) {
       spectral_radiance_into(part, point_body_m, normal_body, -d, false, L, E, true);
       to_sensor(L, point_body_m, normal_body, false);
@@ -438,13 +440,16 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
       E.assign(L.size(), 0.0);
       const SurfaceSpectrum& s = *point.spectrum;
       add_reflected_irradiance(to_frame(point_body_m), placed.body_to_frame * normal_body, -d, s.brdf(), false, E);
-      for (std::size_t i = 0; i < L.size(); ++i) L[i] = E[i] * s.srf()[i];
+      for (std::size_t i = 0; i < L.size(); ++i) L[i] = E[i] * point.reflectance_scale * s.srf()[i];
       emits = !(w.view.spectral.integrate(L) > surface->emission_bound() / kNegligible);
     }
-    const double emitted =
-        emits ? table->second.scale *
-                    table->second.table->radiance((placed.body_to_frame * normal_body).dot(-d), surface->temperature_K(point))
-              : 0.0;
+    double emitted = 0;
+    if (emits) {  // emissivity 1 - s SRF: s (1 - SRF) + (1 - s) of a black body (SurfaceModel::add_emission)
+      const double mu = (placed.body_to_frame * normal_body).dot(-d), T = surface->temperature_K(point);
+      const double s = point.reflectance_scale;
+      emitted = s * table->second.scale * table->second.table->radiance(mu, T);
+      if (s != 1.0) emitted += (1.0 - s) * w.atmosphere.black_emission->radiance(mu, T);
+    }
     to_sensor(L, point_body_m, normal_body, false);
     return w.view.spectral.integrate(L) + emitted + w.atmosphere.scatter_band(d);
   }
@@ -894,16 +899,19 @@ constexpr std::size_t kWorldCacheEntries = 16;
 std::shared_ptr<const atmosphere::PathOptics> WorldCache::optics(const universe::AtmosphereSettings& settings,
                                                                  const std::string& data_dir,
                                                                  const radiometry::SpectralBand& band,
-                                                                 double sub_sample_spacing_cm1) {
+                                                                 double sub_sample_spacing_cm1,
+                                                                 std::int64_t layer_stride) {
   std::lock_guard<std::mutex> lock(mutex_);
-  for (const auto& [s, dir, low, high, n, spacing, optics] : optics_)
+  for (const auto& [s, dir, low, high, n, spacing, stride, optics] : optics_)
     if (s == settings && dir == data_dir && low == band.low_um && high == band.high_um && n == band.intervals &&
-        spacing == sub_sample_spacing_cm1)
+        spacing == sub_sample_spacing_cm1 && stride == layer_stride)
       return optics;
-  auto made = std::make_shared<const atmosphere::PathOptics>(atmosphere::AtmosphereProfile::make(settings, data_dir),
-                                                             settings, data_dir, band, sub_sample_spacing_cm1);
+  auto made = std::make_shared<const atmosphere::PathOptics>(
+      atmosphere::AtmosphereProfile::make(settings, data_dir, static_cast<std::size_t>(layer_stride)), settings,
+      data_dir, band, sub_sample_spacing_cm1);
   if (optics_.size() >= kWorldCacheEntries) optics_.clear();  // bounded: worlds keep what they hold
-  optics_.emplace_back(settings, data_dir, band.low_um, band.high_um, band.intervals, sub_sample_spacing_cm1, made);
+  optics_.emplace_back(settings, data_dir, band.low_um, band.high_um, band.intervals, sub_sample_spacing_cm1,
+                       layer_stride, made);
   return made;
 }
 
@@ -998,10 +1006,12 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       continue;
     WorldAtmosphere& a = world->atmosphere;
     a.settings = o.atmosphere;
-    a.optics = cache ? cache->optics(o.atmosphere, library.data_dir, band, f.atmosphere_sub_sample_spacing_cm1)
+    a.optics = cache ? cache->optics(o.atmosphere, library.data_dir, band, f.atmosphere_sub_sample_spacing_cm1,
+                                     f.atmosphere_layer_stride)
                      : std::make_shared<const atmosphere::PathOptics>(
-                           atmosphere::AtmosphereProfile::make(o.atmosphere, library.data_dir), o.atmosphere,
-                           library.data_dir, band, f.atmosphere_sub_sample_spacing_cm1);
+                           atmosphere::AtmosphereProfile::make(o.atmosphere, library.data_dir,
+                                                               static_cast<std::size_t>(f.atmosphere_layer_stride)),
+                           o.atmosphere, library.data_dir, band, f.atmosphere_sub_sample_spacing_cm1);
     a.profile = a.optics->profile_ptr();
     a.earth.centre_m = -world->observer.position_m;  // the Earth at the geocentre, as place() puts it
     a.earth.pole = frames::j2000_to_earth_fixed(t).transpose().col(2);
@@ -1229,7 +1239,9 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   }
 
   // The emission of the Earth's materials through its paths (PathEmission).
-  if (world->atmosphere.surface)
+  if (world->atmosphere.surface) {
+    world->atmosphere.black_emission = world->atmosphere.surface->emission(
+        world->view.spectral, std::vector<double>(world->view.spectral.sample_wavelengths_um.size(), 1.0));
     for (const auto& spectrum : world->spectra) {
       std::vector<double> weights;
       double scale = 1;
@@ -1237,6 +1249,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
         world->atmosphere.surface_emission[spectrum.get()] =
             WorldAtmosphere::SurfaceEmission{world->atmosphere.surface->emission(world->view.spectral, weights), scale};
     }
+  }
 
   // 4. Every object but the Sun as a light source (eq. 7; eq. 8 where large).
   for (const auto& wp : world->objects) {

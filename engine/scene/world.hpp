@@ -200,6 +200,9 @@ struct WorldAtmosphere {
     double scale = 1.0;
   };
   std::unordered_map<const SurfaceSpectrum*, SurfaceEmission> surface_emission;
+  // A black body's (the share 1 - s of land whose SRF the land's brightness
+  // scales by s emits as one: SurfaceModel::add_emission).
+  std::shared_ptr<const PathEmission> black_emission;
 };
 
 // What the worlds of one engine build once and share (thread-safe): the
@@ -212,7 +215,8 @@ class WorldCache {
   std::shared_ptr<const atmosphere::PathOptics> optics(const universe::AtmosphereSettings& settings,
                                                        const std::string& data_dir,
                                                        const radiometry::SpectralBand& band,
-                                                       double sub_sample_spacing_cm1 = atmosphere::kSubSampleSpacing_cm1);
+                                                       double sub_sample_spacing_cm1 = atmosphere::kSubSampleSpacing_cm1,
+                                                       std::int64_t layer_stride = 1);
   // The tables of `optics` for an observer at that (clamped) altitude with
   // that many nodes (and, for DownWelling, the sight lines' nodes), made by
   // `make` if new.
@@ -236,7 +240,7 @@ class WorldCache {
   using Key = std::tuple<const void*, double, std::int64_t, std::int64_t>;
   std::mutex mutex_;
   std::vector<std::tuple<universe::AtmosphereSettings, std::string, double, double, std::int64_t, double,
-                         std::shared_ptr<const atmosphere::PathOptics>>>
+                         std::int64_t, std::shared_ptr<const atmosphere::PathOptics>>>
       optics_;
   std::map<Key, std::shared_ptr<const SurfacePaths>> surface_;
   std::map<Key, std::shared_ptr<const SightLines>> sight_lines_;

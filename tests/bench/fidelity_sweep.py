@@ -101,6 +101,7 @@ KNOBS = {
 # The atmosphere's knobs (README "Speed", issue 20 item 8), swept on the atmosphere scenes.
 ATMOSPHERE_KNOBS = {
     "atmosphere_sub_sample_spacing_cm1": [80.0, 40.0, 20.0, 10.0],
+    "atmosphere_layer_stride": [4, 2, 1],
     "atmosphere_surface_nodes": [9, 17, 33, 65],
     "atmosphere_sight_line_nodes": [9, 17, 33, 65],
     "atmosphere_sky_azimuths": [13, 25, 49, 97],
@@ -109,6 +110,7 @@ ATMOSPHERE_KNOBS = {
 }
 ATMOSPHERE_REFERENCE = {
     "atmosphere_sub_sample_spacing_cm1": 5.0,
+    "atmosphere_layer_stride": 1,
     "atmosphere_surface_nodes": 129,
     "atmosphere_sight_line_nodes": 129,
     "atmosphere_sky_azimuths": 193,

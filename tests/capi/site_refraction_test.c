@@ -249,10 +249,79 @@ static void star_at_12_deg(void) {
   rmdir(dir);
 }
 
+/* The centroid of the noise-free electrons of the whole picture above its
+ * least value. */
+static void whole_centroid(eoir_engine e, double* cx, double* cy) {
+  static double v[PIXELS * PIXELS];
+  double sum = 0, sx = 0, sy = 0, least = INFINITY;
+  int i;
+  OK(eoir_image_get(e, "Scope", EOIR_IMAGE_SENSOR_MEAN, v, PIXELS * PIXELS));
+  for (i = 0; i < PIXELS * PIXELS; ++i)
+    if (v[i] < least) least = v[i];
+  for (i = 0; i < PIXELS * PIXELS; ++i) {
+    const double w = v[i] - least;
+    sum += w, sx += w * (i % PIXELS), sy += w * (i / PIXELS);
+  }
+  *cx = sum > 0 ? sx / sum : -1;
+  *cy = sum > 0 ? sy / sum : -1;
+}
+
+/* An extended satellite (a sphere 3 km in radius, 0.115 deg or 29 pixels
+ * across, 3000 km away at 10 deg): the ray caster meets it where the
+ * refraction puts it, so its image's centroid moves up by R as the point
+ * source's does (Bennett, 5 %). */
+static void extended_at_10_deg(void) {
+  eoir_engine e = observatory(10.0, 0);
+  const double radius = 3000.0;
+  double x0, y0, x1, y1, seen;
+  OK(eoir_set_array(e, "Sat", "dimensions_m", &radius, 1));
+  OK(eoir_render(e, "Scope"));
+  whole_centroid(e, &x0, &y0);
+  NEAR_ABS(y0, CENTRE, 0.05);
+  OK(eoir_set_string(e, "Earth", "atmosphere", "simple"));
+  OK(eoir_render(e, "Scope"));
+  whole_centroid(e, &x1, &y1);
+  NEAR_ABS(x1, x0, 0.05);
+  seen = angle_up_deg(CENTRE - y1) - angle_up_deg(CENTRE - y0);
+  NEAR_REL(seen, bennett_deg(10.0), 0.05);
+  printf("extended satellite at 10 deg: its image moved up %.2f\" (Bennett %.2f\")\n", seen * 3600,
+         bennett_deg(10.0) * 3600);
+  eoir_engine_destroy(e);
+}
+
+/* An aircraft 20 km away at 0.5 deg, inside the atmosphere: seen above its
+ * place by the terrestrial refraction k D / (2 R_E), the geodetic
+ * coefficient of refraction k = 503 P / T^2 (0.0343 + dT/dh) of the US76
+ * ground (1013.25 hPa, 288.15 K, -0.0065 K/m: 0.171), within 5 %, far less
+ * than a star's 29' there. */
+static void aircraft_at_half_degree(void) {
+  eoir_engine e = observatory(0.5, 0);
+  eoir_truth off, on;
+  const double D = 20000.0, k = 503.0 * 1013.25 / (288.15 * 288.15) * (0.0343 - 0.0065);
+  double seen;
+  OK(eoir_object_remove(e, "Sat"));
+  OK(eoir_object_add(e, EOIR_KIND_AIRCRAFT, "Plane"));
+  OK(eoir_set_number(e, "Plane", "temperature_K", 2000.0));
+  OK(place_north(e, "Plane", 0.0, D, 0.5));
+  OK(eoir_render(e, "Scope"));
+  CHECK(truth_of(e, "Plane", &off));
+  OK(eoir_set_string(e, "Earth", "atmosphere", "simple"));
+  OK(eoir_render(e, "Scope"));
+  CHECK(truth_of(e, "Plane", &on));
+  NEAR_ABS(on.pixel_x, off.pixel_x, 0.01);
+  seen = angle_up_deg(CENTRE - on.pixel_y) - angle_up_deg(CENTRE - off.pixel_y);
+  NEAR_REL(seen * PI / 180.0, k * D / (2.0 * 6378137.0), 0.05);
+  printf("aircraft 20 km away at 0.5 deg: raised %.2f\" (k D / 2 R_E %.2f\")\n", seen * 3600,
+         k * D / (2.0 * 6378137.0) * 180.0 / PI * 3600);
+  eoir_engine_destroy(e);
+}
+
 int main(void) {
   NEAR_REL(satellite_at(10.0), bennett_deg(10.0), 0.05);
   NEAR_ABS(satellite_at(45.0) * 3600.0, 58.0, 2.0);
   streak_ends();
   star_at_12_deg();
+  extended_at_10_deg();
+  aircraft_at_half_degree();
   return CHECK_SUMMARY();
 }

@@ -14,6 +14,9 @@
  *   engine uses there);
  * - a satellite climbing through 10 deg during a 2 s integration streaks
  *   longer by the change of R between its ends (Bennett, 10 %);
+ * - an extended satellite's whole image moves up by R as well (Bennett, 5 %);
+ * - an aircraft 20 km away at 0.5 deg moves up by the terrestrial
+ *   refraction k D / (2 R_E) (5 %);
  * - with the atmosphere off the air mass is 0 and nothing moves;
  * - a caller of the struct before air_mass gets nothing written there. */
 #define _XOPEN_SOURCE 700

@@ -133,7 +133,7 @@ def main(argv=None):
         ax.set_ylabel("air mass")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(title="altitude")
-    fig.suptitle("Spec 6.2.5.4 air mass (US Standard 1976, refracted)")
+    fig.suptitle("Spec 6.2.5.4 air mass (US Standard 1976; the ground sensor along the refracted ray)")
     fig.tight_layout()
     png = os.path.join(args.out_dir, "air_mass_6_2_5_4.png")
     fig.savefig(png, dpi=110)

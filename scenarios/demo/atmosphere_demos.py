@@ -26,13 +26,16 @@ python3-sgp4):
     /usr/bin/python3 scenarios/demo/atmosphere_demos.py            # scenarios/demo/results
     /usr/bin/python3 scenarios/demo/atmosphere_demos.py --quick --out /tmp/demos   # tiny frames, 3 steps
 
-What is modelled: single scattering of sunlight (Rayleigh and aerosol), the
-atmosphere's transmission and thermal emission, refraction of stars and
-point sources, and as the night sky the background light of spec 4.1.4
-(integrated starlight, zodiacal light, airglow lines) seen through the air.
-Not modelled (yet): multiple scattering (the twilight sky away from the Sun
-is far too dark in single scatter), scattered moonlight, the airglow
-continuum, light pollution, clouds and seeing.
+What is modelled: single scattering of sunlight and moonlight (Rayleigh and
+aerosol), the atmosphere's transmission and thermal emission, refraction of
+stars and objects, and as the night sky the airglow's layer (lines, bands
+and continuum to 0.92 um) and the background light of spec 4.1.4
+(integrated starlight, zodiacal light) seen through the air. Not modelled
+(yet): multiple scattering (the twilight sky away from the Sun is far too
+dark in single scatter), light pollution and seeing; clouds are off in
+these scenes. (The pictures in scenarios/demo/results were last made
+before the airglow's layer: their night sky is darker than this script now
+makes it.)
 """
 
 from __future__ import annotations

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "engine.hpp"
+#include "geo_host.hpp"
 
 namespace {
 using eoir::Engine;
@@ -22,14 +23,7 @@ constexpr double a = 6378137.0, c = 6356752.314245;  // WGS84
 // A visible (0.5-0.6 um, about Johnson V) sensor on a host at GEO radius
 // looking at the Earth; the Earth in `scene_mode`.
 std::unique_ptr<Engine> engine(const char* iso_time, const std::string& scene_mode) {
-  auto e = std::make_unique<Engine>();
-  e->set_time(eoir::EngineTime::from(eoir::utc_from_iso(iso_time)));
-  e->add_object(ObjectKind::central_body, "Earth");
-  e->add_object(ObjectKind::satellite, "Host");
-  e->set_property("Host", "shape", Value(std::string("none")));
-  const double host[3] = {42164.2e3, 0, 0};
-  e->push_state("Host", e->time(), 0, host, zero, identity);
-  e->add_sensor("Sensor", "Host");
+  auto e = eoir_test::geo_host_engine(iso_time);
   e->set_property("Sensor", "band_low_um", Value(0.5));
   e->set_property("Sensor", "band_high_um", Value(0.6));
   e->set_property("Sensor", "diffraction_wavelength_um", Value(0.55));

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "engine.hpp"
+#include "geo_host.hpp"
 
 namespace {
 using eoir::Engine;
@@ -20,14 +21,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 // A visible (0.45-0.75 um) bitmap-mode sensor at GEO radius looking at the Earth.
 std::unique_ptr<Engine> bitmap_engine() {
-  auto e = std::make_unique<Engine>();
-  e->set_time(eoir::EngineTime::from(eoir::utc_from_iso("2010-03-30T12:00:00Z")));
-  e->add_object(ObjectKind::central_body, "Earth");
-  e->add_object(ObjectKind::satellite, "Host");
-  e->set_property("Host", "shape", Value(std::string("none")));
-  const double host[3] = {42164.2e3, 0, 0};
-  e->push_state("Host", e->time(), 0, host, zero, identity);
-  e->add_sensor("Sensor", "Host");
+  auto e = eoir_test::geo_host_engine("2010-03-30T12:00:00Z");
   e->set_property("Sensor", "band_low_um", Value(0.45));
   e->set_property("Sensor", "band_high_um", Value(0.75));
   e->set_property("Sensor", "scene_mode", Value(std::string("bitmap")));

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/fidelity.hpp"
 #include "engine.hpp"
+#include "geo_host.hpp"
 #include "scene/adaptive_fidelity.hpp"
 #include "sensor/sensor_model.hpp"
 
@@ -24,14 +25,7 @@ const double zero[3] = {0, 0, 0};
 // An Earth-pointing sensor on a host at GEO radius on +x J2000, 24 deg field,
 // 64 x 64 pixels, 8-12 um, noise and saturation off.
 std::unique_ptr<Engine> geo_engine() {
-  auto e = std::make_unique<Engine>();
-  e->set_time(eoir::EngineTime::from(eoir::utc_from_iso("2010-03-30T02:25:00Z")));
-  e->add_object(ObjectKind::central_body, "Earth");
-  e->add_object(ObjectKind::satellite, "Host");
-  e->set_property("Host", "shape", Value(std::string("none")));
-  const double host[3] = {42164.2e3, 0, 0};
-  e->push_state("Host", e->time(), 0, host, zero, identity);
-  e->add_sensor("Sensor", "Host");
+  auto e = eoir_test::geo_host_engine("2010-03-30T02:25:00Z");
   for (const char* p : {"horizontal_pixels", "vertical_pixels"}) e->set_property("Sensor", p, Value(std::int64_t{64}));
   for (const char* p : {"horizontal_fov_deg", "vertical_fov_deg"}) e->set_property("Sensor", p, Value(24.0));
   e->set_property("Sensor", "band_low_um", Value(8.0));

@@ -60,47 +60,6 @@ double disc_brightness(double g, RadianceFactor radiance_factor, int n = 720) {
   return sum * (kPi / n) * (kPi / n) / kPi;
 }
 
-std::vector<std::vector<std::string>> csv_rows(const char* path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<std::string> cells;
-    std::istringstream s(line);
-    std::string cell;
-    while (std::getline(s, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
-std::vector<std::pair<double, double>> allen_table() {
-  std::ifstream in(EOIR_ALLEN_LUNAR_TABLE);
-  EXPECT_TRUE(in.good()) << EOIR_ALLEN_LUNAR_TABLE;
-  std::vector<std::pair<double, double>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::istringstream s(line);
-    double g = 0, dv = 0;
-    char comma = 0;
-    s >> g >> comma >> dv;
-    rows.emplace_back(g, dv);
-  }
-  return rows;
-}
 
 }  // namespace
 
@@ -127,7 +86,7 @@ TEST(DiskPhotometry, LunarSurfaceSphereFollowsAllen1973WithinPointOneFiveMag) {
   EXPECT_FALSE(brdf.lambertian());
   const r::DiskPhotometry moon(r::DiskPhaseLaw::moon);
   EXPECT_DOUBLE_EQ(moon.geometric_albedo_per_srf(), 1.0);
-  for (const auto& [g_deg, dv] : allen_table()) {
+  for (const auto& [g_deg, dv] : eoir::test_oracle::allen_lunar_phase_table(EOIR_ALLEN_LUNAR_TABLE)) {
     if (g_deg < 5 || g_deg > 120) continue;
     const double g = g_deg * kDeg;
     const double flux = disc_brightness(g, [&](double mu0, double mu) {
@@ -226,7 +185,7 @@ TEST(DiskPhotometry, LunarModelInMaterialFiles) {
 // uses as the paper names it); without the corrections the dates are up to
 // 0.076 mag off.
 TEST(DiskPhotometry, MarsCorrectionsReproduceHorizonsOnItsGeometry) {
-  const auto rows = csv_rows(EOIR_HORIZONS_MARS_TABLE);
+  const auto rows = eoir_test::csv_rows(EOIR_HORIZONS_MARS_TABLE);
   ASSERT_EQ(rows.size(), 11u);
   double worst = 0, worst_without = 0;
   for (const auto& row : rows) {

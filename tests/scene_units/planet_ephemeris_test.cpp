@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/csv_rows.hpp"
 #include "core/error.hpp"
 
 #include "universe/central_bodies.hpp"
@@ -36,21 +37,14 @@ struct Row {
 };
 
 std::vector<Row> rows() {
-  std::ifstream in(EOIR_DE405_PLANET_PLACES);
-  EXPECT_TRUE(in.good()) << EOIR_DE405_PLANET_PLACES;
   std::vector<Row> out;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream s(line);
+  for (const std::vector<std::string>& cells : eoir_test::csv_rows(EOIR_DE405_PLANET_PLACES)) {
     Row r;
-    s >> r.planet >> r.jd_tt >> r.distance_au >> r.ra_hours >> r.dec_deg;
+    r.planet = cells.at(0);
+    r.jd_tt = std::stod(cells.at(1));
+    r.distance_au = std::stod(cells.at(2));
+    r.ra_hours = std::stod(cells.at(3));
+    r.dec_deg = std::stod(cells.at(4));
     out.push_back(r);
   }
   return out;

@@ -15,7 +15,10 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "../support/csv_rows.hpp"
 
 namespace eoir::test_oracle {
 
@@ -81,25 +84,21 @@ struct MarsCorrectionTables {
   std::vector<double> rotation, orbit;
 };
 
+// Allen's (1973) lunar phase law (tests/data/allen_1973_lunar_phase_law.csv):
+// (phase angle deg, magnitude below full) rows.
+inline std::vector<std::pair<double, double>> allen_lunar_phase_table(const std::string& path) {
+  std::vector<std::pair<double, double>> rows;
+  for (const std::vector<std::string>& cells : eoir_test::csv_rows(path))
+    rows.emplace_back(std::stod(cells.at(0)), std::stod(cells.at(1)));
+  return rows;
+}
+
 inline MarsCorrectionTables read_mars_corrections(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
   MarsCorrectionTables t;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::istringstream row(line);
-    std::string angle, rot, orb;
-    std::getline(row, angle, ',');
-    std::getline(row, rot, ',');
-    std::getline(row, orb, ',');
-    t.rotation.push_back(std::stod(rot));
-    t.orbit.push_back(std::stod(orb));
+  for (const std::vector<std::string>& cells : eoir_test::csv_rows(path)) {
+    if (cells.size() < 3) throw std::runtime_error(path + ": 3 columns expected");
+    t.rotation.push_back(std::stod(cells[1]));
+    t.orbit.push_back(std::stod(cells[2]));
   }
   if (t.rotation.size() != 36) throw std::runtime_error(path + ": 36 rows expected");
   return t;

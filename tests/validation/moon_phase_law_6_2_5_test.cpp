@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "../sky/planet_magnitudes.hpp"
 #include "validation_support.hpp"
 
 namespace v = eoir::validation;
@@ -55,25 +56,6 @@ double bessell_v(double um) {  // Bessell (1990), PASP 102, 1181, Table 2, V
   return s[i] + (s[i + 1] - s[i]) * (x - i);
 }
 
-std::vector<std::pair<double, double>> allen_table() {
-  std::ifstream in(EOIR_ALLEN_LUNAR_TABLE);
-  std::vector<std::pair<double, double>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::istringstream s(line);
-    double g = 0, dv = 0;
-    char comma = 0;
-    s >> g >> comma >> dv;
-    rows.emplace_back(g, dv);
-  }
-  return rows;
-}
 
 struct Geometry {
   v::V3 moon, sun;  // geocentric (m)
@@ -217,7 +199,7 @@ Views views(double phase_deg, bool waning, const std::vector<std::pair<double, d
 // mean over a waxing and a waning date; the simple and detailed models have
 // no maria (lunar_regolith) and are compared at each date.
 TEST(Spec_6_2_5, MoonFollowsAllen1973PhaseLawWithinPointOneFiveMag) {
-  const auto table = allen_table();
+  const auto table = eoir::test_oracle::allen_lunar_phase_table(EOIR_ALLEN_LUNAR_TABLE);
   ASSERT_EQ(table.size(), 18u);
   for (const double g : {5.0, 20.0, 40.0, 60.0, 80.0, 100.0, 120.0}) {
     const Views waxing = views(g, false, table), waning = views(g, true, table);

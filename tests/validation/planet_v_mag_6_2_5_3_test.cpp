@@ -190,23 +190,10 @@ double engine_v_from_geocentre(const std::string& planet, const std::string& iso
 // within 0.1 mag. Saturn without its rings is too faint by the rings' light
 // (0.9 mag at the 2002 opposition), so the test sees them.
 TEST(Spec_6_2_5_3, PlanetVMagnitudesMatchJplHorizons) {
-  std::ifstream in(EOIR_HORIZONS_PLANET_TABLE);
-  ASSERT_TRUE(in.good()) << EOIR_HORIZONS_PLANET_TABLE;
-  std::string line;
-  bool header = true;
   int rows = 0;
   double worst = 0;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<std::string> cells;
-    std::istringstream row(line);
-    std::string cell;
-    while (std::getline(row, cell, ',')) cells.push_back(cell);
-    ASSERT_EQ(cells.size(), 6u) << line;
+  for (const std::vector<std::string>& cells : eoir_test::csv_rows(EOIR_HORIZONS_PLANET_TABLE)) {
+    ASSERT_EQ(cells.size(), 6u) << EOIR_HORIZONS_PLANET_TABLE << " row " << rows + 1;
     const std::string planet = cells[0], iso = cells[1] + "T00:00:00Z";
     const double apmag = std::stod(cells[5]);
     const double v_engine = engine_v_from_geocentre(planet, iso);

@@ -33,9 +33,7 @@ and continuum to 0.92 um) and the background light of spec 4.1.4
 (integrated starlight, zodiacal light) seen through the air. Not modelled
 (yet): multiple scattering (the twilight sky away from the Sun is far too
 dark in single scatter), light pollution and seeing; clouds are off in
-these scenes. (The pictures in scenarios/demo/results were last made
-before the airglow's layer: their night sky is darker than this script now
-makes it.)
+these scenes.
 """
 
 from __future__ import annotations
@@ -372,8 +370,8 @@ def demo_geo_belt(out: Path, quick: bool, threads: int):
     ax.set_title("GEO belt from Kitt Peak, 2010-06-12 07:26 UTC (local midnight, new moon), atmosphere on\n"
                  f"3 deg field, 10 s; asinh of (electrons - sky) / noise; {len(stars)} stars (V < 9) trail, "
                  "GEO satellites stay put", fontsize=10)
-    ax.set_xlabel("Night sky: the background light of spec 4.1.4 (starlight, zodiacal light, airglow lines) through "
-                  "the air,\nno moonlight, airglow continuum or light pollution. Up is the zenith side; east is "
+    ax.set_xlabel("Night sky: the airglow's layer and the background light of spec 4.1.4 (starlight, zodiacal "
+                  "light) through the air,\nno moonlight or light pollution. Up is the zenith side; east is "
                   "on the left.", fontsize=8)
     fig.savefig(out / "geo_belt_night.png", bbox_inches="tight")
     plt.close(fig)
@@ -631,11 +629,11 @@ def demo_iss_pass(out: Path, quick: bool, threads: int):
     a3.set_title("sky beside the ISS (darkest corner pixel) and air mass", fontsize=10)
     fig.text(0.01, 0.005, "ISS: the README's TLE, a Lambertian sphere of 25 m radius (reflectance 0.5). Camera: 5 cm "
              "f/5, 1 deg field, 64 x 64 pixels, 0.45-0.90 um, 1 ms, 10 e- dark noise; SNR of spec eq. 65 (dark and sky "
-             "photon noise). Sky: single scatter of sunlight (Rayleigh + rural aerosol) + the spec 4.1.4 background "
-             "light through the air;\nno multiple scattering (away from the Sun the twilight sky falls to the night "
-             "background, far darker than a real one), no moonlight. With the atmosphere none the sky is that "
-             "background light alone and the ISS is seen without extinction.", fontsize=8)
-    fig.tight_layout(rect=(0, 0.05, 1, 1))
+             "photon noise).\nSky: single scatter of sunlight (Rayleigh + rural aerosol), the airglow and the spec 4.1.4 "
+             "background light through the air; no multiple scattering (away from the Sun the twilight sky falls to "
+             "the night sky, darker than a real one).\nWith the atmosphere none the sky is the background light "
+             "alone and the ISS is seen without extinction.", fontsize=8)
+    fig.tight_layout(rect=(0, 0.08, 1, 1))
     fig.savefig(out / "iss_twilight_snr.png")
     plt.close(fig)
     return {"rows": rows}

@@ -41,8 +41,8 @@ SightLines SightLines::make(const atmosphere::PathOptics& optics, const atmosphe
   const double a = earth.equatorial_radius_m, top = profile.top_altitude_m(), r_top = a + top;
   s.above = observer_altitude_m >= top;
   s.top_radius_m = r_top;
-  const auto add = [&](double node, const atmosphere::PathColumns& path) {
-    s.node.push_back(node);
+  const auto add = [&](double at, const atmosphere::PathColumns& path) {
+    s.node.push_back(at);
     s.paths.push_back(atmosphere::ScatterPath::make(optics, path));
   };
   if (s.above) {

@@ -437,10 +437,13 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
     L.assign(w.view.spectral.sample_wavelengths_um.size(), 0.0);
     bool emits = true;
     if (surface->reflects(point)) {
-      E.assign(L.size(), 0.0);
-      const SurfaceSpectrum& s = *point.spectrum;
-      add_reflected_irradiance(to_frame(point_body_m), placed.body_to_frame * normal_body, -d, s.brdf(), false, E);
-      for (std::size_t i = 0; i < L.size(); ++i) L[i] = E[i] * point.reflectance_scale * s.srf()[i];
+      const Vec3 p = to_frame(point_body_m), n = placed.body_to_frame * normal_body;
+      surface->reflect(
+          point,
+          [&](const radiometry::Brdf& brdf, double height_m, std::vector<double>& into) {
+            add_reflected_irradiance(p + height_m * n, n, -d, brdf, false, into);
+          },
+          L, E);
       emits = !(w.view.spectral.integrate(L) > surface->emission_bound() / kNegligible);
     }
     double emitted = 0;

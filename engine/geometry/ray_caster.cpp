@@ -19,44 +19,17 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <mutex>
 #include <string>
 #include <thread>
 
 #include "core/error.hpp"
 #include "core/parallel_ranges.hpp"
+#include "geometry/embree_device.hpp"
 #include "geometry/scene_geometry.hpp"
 #include "geometry/shape_intersect.hpp"
 
 namespace eoir::geometry {
 namespace {
-
-// One shared device (creation is slow); its errors are recorded here.
-std::mutex g_error_mutex;
-std::string g_error_message;
-
-void on_embree_error(void*, RTCError code, const char* message) {
-  std::lock_guard<std::mutex> lock(g_error_mutex);
-  g_error_message = "Embree error " + std::to_string(static_cast<int>(code)) + ": " + (message ? message : "");
-}
-
-RTCDevice shared_device() {
-  static std::once_flag once;
-  static RTCDevice device = nullptr;
-  std::call_once(once, [] {
-    device = rtcNewDevice(nullptr);
-    if (device) rtcSetDeviceErrorFunction(device, on_embree_error, nullptr);
-  });
-  if (!device) throw Error(Status::internal, "Embree: rtcNewDevice failed (" + std::to_string(rtcGetDeviceError(nullptr)) + ")");
-  return device;
-}
-
-void check_device(RTCDevice device, const char* what) {
-  const RTCError code = rtcGetDeviceError(device);
-  if (code == RTC_ERROR_NONE) return;
-  std::lock_guard<std::mutex> lock(g_error_mutex);
-  throw Error(Status::internal, std::string("ray caster: ") + what + ": " + g_error_message);
-}
 
 // One part, precomputed for the current observer.
 struct PartData {
@@ -85,6 +58,7 @@ struct RayContext {
   double best_t = std::numeric_limits<double>::infinity();
   int object = -1;
   int part = -1;
+  std::int32_t facet = -1;
   Vec3 normal_part = Vec3::Zero();
 };
 
@@ -119,10 +93,12 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
   const Vec3 d = p.part_to_frame.transpose() * rc->dir;
   double t = 0;
   Vec3 n;
-  if (!intersect_shape(p.geom, p.origin_part_m, d, 0.0, rc->best_t, t, n)) return;
+  std::int32_t facet = -1;
+  if (!intersect_shape(p.geom, p.origin_part_m, d, 0.0, rc->best_t, t, n, &facet)) return;
   rc->best_t = t;
   rc->object = od->index;
   rc->part = static_cast<int>(part_index);
+  rc->facet = facet;
   rc->normal_part = n;
   auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
   rh->ray.tfar = std::nextafter(static_cast<float>(t), std::numeric_limits<float>::infinity());
@@ -168,7 +144,7 @@ struct RayCaster::Impl {
 
 RayCaster::RayCaster() : impl_(new Impl) {
   try {
-    impl_->device = shared_device();
+    impl_->device = embree_device();
   } catch (...) {
     delete impl_;
     throw;
@@ -184,7 +160,7 @@ void RayCaster::build(const std::vector<const PlacedObject*>& objects) {
   impl_->release();
   RTCDevice device = impl_->device;
   RTCScene scene = rtcNewScene(device);
-  check_device(device, "rtcNewScene");
+  check_embree(device, "rtcNewScene");
   impl_->scene = scene;
   rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
 
@@ -216,7 +192,7 @@ void RayCaster::build(const std::vector<const PlacedObject*>& objects) {
     if (contains_observer || stored.prim_part.empty()) continue;  // invisible to this observer
     stored.attached = true;
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-    check_device(device, "rtcNewGeometry");
+    check_embree(device, "rtcNewGeometry");
     rtcSetGeometryUserPrimitiveCount(geom, static_cast<unsigned>(stored.prim_part.size()));
     rtcSetGeometryUserData(geom, &stored);
     rtcSetGeometryBoundsFunction(geom, bounds_callback, nullptr);
@@ -225,10 +201,10 @@ void RayCaster::build(const std::vector<const PlacedObject*>& objects) {
     rtcCommitGeometry(geom);
     rtcAttachGeometry(scene, geom);
     rtcReleaseGeometry(geom);
-    check_device(device, "user geometry");
+    check_embree(device, "user geometry");
   }
   rtcCommitScene(scene);
-  check_device(device, "rtcCommitScene");
+  check_embree(device, "rtcCommitScene");
 }
 
 namespace {
@@ -241,6 +217,7 @@ void cast_one(RTCScene scene, RayContext& rc, RTCRayHit& rh, const Vec3& d, std:
   rc.dir = d;
   rc.best_t = std::numeric_limits<double>::infinity();
   rc.object = rc.part = -1;
+  rc.facet = -1;
   rh.ray.org_x = rh.ray.org_y = rh.ray.org_z = 0.0f;
   rh.ray.dir_x = static_cast<float>(d.x());
   rh.ray.dir_y = static_cast<float>(d.y());
@@ -292,6 +269,7 @@ Hit full_hit(const std::vector<ObjectData>& objects, const RayContext& rc, const
   const PartData& pd = od.parts[static_cast<std::size_t>(rc.part)];
   h.object_id = obj.object_id;
   h.part = rc.part;
+  h.facet = rc.facet;
   h.range_m = rc.best_t;
   h.point_body_m = obj.body_to_frame.transpose() * (rc.best_t * d - obj.position_m);
   h.normal_frame = pd.part_to_frame * rc.normal_part;  // a rotated unit normal
@@ -357,8 +335,8 @@ bool cone_meets(const Cone& cone, const PartBound& b) {
 
 void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                           const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
-                          const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, double,
-                                                   const Vec3&, const Vec3&)>& emit,
+                          const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, std::int32_t,
+                                                   double, const Vec3&, const Vec3&)>& emit,
                           unsigned threads, const RayQuery& query) const {
   if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
   if (width <= 0 || height <= 0) return;
@@ -422,7 +400,7 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
           for (std::int64_t r = r0; r < r1; ++r)
             for (std::int64_t c = c0; c < c1; ++c) {
               if (tile_bounds.empty()) {  // no object near: the sky
-                emit(c, r, -1, -1, sky_range_m, Vec3::Zero(), Vec3::Zero());
+                emit(c, r, -1, -1, -1, sky_range_m, Vec3::Zero(), Vec3::Zero());
                 continue;
               }
               const Vec3 d = direction(c, r);
@@ -432,30 +410,34 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                 const ObjectData& od = objects[static_cast<std::size_t>(tile_bounds[0]->object)];
                 double best = std::numeric_limits<double>::infinity();
                 int best_part = -1;
+                std::int32_t best_facet = -1;
                 Vec3 best_normal_part;
                 for (const PartBound* b : tile_bounds) {
                   const PartData& p = od.parts[b->part];
                   double t = 0;
                   Vec3 n;
-                  if (intersect_shape(p.geom, p.origin_part_m, p.part_to_frame.transpose() * d, 0.0, best, t, n)) {
+                  std::int32_t facet = -1;
+                  if (intersect_shape(p.geom, p.origin_part_m, p.part_to_frame.transpose() * d, 0.0, best, t, n,
+                                      &facet)) {
                     best = t;
                     best_part = static_cast<int>(b->part);
+                    best_facet = facet;
                     best_normal_part = n;
                   }
                 }
                 if (best_part < 0)
-                  emit(c, r, -1, -1, sky_range_m, d, Vec3::Zero());
+                  emit(c, r, -1, -1, -1, sky_range_m, d, Vec3::Zero());
                 else
-                  emit(c, r, od.object->object_id, best_part, best, d,
+                  emit(c, r, od.object->object_id, best_part, best_facet, best, d,
                        od.parts[static_cast<std::size_t>(best_part)].part_to_frame * best_normal_part);
                 continue;
               }
               cast_one(scene, rc, rh, d, 0, query);
               if (rc.object < 0) {
-                emit(c, r, -1, -1, sky_range_m, d, Vec3::Zero());
+                emit(c, r, -1, -1, -1, sky_range_m, d, Vec3::Zero());
               } else {
                 const ObjectData& od = objects[static_cast<std::size_t>(rc.object)];
-                emit(c, r, od.object->object_id, rc.part, rc.best_t, d,
+                emit(c, r, od.object->object_id, rc.part, rc.facet, rc.best_t, d,
                      od.parts[static_cast<std::size_t>(rc.part)].part_to_frame * rc.normal_part);
               }
             }

@@ -60,6 +60,10 @@ Tessellation tessellate(const std::vector<ShapePart>& parts, double target_patch
 // are its +z face grid followed by its -z face grid.
 std::int32_t patch_at_facing(const Tessellation& t, const std::vector<ShapePart>& parts, std::int32_t part,
                              const Vec3& point_body_m, const Vec3& normal_body);
+// The same where the ray caster named the hit's facet (a mesh triangle, Hit::
+// facet): that triangle's patch without a search; facet -1: patch_at_facing.
+std::int32_t patch_at_facet(const Tessellation& t, const std::vector<ShapePart>& parts, std::int32_t part,
+                            std::int32_t facet, const Vec3& point_body_m, const Vec3& normal_body);
 
 // Ray-mask bits of placed objects: sample rays of an image look for objects
 // imaged as extended sources only; other queries see every object.
@@ -81,6 +85,7 @@ struct PlacedObject {
 struct Hit {
   std::int32_t object_id = -1;
   std::int32_t part = -1;
+  std::int32_t facet = -1;            // a mesh part's triangle (its index in the part's group); -1 analytic
   double range_m = 0.0;               // along the ray; sky: see sky_range_m
   Vec3 point_body_m = Vec3::Zero();   // hit point in the object's body frame
   Vec3 normal_frame = Vec3::Zero();   // outward surface normal, observer frame
@@ -117,7 +122,7 @@ class RayCaster {
   // The lean form for a frame's sample grid: ray (c, r) of width x height
   // goes along direction(c, r), a pinhole projection (the rays of a
   // rectangle of samples lie in the cone of its corner rays), and its nearest
-  // surface goes to emit(c, r, object_id, part, range_m, direction,
+  // surface goes to emit(c, r, object_id, part, facet, range_m, direction,
   // normal_frame) (object_id -1: the sky, with a zero normal, and a zero
   // direction where a tile near no object computed none): normal_frame is the hit's outward unit normal,
   // observer frame, the one cast() gives (the intersection computes it). Cast in tiles of 8 x 8 samples: a
@@ -127,8 +132,8 @@ class RayCaster {
   // Both callbacks are called from the worker threads, each sample once.
   void cast_grid(std::int64_t width, std::int64_t height,
                  const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
-                 const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, double, const Vec3&,
-                                          const Vec3&)>& emit,
+                 const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, std::int32_t, double,
+                                          const Vec3&, const Vec3&)>& emit,
                  unsigned threads = 0, const RayQuery& query = {}) const;
   // True if any surface lies along `direction` closer than range_m.
   bool occluded(const Vec3& direction, double range_m, const RayQuery& query = {}) const;

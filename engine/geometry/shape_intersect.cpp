@@ -167,6 +167,7 @@ double arc_ratio(double x, double s) {
 ShapeGeom shape_geom(ShapeKind kind, const std::vector<double>& d, const std::string& field) {
   if (kind == ShapeKind::composite)
     throw Error(Status::out_of_range, field + ": a composite is made of simple shapes, not one");
+  if (kind == ShapeKind::mesh) throw Error(Status::out_of_range, field + ": a mesh needs its model file");
   universe::check_dimensions(kind, d, field);
   ShapeGeom g;
   g.kind = kind;
@@ -179,14 +180,22 @@ ShapeGeom shape_geom(ShapeKind kind, const std::vector<double>& d, const std::st
     case ShapeKind::cone: g.r_bottom_m = d[0]; g.r_top_m = 0.0; g.length_m = d[1]; break;
     case ShapeKind::coupler: g.r_bottom_m = d[0]; g.r_top_m = d[1]; g.length_m = d[2]; break;
     case ShapeKind::none:
-    case ShapeKind::composite: break;
+    case ShapeKind::composite:
+    case ShapeKind::mesh: break;
   }
   return g;
 }
 
 bool intersect_shape(const ShapeGeom& g, const Vec3& origin_m, const Vec3& dir, double t_min, double t_max,
-                     double& t_m, Vec3& normal) {
+                     double& t_m, Vec3& normal, std::int32_t* facet) {
   if (g.kind == ShapeKind::none) return false;
+  if (g.kind == ShapeKind::mesh) {
+    std::int32_t f = -1;
+    if (!g.mesh->intersect(g.mesh_group, origin_m, dir, t_min, t_max, t_m, normal, f)) return false;
+    if (facet) *facet = f;
+    return true;
+  }
+  if (facet) *facet = -1;
   // Move the origin to the closest approach to the part origin (small numbers).
   const double t0 = -origin_m.dot(dir);
   const Vec3 o = origin_m + t0 * dir;
@@ -202,7 +211,8 @@ bool intersect_shape(const ShapeGeom& g, const Vec3& origin_m, const Vec3& dir, 
     case ShapeKind::cone:
     case ShapeKind::coupler: hit = hit_frustum(g, o, dir, lo, hi, t, normal); break;
     case ShapeKind::none:
-    case ShapeKind::composite: break;
+    case ShapeKind::composite:
+    case ShapeKind::mesh: break;
   }
   if (!hit) return false;
   t_m = t0 + t;
@@ -228,6 +238,7 @@ bool shape_contains(const ShapeGeom& g, const Vec3& p) {
       const double r = 0.5 * (g.r_top_m + g.r_bottom_m) + (g.r_top_m - g.r_bottom_m) / g.length_m * p.z();
       return std::hypot(p.x(), p.y()) < r - kInsideTolerance * std::max(g.r_bottom_m, g.r_top_m);
     }
+    case ShapeKind::mesh: return g.mesh->contains(p);
     case ShapeKind::plate:
     case ShapeKind::none:
     case ShapeKind::composite: return false;
@@ -245,6 +256,7 @@ double shape_bounding_radius_m(const ShapeGeom& g) {
     case ShapeKind::cone:
     case ShapeKind::coupler:
       return std::max(std::hypot(g.r_bottom_m, 0.5 * g.length_m), std::hypot(g.r_top_m, 0.5 * g.length_m));
+    case ShapeKind::mesh: return g.mesh->bounding_radius_m(g.mesh_group);
     case ShapeKind::none:
     case ShapeKind::composite: return 0.0;
   }
@@ -274,6 +286,7 @@ double shape_surface_area_m2(const ShapeGeom& g) {
       const double r1 = g.r_bottom_m, r2 = g.r_top_m;
       return kPi * (r1 + r2) * std::hypot(r1 - r2, g.length_m) + kPi * (r1 * r1 + r2 * r2);
     }
+    case ShapeKind::mesh: return g.mesh->surface_area_m2(g.mesh_group);
     case ShapeKind::none:
     case ShapeKind::composite: return 0.0;
   }
@@ -331,6 +344,7 @@ Vec3 shape_normal(const ShapeGeom& g, const Vec3& p) {
       const double k = (g.r_top_m - g.r_bottom_m) / g.length_m;
       return rho > 0 ? Vec3(p.x() / rho, p.y() / rho, -k).normalized() : Vec3(0, 0, 1);
     }
+    case ShapeKind::mesh: return g.mesh->normal(g.mesh->nearest_triangle(g.mesh_group, p));
     case ShapeKind::none:
     case ShapeKind::composite: break;
   }

@@ -1,10 +1,13 @@
 // Analytic ray/shape intersection in double precision (spec 4.1.3, 4.1.5.1;
 // DESIGN.md section 3). Everything here works in one part's own frame.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
+
+#include "geometry/mesh_geometry.hpp"
 
 #include "universe/shapes.hpp"
 
@@ -21,10 +24,13 @@ struct ShapeGeom {
   double a_m = 0, c_m = 0;                 // sphere / oblate: equatorial, polar radius
   double x_m = 0, y_m = 0, z_m = 0;        // box / plate full edge lengths
   double r_bottom_m = 0, r_top_m = 0, length_m = 0;  // frustum
+  std::shared_ptr<const MeshGeometry> mesh;          // mesh: the model at its scale
+  std::int32_t mesh_group = -1;                      // mesh: this part's material group
 };
 
 // Decodes dimensions (checked as universe::check_dimensions; throws
-// eoir::Error naming `field`). Composite is not a simple shape: out_of_range.
+// eoir::Error naming `field`). Composite is not a simple shape, and a mesh
+// needs its model (make_part): out_of_range.
 ShapeGeom shape_geom(ShapeKind kind, const std::vector<double>& dimensions_m, const std::string& field = "shape");
 
 // Nearest hit with t_min < t < t_max of the ray origin + t * dir (dir unit,
@@ -32,9 +38,11 @@ ShapeGeom shape_geom(ShapeKind kind, const std::vector<double>& dimensions_m, co
 // inside a closed shape does not see its inner wall (the lead's rule: an object
 // containing the observer is invisible). The plate is two-sided: its normal is
 // returned facing the ray. Grazing rays give a clean miss or hit, never NaN.
-// Returns false on a miss; on a hit sets t_m and the outward unit normal.
+// Returns false on a miss; on a hit sets t_m and the outward unit normal,
+// and *facet (if given) to the mesh triangle hit (its index in the part's
+// group) or -1 for an analytic shape.
 bool intersect_shape(const ShapeGeom& g, const Vec3& origin_m, const Vec3& dir, double t_min, double t_max,
-                     double& t_m, Vec3& normal);
+                     double& t_m, Vec3& normal, std::int32_t* facet = nullptr);
 
 // True when p lies inside the closed shape by more than a relative 1e-9 of its
 // size (a point on the surface is outside). Plate and none contain nothing.

@@ -13,6 +13,9 @@
 //    equal area (height of each ring from the frustum's area law), caps in
 //    (r^2 for equal area, angle); grid = {side, bottom cap, top cap} x
 //    {n_angle, n_radial, off} (n_angle = 0: no such cap, the cone's top).
+//  - mesh: one patch per triangle of the part's group (the model's own
+//    tessellation, whatever the target), two (front, back) on open sheets;
+//    grid = each triangle's first patch in the part.
 //  - none: no patches.
 #include <algorithm>
 #include <cmath>
@@ -186,6 +189,31 @@ std::int32_t frustum_cell(const std::vector<std::int32_t>& grid, const ShapeGeom
   return off + i * n_a + j;
 }
 
+void tessellate_mesh(Tessellation& t, std::int32_t part, const ShapePart& sp, const ShapeGeom& g,
+                     std::vector<std::int32_t>& grid) {
+  std::int32_t off = 0;
+  for (std::int32_t tri : g.mesh->group_triangles(g.mesh_group)) {
+    grid.push_back(off);
+    const Vec3& n = g.mesh->normal(tri);
+    add_patch(t, part, sp, g.mesh->centroid_m(tri), n, g.mesh->area_m2(tri));
+    ++off;
+    if (!g.mesh->one_sided(tri)) {
+      add_patch(t, part, sp, g.mesh->centroid_m(tri), -n, g.mesh->area_m2(tri));
+      ++off;
+    }
+  }
+}
+
+// The patch of a mesh part at p: its nearest triangle's, the face of an open
+// sheet picked by the seen side's normal.
+std::int32_t mesh_cell(const std::vector<std::int32_t>& grid, const ShapeGeom& g, const Vec3& p, const Vec3& normal_part) {
+  const std::int32_t tri = g.mesh->nearest_triangle(g.mesh_group, p);
+  const auto& triangles = g.mesh->group_triangles(g.mesh_group);
+  const auto at = std::lower_bound(triangles.begin(), triangles.end(), tri);
+  const std::int32_t local = grid[static_cast<std::size_t>(at - triangles.begin())];
+  return local + (!g.mesh->one_sided(tri) && normal_part.dot(g.mesh->normal(tri)) < 0 ? 1 : 0);
+}
+
 }  // namespace
 
 Tessellation tessellate(const std::vector<ShapePart>& parts, double target_patch_size_m) {
@@ -197,7 +225,7 @@ Tessellation tessellate(const std::vector<ShapePart>& parts, double target_patch
     const auto part = static_cast<std::int32_t>(k);
     const ShapeGeom& g = parts[k].geom;
     const double estimate = shape_surface_area_m2(g) / (target_patch_size_m * target_patch_size_m);
-    if (!(estimate <= kMaxPatchesPerPart)) {
+    if (g.kind != ShapeKind::mesh && !(estimate <= kMaxPatchesPerPart)) {
       char text[320];
       std::snprintf(text, sizeof text,
                     "patch_size_m: a patch edge of %g m gives about %.3g patches on part %zu, at most %.0e: raise "
@@ -228,6 +256,7 @@ Tessellation tessellate(const std::vector<ShapePart>& parts, double target_patch
       case ShapeKind::cylinder:
       case ShapeKind::cone:
       case ShapeKind::coupler: tessellate_frustum(t, part, parts[k], g, target, grid); break;
+      case ShapeKind::mesh: tessellate_mesh(t, part, parts[k], g, grid); break;
       case ShapeKind::none:
       case ShapeKind::composite: break;
     }
@@ -255,10 +284,23 @@ std::int32_t patch_in_part(const Tessellation& t, std::int32_t part, const Shape
     case ShapeKind::cylinder:
     case ShapeKind::cone:
     case ShapeKind::coupler: local = frustum_cell(grid, g, p); break;
+    case ShapeKind::mesh: local = mesh_cell(grid, g, p, normal_part); break;
     case ShapeKind::none:
     case ShapeKind::composite: return -1;
   }
   return t.first_patch[static_cast<std::size_t>(part)] + local;
+}
+
+std::int32_t patch_at_facet(const Tessellation& t, const std::vector<ShapePart>& parts, std::int32_t part,
+                            std::int32_t facet, const Vec3& point_body_m, const Vec3& normal_body) {
+  if (facet < 0 || part < 0 || static_cast<std::size_t>(part) >= parts.size())
+    return patch_at_facing(t, parts, part, point_body_m, normal_body);
+  const ShapePart& sp = parts[static_cast<std::size_t>(part)];
+  const auto& grid = t.grid[static_cast<std::size_t>(part)];
+  const std::int32_t tri = sp.geom.mesh->group_triangles(sp.geom.mesh_group)[static_cast<std::size_t>(facet)];
+  const bool back = !sp.geom.mesh->one_sided(tri) &&
+                    (sp.orientation.conjugate() * normal_body).dot(sp.geom.mesh->normal(tri)) < 0;
+  return t.first_patch[static_cast<std::size_t>(part)] + grid[static_cast<std::size_t>(facet)] + (back ? 1 : 0);
 }
 
 std::int32_t patch_at_facing(const Tessellation& t, const std::vector<ShapePart>& parts, std::int32_t part,

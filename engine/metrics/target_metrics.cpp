@@ -14,7 +14,7 @@ using geometry::Vec3;
 double radiance_of(const scene::World& world, const geometry::Hit& hit, const Vec3& d) {
   if (hit.object_id < 0) return world.sky_radiance(d);
   const scene::WorldObject& o = *world.objects[static_cast<std::size_t>(hit.object_id)];
-  return o.radiance_at(hit.part, hit.point_body_m, o.direction_to_body(hit.normal_frame));
+  return o.radiance_at(hit.part, hit.point_body_m, o.direction_to_body(hit.normal_frame), hit.facet);
 }
 
 // Eqs. 59-71 of a point target of irradiance E_tgt against the background

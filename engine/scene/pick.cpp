@@ -41,10 +41,11 @@ Pick pick_sample(const World& world, const SceneImage& scene, std::int64_t c, st
   pick.object = o.name;
   pick.range_m = hit.range_m;
   const Vec3 normal_body = o.direction_to_body(hit.normal_frame);
-  pick.patch = geometry::patch_at_facing(o.tessellation(), o.placed.parts, hit.part, hit.point_body_m, normal_body);
+  pick.patch =
+      geometry::patch_at_facet(o.tessellation(), o.placed.parts, hit.part, hit.facet, hit.point_body_m, normal_body);
   // The same surface point, normal and direction the image's sample used.
   Vec3 point_body, shading_normal;
-  o.shading_point(hit.part, hit.point_body_m, normal_body, point_body, shading_normal);
+  o.shading_point(hit.part, hit.point_body_m, normal_body, point_body, shading_normal, hit.facet);
   pick.temperature_K = o.surface->temperature_K(o.surface->at(SurfaceSite{hit.part, point_body, shading_normal}));
   pick.terms = o.eq9_terms(hit.part, point_body, shading_normal);
   pick.spectral_radiance_W_cm2_sr_um = pick.terms.at_sensor;

@@ -87,8 +87,8 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
   const geometry::RayQuery extended{geometry::ray_mask_extended, -1};
   world.caster.cast_grid(
       w, h, direction,
-      [&](std::int64_t c, std::int64_t r, std::int32_t object, std::int32_t part, double range_m, const Vec3& d,
-          const Vec3& normal_frame) {
+      [&](std::int64_t c, std::int64_t r, std::int32_t object, std::int32_t part, std::int32_t facet, double range_m,
+          const Vec3& d, const Vec3& normal_frame) {
         const auto i = static_cast<std::size_t>(r * w + c);
         out.hits[i] = SampleHit{object, part};
         if (object < 0) {
@@ -102,7 +102,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
           return;
         }
         const Vec3 point_body = o.seen.body_to_frame.transpose() * (range_m * d - o.seen.position_m);
-        out.image.radiance_W_cm2_sr[i] = o.radiance_at(part, point_body, o.direction_to_body(normal_frame));
+        out.image.radiance_W_cm2_sr[i] = o.radiance_at(part, point_body, o.direction_to_body(normal_frame), facet);
       },
       threads, extended);
   out.rays = count;
@@ -161,7 +161,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
                   continue;
                 }
                 const WorldObject& o = *world.objects[static_cast<std::size_t>(hit.object_id)];
-                sum += o.radiance_at(hit.part, hit.point_body_m, o.direction_to_body(hit.normal_frame));
+                sum += o.radiance_at(hit.part, hit.point_body_m, o.direction_to_body(hit.normal_frame), hit.facet);
               }
               out.image.radiance_W_cm2_sr[edges[first + static_cast<std::size_t>(k)]] = sum / static_cast<double>(sub);
             }

@@ -60,6 +60,7 @@ double shape_volume_m3(const geometry::ShapeGeom& g) {
       const double r1 = g.r_bottom_m, r2 = g.r_top_m;
       return pi * g.length_m * (r1 * r1 + r1 * r2 + r2 * r2) / 3.0;
     }
+    case universe::ShapeKind::mesh: return g.mesh->volume_m3(g.mesh_group);  // (its closed pieces')
     default: return 0.0;
   }
 }
@@ -491,25 +492,27 @@ double WorldObject::patch_radiance(std::int32_t patch) const {
 }
 
 void WorldObject::shading_point(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
-                                Vec3& shade_point_body, Vec3& normal_body) const {
+                                Vec3& shade_point_body, Vec3& normal_body, std::int32_t facet) const {
   if (world_->view.fidelity.scene_mode != SceneMode::coarse || under_atmosphere_) {
     shade_point_body = point_body_m;
     normal_body = hit_normal_body;
     return;
   }
-  const std::int32_t k = geometry::patch_at_facing(tessellation(), placed.parts, part, point_body_m, hit_normal_body);
+  const std::int32_t k =
+      geometry::patch_at_facet(tessellation(), placed.parts, part, facet, point_body_m, hit_normal_body);
   const geometry::Patch& p = tessellation().patches[static_cast<std::size_t>(k)];
   shade_point_body = p.centre_body_m;
   normal_body = p.normal_body;
 }
 
-double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body) const {
+double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
+                                std::int32_t facet) const {
   if (plain()) return plain_radiance(part);
   // (under its atmosphere the Earth is shaded at each sample in coarse mode
   // too: eq. 9's path is the sample's line of sight, not the patch centre's)
   if (world_->view.fidelity.scene_mode != SceneMode::coarse || under_atmosphere_)
     return effective_radiance(part, point_body_m, hit_normal_body, true);
-  return patch_radiance(geometry::patch_at_facing(tessellation(), placed.parts, part, point_body_m, hit_normal_body));
+  return patch_radiance(geometry::patch_at_facet(tessellation(), placed.parts, part, facet, point_body_m, hit_normal_body));
 }
 
 double WorldObject::projected_area_m2() const {

@@ -300,13 +300,15 @@ class WorldObject {
   // the outward normal hit_normal_body there (the ray caster's), sees, as the
   // scene mode says (spec 4.2): a part's value for plain surfaces; the value
   // at the centre of the point's patch in coarse mode (computed once per
-  // patch); the point's own in smooth mode.
-  double radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body) const;
+  // patch); the point's own in smooth mode. `facet`: the mesh triangle the
+  // ray caster hit (Hit::facet; -1 for analytic shapes), whose patch it is.
+  double radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
+                     std::int32_t facet = -1) const;
   // The point and normal at which that radiance is evaluated (the patch
   // centre and its normal in coarse mode, the point itself and the hit's
   // normal in smooth mode).
   void shading_point(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body, Vec3& shade_point_body,
-                     Vec3& normal_body) const;
+                     Vec3& normal_body, std::int32_t facet = -1) const;
   // The radiance of patch k at its centre toward the observer (cached).
   double patch_radiance(std::int32_t patch) const;
   // Projected area A*_T facing the observer (eq. 58, m^2): exact for a single

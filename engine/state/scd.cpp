@@ -89,7 +89,8 @@ Value json_to_value(const json& j, ValueType type, const std::string& where) {
 }
 
 bool fixed_property(const Object& o, const std::string& name) {
-  return o.kind == ObjectKind::central_body && (name == "shape" || name == "dimensions_m" || name == "composite");
+  return o.kind == ObjectKind::central_body && (name == "shape" || name == "dimensions_m" || name == "composite" ||
+                                                name == "mesh_file" || name == "mesh_materials");
 }
 
 json properties_to_json(const Object& o) {

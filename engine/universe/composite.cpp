@@ -28,6 +28,38 @@ std::vector<double> numbers(const json& j, const std::string& where, std::size_t
   return v;
 }
 
+std::optional<double> optional_number(const json& p, const char* key, const std::string& at, Range range,
+                                      const char* unit) {
+  if (!p.contains(key)) return std::nullopt;
+  if (!p[key].is_number()) bad(at + "." + key, "expected a number");
+  const double v = p[key].get<double>();
+  check_range(v, range, at + "." + key, unit);
+  return v;
+}
+
+MeshMaterials mesh_materials(const json& j, const std::string& where) {
+  if (!j.is_object()) bad(where, "expected an object mapping the file's material names");
+  MeshMaterials out;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string at = where + "." + it.key();
+    const json& m = it.value();
+    if (!m.is_object()) bad(at, "expected {material, temperature_K, reflectance}");
+    for (auto f = m.begin(); f != m.end(); ++f)
+      if (f.key() != "material" && f.key() != "temperature_K" && f.key() != "reflectance")
+        throw Error(Status::unknown_name, at + "." + f.key() + ": unknown field of a mesh material");
+    MeshMaterial mm;
+    if (m.contains("material")) {
+      if (!m["material"].is_string() || m["material"].get<std::string>().empty())
+        bad(at + ".material", "expected a material name");
+      mm.material = m["material"].get<std::string>();
+    }
+    mm.temperature_K = optional_number(m, "temperature_K", at, Range{0, object_bounds::max_temperature_K}, "K");
+    mm.reflectance = optional_number(m, "reflectance", at, Range{0, 1}, "");
+    out[it.key()] = mm;
+  }
+  return out;
+}
+
 void flatten(const json& parts, const std::string& where, const Eigen::Vector3d& offset,
              const Eigen::Quaterniond& orientation, std::optional<double> temperature, std::optional<double> reflectance,
              std::optional<std::string> material, int depth, std::vector<ShapePart>& out) {
@@ -41,7 +73,7 @@ void flatten(const json& parts, const std::string& where, const Eigen::Vector3d&
     if (!p.is_object()) bad(at, "expected an object");
     for (auto it = p.begin(); it != p.end(); ++it) {
       static const char* known[] = {"shape", "dimensions_m", "offset_m", "orientation_wxyz", "temperature_K",
-                                    "reflectance", "material", "parts"};
+                                    "reflectance", "material", "parts", "mesh_file", "mesh_materials"};
       bool ok = false;
       for (const char* k : known) ok = ok || it.key() == k;
       if (!ok) throw Error(Status::unknown_name, at + "." + it.key() + ": unknown field of a composite part");
@@ -90,11 +122,30 @@ void flatten(const json& parts, const std::string& where, const Eigen::Vector3d&
     const ShapeKind kind = parse_shape(p["shape"].get<std::string>(), at + ".shape");
     if (kind == ShapeKind::composite) bad(at + ".shape", "nest composites with \"parts\"");
     const std::vector<double> dims = p.contains("dimensions_m") ? numbers(p["dimensions_m"], at + ".dimensions_m", 0)
-                                                                  : std::vector<double>{};
+                                     : kind == ShapeKind::mesh ? std::vector<double>{1.0}  // the file's units are metres
+                                                               : std::vector<double>{};
     check_dimensions(kind, dims, at + ".dimensions_m");
     if (out.size() >= max_composite_parts)
       throw Error(Status::limit_exceeded, at + ": at most " + std::to_string(max_composite_parts) + " parts per object");
-    out.push_back(ShapePart{kind, dims, body_offset, body_orientation, t, r, mat});
+    ShapePart part;
+    part.kind = kind;
+    part.dimensions_m = dims;
+    part.offset_m = body_offset;
+    part.orientation = body_orientation;
+    part.temperature_K = t;
+    part.reflectance = r;
+    part.material = mat;
+    if (kind != ShapeKind::mesh) {
+      if (p.contains("mesh_file") || p.contains("mesh_materials")) bad(at, "mesh_file and mesh_materials need shape mesh");
+      out.push_back(std::move(part));
+      continue;
+    }
+    if (!p.contains("mesh_file") || !p["mesh_file"].is_string()) bad(at + ".mesh_file", "missing (shape mesh reads it)");
+    part.mesh_file = p["mesh_file"].get<std::string>();
+    part.mesh = load_mesh(part.mesh_file, at + ".mesh_file");
+    const MeshMaterials materials = p.contains("mesh_materials") ? mesh_materials(p["mesh_materials"], at + ".mesh_materials")
+                                                                  : MeshMaterials{};
+    for (ShapePart& g : split_mesh(part, materials)) out.push_back(std::move(g));
   }
 }
 }  // namespace
@@ -105,6 +156,10 @@ std::vector<ShapePart> parse_composite(const std::string& text, const std::strin
   flatten(doc, field, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity(), std::nullopt, std::nullopt, std::nullopt, 1,
           out);
   return out;
+}
+
+MeshMaterials parse_mesh_materials(const std::string& text, const std::string& field) {
+  return mesh_materials(parse_json_document(text, field, Status::out_of_range), field);
 }
 
 }  // namespace eoir::universe

@@ -78,6 +78,10 @@ struct BodyProperties {
   std::string composite = "[]";  // parts of shape "composite" as set (universe/composite.hpp)
   std::shared_ptr<const std::vector<ShapePart>> composite_parts =
       std::make_shared<const std::vector<ShapePart>>();  // parsed once, when set
+  std::string mesh_file;  // shape "mesh": the model file (dimensions_m = [scale])
+  std::shared_ptr<const MeshModel> mesh;  // read once, when set
+  std::string mesh_materials = "{}";      // the file's materials mapped (universe/composite.hpp)
+  MeshMaterials mesh_materials_parsed;
   ThermalModel thermal_model = ThermalModel::uniform;
   double subsolar_temperature_K = 390.0;  // the Moon's (Lawson and Jakosky)
   double night_temperature_K = 95.0;

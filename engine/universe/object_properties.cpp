@@ -33,7 +33,8 @@ std::vector<Spec> body_properties(bool missile) {
   std::vector<Spec> t;
   Spec shape = enum_property<Object, ShapeKind>(
       "shape",
-      "Shape (spec 4.1.5.1): sphere, oblate, box, plate, cylinder, cone, coupler, none or composite; a change to a "
+      "Shape (spec 4.1.5.1): sphere, oblate, box, plate, cylinder, cone, coupler, none, composite or mesh (a 3-D "
+      "model file, mesh_file); a change to a "
       "shape taking another number of dimensions resets dimensions_m to 1 m each",
       [](Object& o) -> auto& { return o.body.shape; }, shape_names());
   const auto set_shape = shape.set;
@@ -47,7 +48,7 @@ std::vector<Spec> body_properties(bool missile) {
   t.push_back(Spec{"dimensions_m", ValueType::array, "m",
                    "Dimensions of the shape: sphere [radius], oblate [equatorial, polar radius], box [x, y, z], plate "
                    "[x, y], cylinder [radius, length], cone [base radius, length], coupler [base radius, top radius, "
-                   "length], none []",
+                   "length], none [], mesh [scale]",
                    [](const Object& o) { return Value(o.body.dimensions_m); },
                    [](Object& o, const Value& v) {
                      refuse_central_body(o, "dimensions_m");
@@ -83,6 +84,27 @@ std::vector<Spec> body_properties(bool missile) {
                      o.body.composite_parts =
                          std::make_shared<const std::vector<ShapePart>>(parse_composite(text, "composite"));
                      o.body.composite = text;
+                   }});
+  t.push_back(Spec{"mesh_file", ValueType::string, "",
+                   "Shape mesh: the 3-D model, a glTF 2.0 (.gltf, .glb) or Wavefront OBJ (.obj) file, its triangles "
+                   "scaled by dimensions_m = [scale] (metres per file unit) in the body frame; read and checked when "
+                   "set (relative to the scenario's folder in a scenario, to the working directory otherwise)",
+                   [](const Object& o) { return Value(o.body.mesh_file); },
+                   [](Object& o, const Value& v) {
+                     refuse_central_body(o, "mesh_file");
+                     const std::string& file = string_of(v, "mesh_file");
+                     o.body.mesh = file.empty() ? nullptr : load_mesh(file, "mesh_file");
+                     o.body.mesh_file = file;
+                   }});
+  t.push_back(Spec{"mesh_materials", ValueType::string, "",
+                   "Shape mesh: the file's materials as engine surfaces, a JSON object {\"<name in the file>\": "
+                   "{material, temperature_K, reflectance}}; a material not named takes the object's",
+                   [](const Object& o) { return Value(o.body.mesh_materials); },
+                   [](Object& o, const Value& v) {
+                     refuse_central_body(o, "mesh_materials");
+                     const std::string& text = string_of(v, "mesh_materials");
+                     o.body.mesh_materials_parsed = parse_mesh_materials(text, "mesh_materials");
+                     o.body.mesh_materials = text;
                    }});
   t.push_back(enum_property<Object, ThermalModel>(
       "thermal_model",
@@ -339,7 +361,11 @@ std::vector<ShapePart> shape_parts(const BodyProperties& body) {
   ShapePart part;
   part.kind = body.shape;
   part.dimensions_m = body.dimensions_m;
-  return {part};
+  if (body.shape != ShapeKind::mesh) return {part};
+  if (!body.mesh) throw Error(Status::not_allowed, "mesh_file: shape mesh needs a mesh file (none is set)");
+  part.mesh_file = body.mesh_file;
+  part.mesh = body.mesh;
+  return split_mesh(part, body.mesh_materials_parsed);
 }
 
 const std::vector<Spec>& properties_of(ObjectKind kind) {

@@ -17,6 +17,7 @@ const std::vector<ShapeInfo>& shapes() {
       {ShapeKind::coupler, "coupler", {"base_radius", "top_radius", "length"}},
       {ShapeKind::none, "none", {}},
       {ShapeKind::composite, "composite", {}},  // parts in the object's `composite` property (universe/composite.hpp)
+      {ShapeKind::mesh, "mesh", {"scale"}},    // metres per unit of the file named by `mesh_file`
   };
   return table;
 }
@@ -40,6 +41,23 @@ void check_dimensions(ShapeKind kind, const std::vector<double>& dims, const std
   for (size_t i = 0; i < dims.size(); ++i)
     check_range(dims[i], Range{object_bounds::min_length_m, object_bounds::max_length_m},
                 field + "[" + std::to_string(i) + "] (" + shape.dimensions[i] + ")", "m");
+}
+
+std::vector<ShapePart> split_mesh(const ShapePart& part, const MeshMaterials& materials) {
+  std::vector<ShapePart> out;
+  if (!part.mesh) return out;
+  for (std::size_t g = 0; g < part.mesh->group_materials.size(); ++g) {
+    ShapePart p = part;
+    p.mesh_group = static_cast<std::int32_t>(g);
+    const auto it = materials.find(part.mesh->group_materials[g]);
+    if (it != materials.end()) {
+      if (it->second.material) p.material = it->second.material;
+      if (it->second.temperature_K) p.temperature_K = it->second.temperature_K;
+      if (it->second.reflectance) p.reflectance = it->second.reflectance;
+    }
+    out.push_back(std::move(p));
+  }
+  return out;
 }
 
 }  // namespace eoir::universe

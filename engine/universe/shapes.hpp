@@ -1,16 +1,21 @@
 // Shapes of spec 4.1.5.1: the simple shapes with the dimensions each takes
-// (metres), shape none, and composites of simple shapes at offsets and
-// orientations. A shape is parsed into its typed kind when the property is
+// (metres), shape none, composites of simple shapes at offsets and
+// orientations, and meshes read from 3-D model files (universe/mesh_model.hpp)
+// with a scale. A shape is parsed into its typed kind when the property is
 // set; nothing downstream compares names.
 #pragma once
 #include <Eigen/Geometry>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "universe/mesh_model.hpp"
+
 namespace eoir::universe {
 
-enum class ShapeKind : int { sphere, oblate, box, plate, cylinder, cone, coupler, none, composite };
+enum class ShapeKind : int { sphere, oblate, box, plate, cylinder, cone, coupler, none, composite, mesh };
 
 struct ShapeInfo {
   ShapeKind kind;
@@ -18,7 +23,7 @@ struct ShapeInfo {
   std::vector<const char*> dimensions;  // meaning of each entry of dimensions_m
 };
 
-// sphere, oblate, box, plate, cylinder, cone, coupler, none, composite.
+// sphere, oblate, box, plate, cylinder, cone, coupler, none, composite, mesh.
 const std::vector<ShapeInfo>& shapes();
 const ShapeInfo& shape_info(ShapeKind kind);
 // Throws eoir::Error(unknown_name) naming `field` with the list of shapes.
@@ -37,6 +42,24 @@ struct ShapePart {
   std::optional<double> temperature_K;  // else the object's
   std::optional<double> reflectance;    // else the object's
   std::optional<std::string> material;  // else the object's
+  // Shape mesh: the model (dimensions_m = [scale], metres per file unit) and
+  // the one material group of it this part is (shape_parts splits a mesh).
+  std::string mesh_file;
+  std::shared_ptr<const MeshModel> mesh;
+  std::int32_t mesh_group = -1;  // -1: every group (before the split)
 };
+
+// What a mesh file's material (by its name in the file) becomes: an engine
+// material, a temperature, a gray-body reflectance; unset: the object's.
+struct MeshMaterial {
+  std::optional<std::string> material;
+  std::optional<double> temperature_K;
+  std::optional<double> reflectance;
+};
+using MeshMaterials = std::map<std::string, MeshMaterial>;
+
+// A whole-mesh part as one part per material group of its model, each with
+// the overrides `materials` gives its group's name (on top of the part's own).
+std::vector<ShapePart> split_mesh(const ShapePart& part, const MeshMaterials& materials);
 
 }  // namespace eoir::universe

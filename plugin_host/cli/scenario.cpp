@@ -117,7 +117,21 @@ std::string named_file(const std::string& file, const std::string& named, const 
   return resolved.string();
 }
 
-// Resolves every file-valued property (named *_file) of a properties object.
+// Resolves the mesh files of a composite's parts (nested parts too).
+void resolve_part_files(json& parts, const std::string& file, const std::string& path, const ScenarioOptions& options) {
+  if (!parts.is_array()) return;  // (the engine says what is wrong with it)
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    json& part = parts[i];
+    if (!part.is_object()) continue;
+    const std::string at = path + "[" + std::to_string(i) + "]";
+    if (part.contains("mesh_file") && part["mesh_file"].is_string() && !part["mesh_file"].get<std::string>().empty())
+      part["mesh_file"] = named_file(file, part["mesh_file"].get<std::string>(), at + ".mesh_file", options);
+    if (part.contains("parts")) resolve_part_files(part["parts"], file, at + ".parts", options);
+  }
+}
+
+// Resolves every file-valued property (named *_file) of a properties object,
+// and the mesh files a composite's parts name.
 void resolve_named_files(json& properties, const std::string& file, const std::string& path,
                          const ScenarioOptions& options) {
   for (auto it = properties.begin(); it != properties.end(); ++it) {
@@ -125,6 +139,13 @@ void resolve_named_files(json& properties, const std::string& file, const std::s
     const bool names_file = key.size() > 5 && key.compare(key.size() - 5, 5, "_file") == 0;
     if (names_file && it->is_string() && !it->get<std::string>().empty())
       *it = named_file(file, it->get<std::string>(), path + "." + key, options);
+    if (key == "composite" && it->is_string()) {
+      json parts = json::parse(it->get<std::string>(), nullptr, false);
+      if (parts.is_array()) {
+        resolve_part_files(parts, file, path + ".composite", options);
+        *it = parts.dump();
+      }
+    }
   }
 }
 

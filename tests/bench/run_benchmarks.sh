@@ -66,6 +66,7 @@ run bench_frame_fidelity tests/bench/bench_frame --benchmark_filter='^BM_Frame(S
 run bench_frame_threads tests/bench/bench_frame --benchmark_filter='^BM_FrameThreads/' --benchmark_min_time=0.5
 run bench_frame_sunlight tests/bench/bench_frame --benchmark_filter='^BM_FrameSunlight/' --benchmark_min_time=0.3
 run bench_frame_atmosphere tests/bench/bench_frame --benchmark_filter='^BM_FrameAtmosphere/' --benchmark_min_time=2
+run bench_frame_mesh tests/bench/bench_frame --benchmark_filter='^BM_FrameMeshTarget' --benchmark_min_time=2
 run bench_eclipse tests/bench/bench_eclipse --benchmark_min_time=0.1
 run bench_brdf tests/bench/bench_brdf --benchmark_min_time=0.1
 

@@ -327,8 +327,8 @@ TEST(RayCaster, GridCastMatchesRayByRay) {
       std::vector<double> range(width * height);
       std::vector<Vec3> normal(width * height);
       caster.cast_grid(width, height, direction,
-                       [&](std::int64_t c, std::int64_t r, std::int32_t o, std::int32_t p, double t, const Vec3& d,
-                           const Vec3& n) {
+                       [&](std::int64_t c, std::int64_t r, std::int32_t o, std::int32_t p, std::int32_t, double t,
+                           const Vec3& d, const Vec3& n) {
                          const std::size_t i = static_cast<std::size_t>(r * width + c);
                          ++seen[i];
                          if (o >= 0) {

@@ -246,6 +246,84 @@ bool MeshGeometry::intersect(std::int32_t group, const Vec3& origin_m, const Vec
   return true;
 }
 
+int MeshGeometry::intersect16(std::int32_t group, const Vec3& origin_m, const Vec3* dirs, const bool* active,
+                              int count, double t_min, double* t_max, Vec3* normal, std::int32_t* facet) const {
+  const Impl& m = *impl_;
+  const Group& g = m.groups[static_cast<std::size_t>(group)];
+  const Vec3 to_centre = g.centre_m - origin_m;
+  const double r = g.radius_m * (1.0 + 1e-6) + 1e-9;
+  alignas(64) RTCRayHit16 rh;
+  alignas(64) int valid[16];
+  double t_start[16];
+  int n_valid = 0;
+  for (int k = 0; k < 16; ++k) {
+    valid[k] = 0;
+    rh.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+    rh.ray.org_x[k] = rh.ray.org_y[k] = rh.ray.org_z[k] = rh.ray.dir_x[k] = rh.ray.dir_y[k] = 0.0f;
+    rh.ray.dir_z[k] = 1.0f;
+    rh.ray.tnear[k] = 0.0f;
+    rh.ray.tfar[k] = 0.0f;
+    rh.ray.time[k] = 0.0f;
+    rh.ray.mask[k] = 0xFFFFFFFFu;
+    rh.ray.id[k] = static_cast<unsigned>(k);
+    rh.ray.flags[k] = 0;
+    if (k >= count || !active[k]) continue;
+    const Vec3& d = dirs[k];
+    const double along = to_centre.dot(d);
+    const double perp2 = (to_centre - along * d).squaredNorm();
+    if (perp2 > r * r) continue;
+    t_start[k] = std::max(t_min, along - std::sqrt(r * r - perp2)) - 1e-6 * r;
+    if (!(t_start[k] < t_max[k]) || along + r < t_min) continue;
+    const Vec3 o = origin_m + t_start[k] * d - m.centre_m;
+    rh.ray.org_x[k] = static_cast<float>(o.x());
+    rh.ray.org_y[k] = static_cast<float>(o.y());
+    rh.ray.org_z[k] = static_cast<float>(o.z());
+    rh.ray.dir_x[k] = static_cast<float>(d.x());
+    rh.ray.dir_y[k] = static_cast<float>(d.y());
+    rh.ray.dir_z[k] = static_cast<float>(d.z());
+    rh.ray.tfar[k] = t_max[k] == kInf ? std::numeric_limits<float>::infinity()
+                                      : std::nextafter(static_cast<float>(t_max[k] - t_start[k]) * 1.0001f + 1e-6f,
+                                                       std::numeric_limits<float>::infinity());
+    valid[k] = -1;
+    ++n_valid;
+  }
+  if (n_valid == 0) return 0;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcIntersect16(valid, g.scene, &context, &rh);
+  int hits = 0;
+  for (int k = 0; k < 16; ++k) {
+    if (!valid[k] || rh.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) continue;
+    const Vec3& d = dirs[k];
+    const std::int32_t tri = g.triangles[rh.hit.primID[k]];
+    const Vec3& n = m.normal[static_cast<std::size_t>(tri)];
+    const double facing = n.dot(d);
+    const Vec3& v0 = m.vertices_m[static_cast<std::size_t>(m.model->triangles[static_cast<std::size_t>(tri)][0])];
+    const double t = facing != 0.0 ? n.dot(v0 - origin_m) / facing : t_start[k] + rh.ray.tfar[k];
+    if ((m.model->triangle_closed[static_cast<std::size_t>(tri)] && facing >= 0.0) || !(t > t_min)) {
+      // (a closed back face or a hit behind t_min, rare: the single ray passes over it)
+      double t1 = 0;
+      Vec3 n1;
+      std::int32_t f1 = -1;
+      if (intersect(group, origin_m, d, t_min, t_max[k], t1, n1, f1)) {
+        t_max[k] = t1;
+        normal[k] = n1;
+        facet[k] = f1;
+        ++hits;
+      }
+      continue;
+    }
+    if (!(t < t_max[k])) continue;
+    t_max[k] = t;
+    normal[k] = facing > 0 ? Vec3(-n) : n;
+    facet[k] = static_cast<std::int32_t>(rh.hit.primID[k]);
+    ++hits;
+  }
+  return hits;
+}
+
 bool MeshGeometry::contains(const Vec3& p_m) const {
   const Impl& m = *impl_;
   RTCScene scene = m.whole ? m.whole : m.groups[0].scene;

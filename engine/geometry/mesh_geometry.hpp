@@ -33,6 +33,12 @@ class MeshGeometry {
   // triangle's index in the group (group_triangles).
   bool intersect(std::int32_t group, const Vec3& origin_m, const Vec3& dir, double t_min, double t_max, double& t_m,
                  Vec3& normal, std::int32_t& facet) const;
+  // The same for up to 16 rays from one origin at once (a coherent packet:
+  // Embree traverses them together): rays k < count with active[k] and a
+  // hit closer than t_max[k] get t_max[k], normal[k] and facet[k] replaced;
+  // returns how many did.
+  int intersect16(std::int32_t group, const Vec3& origin_m, const Vec3* dirs, const bool* active, int count,
+                  double t_min, double* t_max, Vec3* normal, std::int32_t* facet) const;
   // True when p lies inside a closed piece of the whole model, deeper than a
   // relative 1e-9 of its size.
   bool contains(const Vec3& p_m) const;

@@ -333,6 +333,77 @@ bool cone_meets(const Cone& cone, const PartBound& b) {
 
 }  // namespace
 
+namespace {
+// A tile near one object with mesh parts: its analytic parts sample by
+// sample, then each mesh part's triangles for the tile's rays in packets of
+// 16 (coherent primary rays: Embree traverses a packet together), nearest
+// strictly closer wins as in the intersect callback.
+template <class Direction, class Emit>
+void cast_tile_with_meshes(const ObjectData& od, const std::vector<const PartBound*>& tile_bounds, std::int64_t c0,
+                           std::int64_t r0, std::int64_t c1, std::int64_t r1, const Direction& direction,
+                           const Emit& emit) {
+  constexpr int kMax = 64;  // an 8 x 8 tile
+  const int width = static_cast<int>(c1 - c0), n = static_cast<int>((c1 - c0) * (r1 - r0));
+  Vec3 d[kMax], d_part[kMax], normal_part[kMax];
+  double best[kMax];
+  int best_part[kMax];
+  std::int32_t best_facet[kMax];
+  for (int i = 0; i < n; ++i) {
+    d[i] = direction(c0 + i % width, r0 + i / width);
+    best[i] = std::numeric_limits<double>::infinity();
+    best_part[i] = -1;
+    best_facet[i] = -1;
+  }
+  for (const PartBound* b : tile_bounds) {
+    const PartData& p = od.parts[b->part];
+    const Mat3 to_part = p.part_to_frame.transpose();
+    for (int i = 0; i < n; ++i) d_part[i] = to_part * d[i];
+    if (p.geom.kind != ShapeKind::mesh) {
+      for (int i = 0; i < n; ++i) {
+        double t = 0;
+        Vec3 nn;
+        if (intersect_shape(p.geom, p.origin_part_m, d_part[i], 0.0, best[i], t, nn)) {
+          best[i] = t;
+          best_part[i] = static_cast<int>(b->part);
+          best_facet[i] = -1;
+          normal_part[i] = nn;
+        }
+      }
+      continue;
+    }
+    for (int i0 = 0; i0 < n; i0 += 16) {
+      bool active[16];
+      double t_max[16];
+      Vec3 nn[16];
+      std::int32_t facet[16];
+      const int count = std::min(16, n - i0);
+      for (int k = 0; k < count; ++k) {
+        active[k] = true;
+        t_max[k] = best[i0 + k];
+      }
+      if (p.geom.mesh->intersect16(p.geom.mesh_group, p.origin_part_m, d_part + i0, active, count, 0.0, t_max, nn,
+                                   facet) == 0)
+        continue;
+      for (int k = 0; k < count; ++k)
+        if (t_max[k] < best[i0 + k]) {
+          best[i0 + k] = t_max[k];
+          best_part[i0 + k] = static_cast<int>(b->part);
+          best_facet[i0 + k] = facet[k];
+          normal_part[i0 + k] = nn[k];
+        }
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    const std::int64_t c = c0 + i % width, r = r0 + i / width;
+    if (best_part[i] < 0)
+      emit(c, r, -1, -1, -1, sky_range_m, d[i], Vec3::Zero());
+    else
+      emit(c, r, od.object->object_id, best_part[i], best_facet[i], best[i], d[i],
+           od.parts[static_cast<std::size_t>(best_part[i])].part_to_frame * normal_part[i]);
+  }
+}
+}  // namespace
+
 void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                           const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
                           const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, std::int32_t,
@@ -397,6 +468,14 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                                   std::all_of(tile_bounds.begin(), tile_bounds.end(), [&](const PartBound* b) {
                                     return b->object == tile_bounds[0]->object;
                                   });
+          if (one_object && std::any_of(tile_bounds.begin(), tile_bounds.end(), [&](const PartBound* b) {
+                const ObjectData& od = objects[static_cast<std::size_t>(b->object)];
+                return od.parts[b->part].geom.kind == ShapeKind::mesh;
+              })) {
+            cast_tile_with_meshes(objects[static_cast<std::size_t>(tile_bounds[0]->object)], tile_bounds, c0, r0, c1,
+                                  r1, direction, emit);
+            continue;
+          }
           for (std::int64_t r = r0; r < r1; ++r)
             for (std::int64_t c = c0; c < c1; ++c) {
               if (tile_bounds.empty()) {  // no object near: the sky

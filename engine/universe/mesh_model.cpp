@@ -50,14 +50,33 @@ void check_count(std::size_t triangles) {
 }
 
 // tinyobjloader reads a vertex coordinate it cannot parse ("nan", "1e999",
-// a word) as 0: every "v" line is checked here first, so that a corrupt
-// vertex is refused rather than moved.
-void check_obj_vertices(const std::string& path) {
+// a word) as 0, and a `usemtl` name without a .mtl file as no material:
+// every "v" line is checked here first, so that a corrupt vertex is refused
+// rather than moved, and each face's material is taken from its `usemtl`
+// line (the triangles of a face of n vertices: n - 2, in file order).
+std::vector<std::string> scan_obj(const std::string& path) {
   std::ifstream in(path);
-  std::string line;
+  std::string line, material;
+  std::vector<std::string> triangle_material;
   std::size_t vertex = 0;
   while (std::getline(in, line)) {
-    if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) continue;
+    if (line.rfind("usemtl", 0) == 0 && line.size() > 6 && std::isspace(static_cast<unsigned char>(line[6]))) {
+      const std::size_t a = line.find_first_not_of(" \t", 6), b = line.find_last_not_of(" \t\r");
+      material = a == std::string::npos ? "" : line.substr(a, b - a + 1);
+      continue;
+    }
+    if (line.size() < 2 || (line[1] != ' ' && line[1] != '\t')) continue;
+    if (line[0] == 'f') {
+      std::size_t tokens = 0;
+      for (std::size_t i = 1; i < line.size();) {
+        while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+        if (i < line.size()) ++tokens;
+        while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+      }
+      for (std::size_t k = 2; k < tokens; ++k) triangle_material.push_back(material);
+      continue;
+    }
+    if (line[0] != 'v') continue;
     const char* p = line.c_str() + 1;
     for (int k = 0; k < 3; ++k) {
       char* end = nullptr;
@@ -68,10 +87,11 @@ void check_obj_vertices(const std::string& path) {
     }
     ++vertex;
   }
+  return triangle_material;
 }
 
 RawMesh read_obj(const std::string& path) {
-  check_obj_vertices(path);
+  const std::vector<std::string> usemtl = scan_obj(path);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
@@ -85,6 +105,7 @@ RawMesh read_obj(const std::string& path) {
   std::size_t total = 0;
   for (const auto& shape : reader.GetShapes()) total += shape.mesh.num_face_vertices.size();
   check_count(total);
+  const bool by_usemtl = usemtl.size() == total;  // (else a face our scan read otherwise: the reader's ids)
   for (const auto& shape : reader.GetShapes()) {
     const auto& mesh = shape.mesh;
     std::size_t index = 0;
@@ -96,7 +117,9 @@ RawMesh read_obj(const std::string& path) {
       index += n;
       m.triangles.push_back(tri);
       const int id = f < mesh.material_ids.size() ? mesh.material_ids[f] : -1;
-      m.triangle_material.push_back(id >= 0 && static_cast<std::size_t>(id) < materials.size() ? materials[id].name : "");
+      m.triangle_material.push_back(by_usemtl ? usemtl[m.triangles.size() - 1]
+                                    : id >= 0 && static_cast<std::size_t>(id) < materials.size() ? materials[id].name
+                                                                                                  : "");
     }
   }
   return m;

@@ -130,6 +130,13 @@ TEST(MeshModel, MaterialsMakeGroups) {
                                  "usemtl black\nf 3 7 4\nf 4 7 8\nf 1 5 3\nf 3 5 7\nf 2 4 6\nf 4 8 6\n");
   const auto m = u::load_mesh(path, "mesh_file");
   ASSERT_EQ(m->group_materials, (std::vector<std::string>{"gold", "black"}));
+  // Without its .mtl file (a quad face too: two triangles), usemtl still names the groups.
+  const auto bare = u::load_mesh(write("bare.obj",
+                                       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nusemtl hull\nf 1 2 3 4\n"
+                                       "usemtl panel\nf 1 2 5\n"),
+                                 "mesh_file");
+  ASSERT_EQ(bare->group_materials, (std::vector<std::string>{"hull", "panel"}));
+  EXPECT_EQ(bare->triangle_group, (std::vector<std::int32_t>{0, 0, 1}));
   EXPECT_TRUE(m->closed);  // the groups together are watertight
   // The composite splits it into one part per group, mapped to surfaces.
   const auto parts = u::parse_composite(

@@ -2,15 +2,19 @@
 // DESIGN.md section 3: a 1 m satellite at 10 km, the Earth at 36,000 km and
 // the Moon at 400,000 km in one frame).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <map>
 #include <random>
 
+#include "../support/mesh_files.hpp"
 #include "core/error.hpp"
 #include "geometry/scene_geometry.hpp"
 #include "geometry/shape_intersect.hpp"
+#include "universe/mesh_model.hpp"
 
 namespace g = eoir::geometry;
 using g::Vec3;
@@ -293,7 +297,8 @@ TEST(RayCaster, MasksSkipAndOcclusion) {
 // gives every sample the hit cast() gives its ray, to the last bit: the Earth
 // behind a composite satellite and a small sphere, the Moon, an object the
 // query masks out, one containing the observer and a composite whose
-// bounding sphere surrounds the observer without containing it.
+// bounding sphere surrounds the observer without containing it, and an
+// object of a mesh (an icosphere) and a box (tiles of packets of 16 rays).
 TEST(RayCaster, GridCastMatchesRayByRay) {
   TestObject sat = object(7, "box", {1, 1, 2}, Vec3(300, -50, -30));  // off the Earth: cast directly
   g::ShapePart wing = part("plate", {3, 1});
@@ -307,11 +312,26 @@ TEST(RayCaster, GridCastMatchesRayByRay) {
   around.parts.push_back(other);
   TestObject masked = object(11, "sphere", {5}, Vec3(300, -30, 0));
   masked.ray_mask = g::ray_mask_other;
+  const std::string ico = (std::filesystem::temp_directory_path() /
+                           ("eoir_ray_caster_ico_" + std::to_string(::getpid()) + ".obj")).string();
+  eoir::test::write_obj(ico, eoir::test::icosphere(3));
+  TestObject meshy = object(14, "box", {2, 2, 2}, Vec3(280, 45, 22));
+  {
+    eoir::universe::ShapePart m;
+    m.kind = eoir::universe::ShapeKind::mesh;
+    m.dimensions_m = {4.0};
+    m.mesh = eoir::universe::load_mesh(ico, "mesh_file");
+    m.mesh_group = 0;
+    m.offset_m = Vec3(0, 3.5, 0);
+    m.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Vec3(1, 1, 0).normalized()));
+    meshy.parts.push_back(g::make_part(m));
+  }
   std::vector<TestObject> objs = {object(3, "oblate", {kEarthA, kEarthC}, Vec3(kGeo, 3e6, 0)),
                                   object(10, "sphere", {kMoonR}, Vec3(3.8e8, 4.5e7, 0)),
                                   object(12, "sphere", {2}, Vec3(250, 25, -8)),
                                   object(13, "sphere", {100}, Vec3(10, 0, 0)),  // contains the observer
-                                  sat, around, masked};
+                                  sat, around, masked, meshy};
+  std::filesystem::remove(ico);
   g::RayCaster caster;
   caster.build(pointers(objs));
   // A pinhole grid of 203 x 157 samples about +x (tangents up to 0.2).
@@ -323,11 +343,11 @@ TEST(RayCaster, GridCastMatchesRayByRay) {
   for (const g::RayQuery query : {g::RayQuery{}, g::RayQuery{g::ray_mask_extended, 7}}) {
     for (unsigned threads : {1u, 2u}) {
       std::vector<int> seen(width * height, 0);
-      std::vector<std::int32_t> object(width * height), part(width * height);
+      std::vector<std::int32_t> object(width * height), part(width * height), facet(width * height);
       std::vector<double> range(width * height);
       std::vector<Vec3> normal(width * height);
       caster.cast_grid(width, height, direction,
-                       [&](std::int64_t c, std::int64_t r, std::int32_t o, std::int32_t p, std::int32_t, double t,
+                       [&](std::int64_t c, std::int64_t r, std::int32_t o, std::int32_t p, std::int32_t f, double t,
                            const Vec3& d, const Vec3& n) {
                          const std::size_t i = static_cast<std::size_t>(r * width + c);
                          ++seen[i];
@@ -336,11 +356,12 @@ TEST(RayCaster, GridCastMatchesRayByRay) {
                          }
                          object[i] = o;
                          part[i] = p;
+                         facet[i] = f;
                          range[i] = t;
                          normal[i] = n;
                        },
                        threads, query);
-      std::map<int, int> per_object, sat_parts;
+      std::map<int, int> per_object, sat_parts, mesh_parts;
       for (std::int64_t r = 0; r < height; ++r)
         for (std::int64_t c = 0; c < width; ++c) {
           const std::size_t i = static_cast<std::size_t>(r * width + c);
@@ -348,22 +369,26 @@ TEST(RayCaster, GridCastMatchesRayByRay) {
           const g::Hit h = caster.cast(direction(c, r), query);
           ASSERT_EQ(object[i], h.object_id) << c << " " << r;
           ASSERT_EQ(part[i], h.part) << c << " " << r;
+          ASSERT_EQ(facet[i], h.facet) << c << " " << r;
           ASSERT_EQ(range[i], h.range_m) << c << " " << r;
           ASSERT_EQ(normal[i], h.normal_frame) << c << " " << r;
           ++per_object[h.object_id];
           if (h.object_id == 7) ++sat_parts[h.part];
+          if (h.object_id == 14) ++mesh_parts[h.part];
         }
       // Every kind of tile was met: sky, the Earth alone, the satellites in front of it, the surrounding composite.
       EXPECT_GT(per_object[-1], 1000);
       EXPECT_GT(per_object[3], 1000);
       EXPECT_GT(per_object[12], 5);
       EXPECT_GT(per_object[9], 0);
+      EXPECT_GT(per_object[14], 100);  // the mesh and its box
       EXPECT_EQ(per_object[13], 0);
       EXPECT_EQ(per_object[11] > 0, query.mask == g::ray_mask_all);
       EXPECT_EQ(per_object[7] > 0, query.skip_object != 7);
       if (query.skip_object != 7) {
         EXPECT_TRUE(sat_parts[0] > 0 && sat_parts[1] > 0);  // bus and wing, cast directly
       }
+      EXPECT_TRUE(mesh_parts[0] > 0 && mesh_parts[1] > 0);  // box and icosphere
     }
   }
 }

@@ -23,13 +23,7 @@ static const char* at(const char* name) {
 
 static const char* file(const char* name, const char* text) {
   const char* path = at(name);
-  FILE* f = fopen(path, "wb");
-  if (f == NULL) {
-    perror(path);
-    exit(2);
-  }
-  fputs(text, f);
-  fclose(f);
+  write_text(path, text);
   return path;
 }
 

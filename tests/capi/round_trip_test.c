@@ -3,7 +3,7 @@
  * satellites, aircraft, a ground vehicle, a missile, a site, sensors), every
  * shape, composites (custom and nested, and the predefined satellites),
  * every material source (built in, gray_body, a user's file, a user's file
- * redefining a built-in), a user spectrum, every thermal and point-source
+ * redefining a built-in), a mesh file with its materials mapped, a user spectrum, every thermal and point-source
  * model, the star field's options (the bundled catalogue or a user CSV,
  * epoch, magnitude, background light) and the Earth's atmosphere: every
  * property eoir_property_info lists is moved off its default, and closed
@@ -128,6 +128,16 @@ static void move_properties(eoir_engine e, const char* object, const char* kind,
     if (strcmp(p.name, "material") == 0 || strcmp(p.name, "composite") == 0 || strcmp(p.name, "spectrum") == 0 ||
         strcmp(p.name, "catalog_file") == 0)
       continue;
+    /* every body names the mesh (shape mesh, a choice of shape, renders it) */
+    if (strcmp(p.name, "mesh_file") == 0) {
+      tolerated(eoir_set_string(e, object, p.name, at("rt_cube.obj")), object, p.name);
+      continue;
+    }
+    if (strcmp(p.name, "mesh_materials") == 0) {
+      tolerated(eoir_set_string(e, object, p.name, "{\"hull\": {\"material\": \"gold\", \"temperature_K\": 310}}"),
+                object, p.name);
+      continue;
+    }
     /* setting W_rms makes image_quality custom: every other sensor keeps its preset */
     if (strcmp(p.name, "wavefront_error_rms_waves") == 0 && (k + round) % 2 == 0) continue;
     if (p.type == EOIR_TYPE_STRING && p.choices[0] != '\0') {
@@ -184,6 +194,10 @@ static void write_files(void) {
              "{\"format\": \"eoir-material\", \"version\": 1, \"name\": \"gold\", \"description\": \"redefined\",\n"
              " \"sources\": [\"round_trip_test.c\"], \"brdf\": {\"k0\": 0.9, \"k1\": 0.1, \"alpha\": 2, \"beta\": 2},\n"
              " \"wavelength_um\": [0.28, 28.0], \"reflectance\": [0.33, 0.33]}\n");
+  write_text(at("rt_cube.obj"),
+             "v -0.5 -0.5 -0.5\nv 0.5 -0.5 -0.5\nv -0.5 0.5 -0.5\nv 0.5 0.5 -0.5\n"
+             "v -0.5 -0.5 0.5\nv 0.5 -0.5 0.5\nv -0.5 0.5 0.5\nv 0.5 0.5 0.5\nusemtl hull\n"
+             "f 1 3 2\nf 2 3 4\nf 5 6 7\nf 6 8 7\nf 1 2 5\nf 2 6 5\nf 3 7 4\nf 4 7 8\nf 1 5 3\nf 3 5 7\nf 2 4 6\nf 4 8 6\n");
   f = fopen(at("stars.csv"), "wb");
   CHECK(f != NULL);
   if (f) {

@@ -153,6 +153,39 @@ TEST(Detector, PhotonNoiseIsPoissonAtLowCounts) {
   }
 }
 
+// Exact Poisson above the inversion branch (transformed rejection from 10
+// e-): at means 10 and 25 the fraction of pixels with each count from m - 2
+// sigma to m + 2 sigma is exp(-m) m^k / k!, and at 1e4 the mean and variance
+// are m (five standard errors each: variance s.e. m sqrt(2 / n)).
+TEST(Detector, PhotonNoiseIsPoissonAtMeanCounts) {
+  DetectorParameters p;
+  p.enabled = true;
+  p.bias_adu = 0.0;
+  p.full_well_e = 1.0e6;
+  const DetectorPattern pattern = build_detector_pattern(p, kPixels);
+  std::mt19937_64 rng(13);
+  const double n = static_cast<double>(kPixels);
+  for (double m : {10.0, 25.0}) {
+    const Frame f = expose(p, pattern, m, 1.0, rng);
+    std::vector<double> count(100, 0.0);
+    for (double e : f.electrons)
+      if (e < 100) count[static_cast<std::size_t>(e)] += 1;
+    const int lo = static_cast<int>(m - 2 * std::sqrt(m)), hi = static_cast<int>(m + 2 * std::sqrt(m));
+    for (int k = lo; k <= hi; ++k) {
+      const double expected = std::exp(-m + k * std::log(m) - std::lgamma(k + 1.0));
+      EXPECT_NEAR(count[static_cast<std::size_t>(k)] / n, expected, 5 * std::sqrt(expected * (1 - expected) / n))
+          << "m = " << m << ", k = " << k;
+    }
+  }
+  const double m = 1.0e4;
+  const Frame f = expose(p, pattern, m, 1.0, rng);
+  double sum = 0, sum2 = 0;
+  for (double e : f.electrons) sum += e, sum2 += e * e;
+  const double mean = sum / n, variance = (sum2 - sum * mean) / (n - 1);
+  EXPECT_NEAR(mean, m, 5 * std::sqrt(m / n));
+  EXPECT_NEAR(variance, m, 5 * m * std::sqrt(2.0 / n));
+}
+
 // Clipping: charge at the full well, ADU at 2^bits - 1 (and never below 0).
 TEST(Detector, ClipsAtTheFullWellAndAtTheLargestAdu) {
   DetectorParameters p;

@@ -264,6 +264,7 @@ const Frame& Engine::render(const std::string& name) {
       sensor::scene_display(frame->scene.image, display, options_.threads, std::move(spare.scene_display));
   display.full_scale = std::isfinite(model.metrics.saturation_electrons) ? model.metrics.saturation_electrons : 1e6;
   display.saturation = model.metrics.saturation_electrons;  // +inf with saturation off
+  if (p.detector.enabled) display.full_scale = display.saturation = p.detector.full_well_e;  // sensor/detector.hpp
   frame->sensor_display = sensor::compress_for_display(frame->sensor.electrons, display, options_.threads,
                                                        std::move(spare.sensor_display));
   const auto t3 = clock_type::now();

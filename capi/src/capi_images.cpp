@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "capi_internal.hpp"
+#include "sensor/detector.hpp"
 
 using namespace eoir;
 using eoir::capi::need;
@@ -24,9 +25,16 @@ Extent extent_of(const Frame& f, int32_t kind) {
     case EOIR_IMAGE_SCENE_DISPLAY: return {g.field_width(), g.field_height()};
     case EOIR_IMAGE_SENSOR_ELECTRONS:
     case EOIR_IMAGE_SENSOR_MEAN:
-    case EOIR_IMAGE_SENSOR_DISPLAY: return {g.pixels_x, g.pixels_y};
+    case EOIR_IMAGE_SENSOR_DISPLAY:
+    case EOIR_IMAGE_SENSOR_ADU: return {g.pixels_x, g.pixels_y};
     default: throw Error(Status::out_of_range, "kind: unknown image kind " + std::to_string(kind));
   }
+}
+// The frame's ADU image; no_state unless it was rendered with the detector stage.
+const std::vector<std::uint32_t>& adu_of(const Frame& f) {
+  if (f.sensor.adu.empty())
+    throw Error(Status::no_state, "kind: the frame was rendered with detector_model off: no ADU image");
+  return f.sensor.adu;
 }
 }  // namespace
 
@@ -44,6 +52,7 @@ EOIR_API eoir_status eoir_image_info_get(eoir_engine engine, const char* sensor,
     constexpr size_t v11_size = offsetof(eoir_image_info, start_jd_utc);  // the struct before 1.6 appended
     capi::need_size(info->struct_size, v11_size, "info_out");
     const Extent ext = extent_of(f, kind);
+    if (kind == EOIR_IMAGE_SENSOR_ADU) adu_of(f);
     const uint32_t size = info->struct_size;
     eoir_image_info full{};
     full.struct_size = size;
@@ -52,6 +61,7 @@ EOIR_API eoir_status eoir_image_info_get(eoir_engine engine, const char* sensor,
     full.kind = kind;
     full.unit = kind == EOIR_IMAGE_SCENE_RADIANCE ? "W/(cm^2 sr)"
                 : (kind == EOIR_IMAGE_SENSOR_ELECTRONS || kind == EOIR_IMAGE_SENSOR_MEAN) ? "electrons"
+                : kind == EOIR_IMAGE_SENSOR_ADU                                           ? "adu"
                                                                                           : "";
     const auto utc = [](const EngineTime& t, double (&out)[2]) {
       const JulianDate d = t.to(TimeScale::utc);
@@ -82,6 +92,16 @@ EOIR_API eoir_status eoir_image_info_get(eoir_engine engine, const char* sensor,
     const double saturation = model.metrics.saturation_electrons;
     full.saturation_electrons = std::isfinite(saturation) ? saturation : 0.0;
     full.read_noise_electrons = model.parameters.noise_enabled ? model.metrics.dark_noise_electrons : 0.0;
+    const universe::DetectorParameters& d = model.parameters.detector;
+    if (d.enabled) {
+      // The detector stage (sensor/detector.hpp) in place of eqs. 53-55.
+      full.saturation_electrons = d.full_well_e;
+      full.read_noise_electrons = model.parameters.noise_enabled ? d.read_noise_e : 0.0;
+      full.gain_e_per_adu = d.gain_e_per_adu;
+      full.bias_adu = d.bias_adu;
+      full.saturation_adu = sensor::saturation_adu(d);
+      full.adc_max_adu = sensor::adc_max_adu(d);
+    }
     std::memcpy(info, &full, std::min<size_t>(size, sizeof full));  // what the caller's version holds
   });
 }
@@ -117,6 +137,9 @@ EOIR_API eoir_status eoir_image_get(eoir_engine engine, const char* sensor, int3
       for (std::int64_t r = 0; r < ext.height; ++r)
         for (std::int64_t c = 0; c < ext.width; ++c)
           values[r * ext.width + c] = radiance[static_cast<size_t>((r + guard) * w + c + guard)];
+    } else if (kind == EOIR_IMAGE_SENSOR_ADU) {
+      const auto& adu = adu_of(f);
+      std::copy(adu.begin(), adu.end(), values);
     } else {
       const auto& src = kind == EOIR_IMAGE_SENSOR_MEAN ? f.sensor.mean_electrons : f.sensor.electrons;
       std::copy(src.begin(), src.end(), values);
@@ -136,6 +159,17 @@ EOIR_API eoir_status eoir_image_get_bytes(eoir_engine engine, const char* sensor
     if (capacity < n) throw Error(Status::buffer_too_small, "capacity: " + std::to_string(n) + " bytes needed");
     const auto& src = kind == EOIR_IMAGE_SCENE_DISPLAY ? f.scene_display : f.sensor_display;
     std::copy(src.begin(), src.end(), bytes);
+  });
+}
+
+EOIR_API eoir_status eoir_image_get_adu(eoir_engine engine, const char* sensor, uint32_t* adu, size_t capacity) {
+  return with_engine(engine, [&](Engine& e) {
+    const Frame& f = e.frame(str(sensor, "sensor"));
+    need(adu, "adu");
+    const std::vector<std::uint32_t>& src = adu_of(f);
+    if (capacity < src.size())
+      throw Error(Status::buffer_too_small, "capacity: " + std::to_string(src.size()) + " values needed");
+    std::copy(src.begin(), src.end(), adu);
   });
 }
 

@@ -6,6 +6,7 @@
 
 #include "core/constants.hpp"
 #include "core/parallel_ranges.hpp"
+#include "sensor/detector.hpp"
 #include "sensor/scene_convolution.hpp"
 
 namespace eoir::sensor {
@@ -48,6 +49,18 @@ SensorImage render_sensor_image(const SensorModel& model, const radiometry::Radi
   if (!scene.point_sources.empty())
     render_point_sources(model.point_sources(), point_source_signals(model, scene), nx, ny, mean);
   const auto t2 = clock::now();
+  out.adu = std::move(storage.adu);
+  if (p.detector.enabled) {
+    // The detector stage in place of eqs. 53-55 (detector.hpp).
+    apply_detector(p.detector, model.detector_pattern(), mean, p.integration_time_ms * 1e-3, p.noise_enabled, rng,
+                   out.electrons, out.adu);
+    out.mean_electrons = std::move(mean);
+    out.convolution_s = seconds(t0, t1);
+    out.point_sources_s = seconds(t1, t2);
+    out.noise_s = seconds(t2, clock::now());
+    return out;
+  }
+  out.adu.clear();
   // Noise (eqs. 53-54) and saturation (eq. 55); zero dark offset (5.11.3).
   out.electrons.resize(mean.size());
   std::normal_distribution<double> normal(0.0, 1.0);

@@ -2,9 +2,11 @@
 // effective-radiance image is convolved with the system OTF by FFT and
 // integrated over pixels (eq. 49), point sources add their energy on
 // detector (eqs. 50-51), then noise (eqs. 53-54) and saturation (eq. 55); the
-// dark offset is zero (5.11.3). Reads nothing of the scene but its output
+// dark offset is zero (5.11.3). With the sensor's detector_model on, the
+// detector stage (detector.hpp) takes the place of eqs. 53-55. Reads nothing of the scene but its output
 // (spec 4.1.1).
 #pragma once
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -17,10 +19,11 @@ namespace eoir::sensor {
 
 struct SensorImage {
   std::vector<double> mean_electrons;  // pixels, noise-free r_L + r_E (eqs. 49-50)
-  std::vector<double> electrons;       // pixels, total response (eq. 55)
+  std::vector<double> electrons;       // pixels, total response (eq. 55; the detector stage's e when on)
+  std::vector<std::uint32_t> adu;      // pixels, the detector stage's ADU; empty with it off
   double convolution_s = 0;            // OTF convolution by FFT and pixel integration (eq. 49)
   double point_sources_s = 0;          // energy on detector (eqs. 50-51)
-  double noise_s = 0;                  // noise and saturation (eqs. 53-55)
+  double noise_s = 0;                  // noise and saturation (eqs. 53-55) or the detector stage
 };
 
 // Draws noise from `rng` (the engine's seeded generator) when noise is on;

@@ -17,6 +17,14 @@ const PointSourceModel& SensorModel::point_sources() const {
   return cache.model;
 }
 
+const DetectorPattern& SensorModel::detector_pattern() const {
+  DetectorPatternCache& cache = *detector_pattern_cache;
+  std::call_once(cache.built, [&] {
+    cache.pattern = build_detector_pattern(parameters.detector, grid.pixels_x * grid.pixels_y);
+  });
+  return cache.pattern;
+}
+
 std::shared_ptr<const SensorModel> resolve_sensor(const universe::SensorParameters& p) {
   auto model = std::make_shared<SensorModel>();
   model->parameters = p;

@@ -10,6 +10,7 @@
 #include "core/fidelity.hpp"
 #include "geometry/sample_grid.hpp"
 #include "radiometry/spectral_view.hpp"
+#include "sensor/detector.hpp"
 #include "sensor/otf.hpp"
 #include "sensor/point_source_model.hpp"
 #include "sensor/scene_convolution.hpp"
@@ -17,6 +18,12 @@
 #include "universe/sensor_parameters.hpp"
 
 namespace eoir::sensor {
+
+// The detector's fixed pattern (detector.hpp), built on first use, once.
+struct DetectorPatternCache {
+  std::once_flag built;
+  DetectorPattern pattern;
+};
 
 // The point-source model of a sensor, built on first use, once.
 struct PointSourceModelCache {
@@ -38,6 +45,10 @@ struct SensorModel {
   // sensor's properties resolves a new model, Engine::sensor_model).
   const PointSourceModel& point_sources() const;
   std::shared_ptr<PointSourceModelCache> point_source_cache = std::make_shared<PointSourceModelCache>();
+  // The detector stage's fixed pattern (detector_model on), built by the
+  // first call from the parameters (thread-safe), shared like the above.
+  const DetectorPattern& detector_pattern() const;
+  std::shared_ptr<DetectorPatternCache> detector_pattern_cache = std::make_shared<DetectorPatternCache>();
   // The scene convolution's transform size, OTF grid and buffer
   // (scene_convolution.hpp), made by the first frame, shared like the above.
   std::shared_ptr<SceneConvolutionCache> scene_convolution = std::make_shared<SceneConvolutionCache>();

@@ -51,6 +51,16 @@ constexpr double max_reference_value = 1.0e10;
 // the pixel grid at a cost growing with the square of that ratio (about 3 s
 // at 1e4, hours at 1e6). Checked when the sensor is evaluated.
 constexpr double max_pitch_diffraction_widths = 1.0e4;
+// The detector stage (sensor/detector.hpp): a full well of up to 1e9
+// electrons (beyond any CCD or CMOS well), ADCs of 1 to 32 bits (the ADU
+// image is unsigned 32-bit), a gain of 1e-6 to 1e6 e-/ADU.
+constexpr double max_full_well_e = 1.0e9;
+constexpr double min_gain_e_per_adu = 1.0e-6;
+constexpr double max_gain_e_per_adu = 1.0e6;
+constexpr std::int64_t min_adc_bits = 1;
+constexpr std::int64_t max_adc_bits = 32;
+constexpr double max_dark_current_e_s = 1.0e9;
+constexpr double max_read_noise_e = 1.0e6;
 }  // namespace sensor_bounds
 
 // Whether reference pairs are irradiance (NEI/SEI) or radiance (NER/SER).
@@ -59,6 +69,24 @@ enum class ApertureQuantity : int { irradiance = 0, radiance = 1 };
 // How display images map values to bytes (sensor/display.hpp; issue 21 item 6).
 enum class DisplayStretch : int { linear = 0, log = 1, asinh = 2, zscale = 3 };
 const std::vector<std::string>& display_stretch_names();  // "linear", "log", "asinh", "zscale"
+
+// The optional detector stage after eq. 55 (beyond spec 5; sensor/detector.hpp).
+// Off by default: the spec's Gaussian noise and saturation level stay.
+struct DetectorParameters {
+  bool enabled = false;                   // detector_model
+  double dark_current_e_s = 0.0;          // mean dark current per pixel, e-/s
+  double bias_adu = 1000.0;               // offset added before the ADC, ADU
+  double gain_e_per_adu = 1.0;            // conversion gain, e-/ADU
+  double read_noise_e = 0.0;              // read noise sigma, e-
+  double full_well_e = 1.0e5;             // full-well capacity, e-
+  std::int64_t adc_bits = 16;             // ADC bit depth: ADU in [0, 2^bits - 1]
+  double prnu_fraction = 0.0;             // pixel response non-uniformity, relative sigma
+  double dsnu_e_s = 0.0;                  // dark-signal non-uniformity, sigma of the dark current, e-/s
+  double hot_pixel_fraction = 0.0;        // fraction of pixels with hot_pixel_dark_current_e_s
+  double hot_pixel_dark_current_e_s = 1.0e4;
+  double dead_pixel_fraction = 0.0;       // fraction of pixels with no photo response
+  std::int64_t pattern_seed = 1;          // seed of the fixed pattern (PRNU, DSNU, hot and dead pixels)
+};
 
 // Hufnagel OQF presets of spec 5.6.1.2, or a custom W_rms.
 enum class ImageQuality : int { diffraction_limited = 0, negligible = 1, mild = 2, moderate = 3, custom = 4 };
@@ -94,6 +122,7 @@ struct SensorParameters {
   bool display_agc = true;             // automatic gain control (spec 4.1.2)
   std::int64_t display_gain_step = 0;  // without AGC: gain 30^step (spec 4.1.2)
   DisplayStretch display_stretch = DisplayStretch::linear;
+  DetectorParameters detector;
   // Speed against accuracy (core/fidelity.hpp).
   Fidelity fidelity;
 };

@@ -137,6 +137,46 @@ const std::vector<Spec>& sensor_properties() {
         "Display stretch of both display images (issue 21): linear, log, asinh (of the AGC or gain range), or "
         "zscale (IRAF's automatic limits, linear); saturated pixels show white",
         [](P& p) -> auto& { return p.display_stretch; }, display_stretch_names()));
+    // The optional detector stage after eq. 55 (sensor/detector.hpp; beyond spec 5).
+    namespace b = sensor_bounds;
+    t.push_back(bool_property<P>("detector_model",
+                                 "Detector stage after eq. 55: Poisson photon and dark noise, PRNU, DSNU, hot and dead "
+                                 "pixels, full well, read noise, gain, bias and ADC (ADU image); off keeps the spec's "
+                                 "Gaussian noise (eqs. 53-55)",
+                                 [](P& p) -> auto& { return p.detector.enabled; }));
+    t.push_back(number_property<P>("dark_current_e_s", "e-/s", "Detector: mean dark current per pixel",
+                                   [](P& p) -> auto& { return p.detector.dark_current_e_s; },
+                                   Range{0, b::max_dark_current_e_s}));
+    t.push_back(number_property<P>("bias_adu", "ADU", "Detector: bias (offset) added before the ADC",
+                                   [](P& p) -> auto& { return p.detector.bias_adu; }, Range{0, 4294967295.0}));
+    t.push_back(number_property<P>("gain_e_per_adu", "e-/ADU", "Detector: conversion gain",
+                                   [](P& p) -> auto& { return p.detector.gain_e_per_adu; },
+                                   Range{b::min_gain_e_per_adu, b::max_gain_e_per_adu}));
+    t.push_back(number_property<P>("read_noise_e", "e-", "Detector: read noise sigma (Gaussian)",
+                                   [](P& p) -> auto& { return p.detector.read_noise_e; },
+                                   Range{0, b::max_read_noise_e}));
+    t.push_back(number_property<P>("full_well_e", "e-", "Detector: full-well capacity (charge clips here)",
+                                   [](P& p) -> auto& { return p.detector.full_well_e; },
+                                   Range{0, b::max_full_well_e, true}));
+    t.push_back(integer_property<P>("adc_bits", "bits", "Detector: ADC bit depth (ADU clip at 2^bits - 1)",
+                                    [](P& p) -> auto& { return p.detector.adc_bits; },
+                                    Range{static_cast<double>(b::min_adc_bits), static_cast<double>(b::max_adc_bits)}));
+    t.push_back(number_property<P>("prnu_fraction", "", "Detector: pixel response non-uniformity, relative sigma",
+                                   [](P& p) -> auto& { return p.detector.prnu_fraction; }, Range{0, 1}));
+    t.push_back(number_property<P>("dsnu_e_s", "e-/s", "Detector: dark-signal non-uniformity, sigma of the dark current",
+                                   [](P& p) -> auto& { return p.detector.dsnu_e_s; },
+                                   Range{0, b::max_dark_current_e_s}));
+    t.push_back(number_property<P>("hot_pixel_fraction", "", "Detector: fraction of hot pixels",
+                                   [](P& p) -> auto& { return p.detector.hot_pixel_fraction; }, Range{0, 1}));
+    t.push_back(number_property<P>("hot_pixel_dark_current_e_s", "e-/s", "Detector: dark current of a hot pixel",
+                                   [](P& p) -> auto& { return p.detector.hot_pixel_dark_current_e_s; },
+                                   Range{0, b::max_dark_current_e_s}));
+    t.push_back(number_property<P>("dead_pixel_fraction", "", "Detector: fraction of dead pixels (no photo response)",
+                                   [](P& p) -> auto& { return p.detector.dead_pixel_fraction; }, Range{0, 1}));
+    t.push_back(integer_property<P>("detector_pattern_seed", "",
+                                    "Detector: seed of the fixed pattern (PRNU, DSNU, hot and dead pixels)",
+                                    [](P& p) -> auto& { return p.detector.pattern_seed; },
+                                    Range{0, 9007199254740992.0}));
     // The fidelity knobs, as properties of the sensor whose pair they tune.
     for (const PropertySpec<Fidelity>& k : fidelity_properties()) {
       const auto get = k.get;

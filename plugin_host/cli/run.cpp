@@ -38,6 +38,7 @@ constexpr double kDeg = kPi / 180.0;
 // Pixel units in FITS unit syntax (FITS 4.0 section 4.3; astropy reads both).
 constexpr const char* kBunitRadiance = "W cm-2 sr-1";
 constexpr const char* kBunitElectrons = "electron";
+constexpr const char* kBunitAdu = "adu";
 
 struct Stats {
   double min = 0, max = 0, mean = 0;
@@ -124,6 +125,20 @@ class RunContext {
                              const std::string& where) const {
     std::vector<double> v(static_cast<std::size_t>(in.width) * in.height);
     engine_.check(engine_.api().image_get(engine_.handle(), sensor.c_str(), kind, v.data(), v.size()), where);
+    return v;
+  }
+
+  // The detector stage's ADU image (C ABI 1.7), if the frame has one: the
+  // electron image's info carries the ADC's range only then.
+  bool has_adu(const eoir_image_info& electrons) const {
+    const eoir_api_v1& api = engine_.api();
+    return electrons.adc_max_adu > 0 &&
+           api.struct_size >= offsetof(eoir_api_v1, image_get_adu) + sizeof api.image_get_adu &&
+           api.image_get_adu != nullptr;
+  }
+  std::vector<std::uint32_t> adu(const std::string& sensor, const eoir_image_info& in, const std::string& where) const {
+    std::vector<std::uint32_t> v(static_cast<std::size_t>(in.width) * in.height);
+    engine_.check(engine_.api().image_get_adu(engine_.handle(), sensor.c_str(), v.data(), v.size()), where);
     return v;
   }
 
@@ -315,6 +330,14 @@ class RunContext {
       h.set_double("SATURATE", in.saturation_electrons, "[electron] saturation level");
     if (electrons && with_noise && in.read_noise_electrons > 0)
       h.set_double("RDNOISE", in.read_noise_electrons, "[electron] dark (read) noise sigma");
+    // The ADU image of the detector stage (README "Detector model").
+    if (std::string(bunit) == kBunitAdu) {
+      h.set_double("GAIN", in.gain_e_per_adu, "[electron/adu] conversion gain");
+      if (in.read_noise_electrons > 0) h.set_double("RDNOISE", in.read_noise_electrons, "[electron] read noise sigma");
+      h.set_double("SATURATE", in.saturation_adu, "[adu] a full well (at most DATAMAX)");
+      h.set_double("DATAMAX", in.adc_max_adu, "[adu] the ADC's largest value, 2^bits - 1");
+      h.set_double("BIASLEV", in.bias_adu, "[adu] bias added before the ADC");
+    }
     h.set_string("INSTRUME", s.name, "EOIR sensor");
     h.set_string("SENSOR", s.name, "EOIR sensor name");
     h.set_string("PARENT", s.parent, "object carrying the sensor");
@@ -364,6 +387,14 @@ class RunContext {
   static double pixel_scale_deg(const eoir_image_info& in) {
     const double* cd = in.astrometric_cd_deg;
     return std::sqrt(std::fabs(cd[0] * cd[3] - cd[1] * cd[2]));
+  }
+
+  // ADU: unsigned 16-bit integers (BZERO 32768) up to 16-bit ADCs, 32-bit (BZERO 2^31) beyond.
+  void write_fits(const std::string& path, const std::vector<std::uint32_t>& v, const eoir_image_info& in,
+                  const io::FitsHeader& h) const {
+    io::FitsWriteOptions o;
+    o.pixel_type = in.adc_max_adu <= 65535.0 ? io::FitsPixelType::UInt16 : io::FitsPixelType::UInt32;
+    io::write_fits_image(path, v.data(), in.width, in.height, h, o);
   }
 
   void write_fits(const std::string& path, const std::vector<double>& v, const eoir_image_info& in,
@@ -508,7 +539,7 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
       const std::string base = file_stem(s->name) + "_" + index_text + "_";
       const std::string f_rad = base + "radiance.fits", f_el = base + "electrons.fits",
                         f_mean = base + "mean_electrons.fits", f_scene = base + "scene.png",
-                        f_sensor = base + "sensor.png", f_truth = base + "truth.json",
+                        f_sensor = base + "sensor.png", f_truth = base + "truth.json", f_adu = base + "adu.fits",
                         f_region = base + "truth.reg";
 
       const eoir_image_info in_rad = ctx.info(s->name, EOIR_IMAGE_SCENE_RADIANCE, where + ": scene radiance");
@@ -522,6 +553,7 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
       const std::vector<std::uint8_t> sd = ctx.bytes(s->name, EOIR_IMAGE_SCENE_DISPLAY, in_sd, where + ": display");
       const std::vector<std::uint8_t> pd = ctx.bytes(s->name, EOIR_IMAGE_SENSOR_DISPLAY, in_pd, where + ": display");
 
+      const bool with_adu = ctx.has_adu(in_el);
       const ojson truth = ctx.truth(s->name, where + ": truth", in_el);
       const ojson warnings = frame_warnings(truth, rad, el, in_el);
       for (const auto& w : warnings)
@@ -534,6 +566,11 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
                        ctx.header(*s, i, in_el, "sensor_electrons", kBunitElectrons));
         ctx.write_fits((dir / f_mean).string(), mean, in_mean,
                        ctx.header(*s, i, in_mean, "sensor_mean", kBunitElectrons));
+        if (with_adu) {
+          const eoir_image_info in_adu = ctx.info(s->name, EOIR_IMAGE_SENSOR_ADU, where + ": sensor ADU");
+          ctx.write_fits((dir / f_adu).string(), ctx.adu(s->name, in_adu, where + ": ADU"), in_adu,
+                         ctx.header(*s, i, in_adu, "sensor_adu", kBunitAdu));
+        }
         io::write_png_gray8((dir / f_scene).string(), sd.data(), in_sd.width, in_sd.height);
         io::write_png_gray8((dir / f_sensor).string(), pd.data(), in_pd.width, in_pd.height);
         const std::string truth_text = truth.dump(2) + "\n";
@@ -576,6 +613,7 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
       fr["files"] = {{"radiance", f_rad},   {"electrons", f_el},  {"mean_electrons", f_mean},
                      {"scene_png", f_scene}, {"sensor_png", f_sensor}, {"truth", f_truth},
                      {"regions", f_region}};
+      if (with_adu) fr["files"]["adu"] = f_adu;
       fr["scene_size"] = {{"width", in_rad.width}, {"height", in_rad.height}};
       fr["sensor_size"] = {{"width", in_el.width}, {"height", in_el.height}};
       fr["boresight_ra_deg"] = in_el.boresight_ra_deg;
@@ -680,6 +718,8 @@ io::FitsHeader frame_fits_header(Engine& engine, const Scenario& sc, const Senso
       return ctx.header(s, index, in, "sensor_electrons", kBunitElectrons);
     case EOIR_IMAGE_SENSOR_MEAN:
       return ctx.header(s, index, in, "sensor_mean", kBunitElectrons);
+    case EOIR_IMAGE_SENSOR_ADU:
+      return ctx.header(s, index, in, "sensor_adu", kBunitAdu);
     default:
       throw EngineError(where + ": image kind " + std::to_string(kind) + " is not written to FITS",
                         EOIR_ERR_OUT_OF_RANGE);

@@ -69,7 +69,8 @@ EOIR_API eoir_status eoir_host_session_times(eoir_host_session session, const ch
 EOIR_API eoir_status eoir_host_session_set_time(eoir_host_session session, const char* iso_utc);
 /* The header cards `eoir run` writes into the FITS file of the last frame
  * rendered for `sensor` (image_kind EOIR_IMAGE_SCENE_RADIANCE,
- * _SENSOR_ELECTRONS or _SENSOR_MEAN): a JSON array of [key, value, comment]
+ * _SENSOR_ELECTRONS, _SENSOR_MEAN, or _SENSOR_ADU of a frame rendered with
+ * detector_model on): a JSON array of [key, value, comment]
  * (value a string, number, integer or bool; COMMENT/HISTORY cards have
  * key "COMMENT"/"HISTORY" and the text as value). */
 EOIR_API eoir_status eoir_host_session_fits_header(eoir_host_session session, const char* sensor,

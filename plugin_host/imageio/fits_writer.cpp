@@ -129,6 +129,9 @@ void write_image(const std::string& path, const std::vector<const In*>& planes, 
     throw ImageIoError("FITS " + path + ": image size " + std::to_string(width) + " x " + std::to_string(height) +
                        " must be at least 1 x 1");
   const bool f64 = options.pixel_type == FitsPixelType::Float64;
+  const bool u16 = options.pixel_type == FitsPixelType::UInt16;
+  const bool u32 = options.pixel_type == FitsPixelType::UInt32;
+  const int image_type = f64 ? DOUBLE_IMG : u16 ? USHORT_IMG : u32 ? ULONG_IMG : FLOAT_IMG;
 
   MemFits m;
   m.size = 2880 * 4;
@@ -139,7 +142,7 @@ void write_image(const std::string& path, const std::vector<const In*>& planes, 
   if (st) throw_fits(st, "FITS " + path + ": create in memory");
 
   LONGLONG naxes[3] = {width, height, static_cast<LONGLONG>(planes.size())};
-  fits_create_imgll(m.f, f64 ? DOUBLE_IMG : FLOAT_IMG, cube ? 3 : 2, naxes, &st);
+  fits_create_imgll(m.f, image_type, cube ? 3 : 2, naxes, &st);
   if (st) throw_fits(st, "FITS " + path + ": create image");
 
   for (const auto& c : header.cards()) {
@@ -171,13 +174,28 @@ void write_image(const std::string& path, const std::vector<const In*>& planes, 
 
   // Rows bottom-up: FITS row j (1-based) = caller row height - j.
   const auto w = static_cast<std::size_t>(width);
-  std::vector<float> row32(f64 ? 0 : w);
+  std::vector<float> row32(f64 || u16 || u32 ? 0 : w);
   std::vector<double> row64(f64 ? w : 0);
+  std::vector<unsigned short> row_u16(u16 ? w : 0);
+  std::vector<unsigned int> row_u32(u32 ? w : 0);
   for (std::size_t plane = 0; plane < planes.size(); ++plane)
   for (std::int64_t j = 1; j <= height; ++j) {
     const In* src = planes[plane] + static_cast<std::size_t>(height - j) * w;
     LONGLONG first[3] = {1, j, static_cast<LONGLONG>(plane + 1)};
-    if (f64) {
+    if (u16 || u32) {
+      // Unsigned integers: BITPIX 16 or 32 with BZERO 2^15 or 2^31 (FITS 4.0 section 5.2.5).
+      const double top = u16 ? 65535.0 : 4294967295.0;
+      for (std::size_t i = 0; i < w; ++i) {
+        const double v = static_cast<double>(src[i]);
+        if (!(v >= 0.0 && v <= top && v == std::floor(v)))
+          throw ImageIoError("FITS " + path + ": pixel value " + std::to_string(v) + " is not an unsigned " +
+                             (u16 ? "16" : "32") + "-bit integer");
+        if (u16) row_u16[i] = static_cast<unsigned short>(v);
+        else row_u32[i] = static_cast<unsigned int>(v);
+      }
+      if (u16) fits_write_pixll(m.f, TUSHORT, first, static_cast<LONGLONG>(w), row_u16.data(), &st);
+      else fits_write_pixll(m.f, TUINT, first, static_cast<LONGLONG>(w), row_u32.data(), &st);
+    } else if (f64) {
       for (std::size_t i = 0; i < w; ++i) row64[i] = static_cast<double>(src[i]);
       fits_write_pixll(m.f, TDOUBLE, first, static_cast<LONGLONG>(w), row64.data(), &st);
     } else {
@@ -307,6 +325,11 @@ void write_fits_image(const std::string& path, const float* pixels, std::int64_t
 void write_fits_image(const std::string& path, const double* pixels, std::int64_t width, std::int64_t height,
                       const FitsHeader& header, const FitsWriteOptions& options) {
   write_image(path, std::vector<const double*>{pixels}, width, height, header, options, false);
+}
+
+void write_fits_image(const std::string& path, const std::uint32_t* pixels, std::int64_t width, std::int64_t height,
+                      const FitsHeader& header, const FitsWriteOptions& options) {
+  write_image(path, std::vector<const std::uint32_t*>{pixels}, width, height, header, options, false);
 }
 
 void write_fits_cube(const std::string& path, const std::vector<const double*>& planes, std::int64_t width,

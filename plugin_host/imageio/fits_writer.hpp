@@ -24,7 +24,9 @@
 
 namespace eoir::imageio {
 
-enum class FitsPixelType { Float32, Float64 };  // BITPIX -32 / -64
+// BITPIX -32 / -64; unsigned integers as BITPIX 16 / 32 with BZERO 32768 /
+// 2147483648 (FITS 4.0 section 5.2.5), e.g. ADU images.
+enum class FitsPixelType { Float32, Float64, UInt16, UInt32 };
 
 // Header cards in the order they are to be written (after the mandatory
 // SIMPLE/BITPIX/NAXISn/EXTEND cards, which the writer owns). Keys are
@@ -96,6 +98,10 @@ void write_fits_image(const std::string& path, const float* pixels, std::int64_t
                       const FitsHeader& header, const FitsWriteOptions& options = {});
 void write_fits_image(const std::string& path, const double* pixels, std::int64_t width, std::int64_t height,
                       const FitsHeader& header, const FitsWriteOptions& options = {});
+// Unsigned integer pixels (options.pixel_type UInt16 or UInt32; a value past
+// the type's range throws).
+void write_fits_image(const std::string& path, const std::uint32_t* pixels, std::int64_t width, std::int64_t height,
+                      const FitsHeader& header, const FitsWriteOptions& options);
 
 // A data cube: `planes` images of width x height (each row 0 = top, flipped
 // as above), NAXIS3 = planes.size(), followed by an optional binary table

@@ -16,6 +16,7 @@
 #include <limits>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "fits_writer.hpp"
@@ -213,6 +214,38 @@ TEST(FitsWriter, Float64IsExactAndFloatInputAccepted) {
     EXPECT_EQ(back[0], 5.5f);  // first stored row = caller's bottom row
     EXPECT_EQ(back[4], 1.5f);
   }
+}
+
+// ADU images: unsigned integers as BITPIX 16 / 32 with BZERO 2^15 / 2^31
+// (FITS 4.0 section 5.2.5), read back exactly, including both ends of the range.
+TEST(FitsWriter, UnsignedIntegersWithBzero) {
+  TempDir dir;
+  const int w = 3, h = 2;
+  const std::vector<std::uint32_t> img16{0, 1, 32767, 32768, 65534, 65535};
+  const std::vector<std::uint32_t> img32{0, 65536, 2147483647u, 2147483648u, 4294967294u, 4294967295u};
+  FitsWriteOptions opt;
+  opt.pixel_type = FitsPixelType::UInt16;
+  write_fits_image(dir.file("u16.fits"), img16.data(), w, h, FitsHeader{}, opt);
+  opt.pixel_type = FitsPixelType::UInt32;
+  write_fits_image(dir.file("u32.fits"), img32.data(), w, h, FitsHeader{}, opt);
+  for (const auto& [name, img, bitpix, bzero] :
+       {std::tuple{"u16.fits", img16, 16, 32768.0}, std::tuple{"u32.fits", img32, 32, 2147483648.0}}) {
+    FitsReader rd(dir.file(name));
+    int stored = 0;
+    fits_get_img_type(rd.f, &stored, &rd.st);
+    EXPECT_EQ(stored, bitpix) << name;
+    EXPECT_EQ(rd.dbl("BZERO"), bzero) << name;
+    std::vector<unsigned int> back(6);
+    unsigned int nulval = 0;
+    int anynul = 0;
+    fits_read_img(rd.f, TUINT, 1, 6, &nulval, back.data(), &anynul, &rd.st);
+    ASSERT_EQ(rd.st, 0) << name;
+    for (int j = 0; j < h; ++j)
+      for (int c = 0; c < w; ++c) EXPECT_EQ(back[j * w + c], img[(h - 1 - j) * w + c]) << name;
+  }
+  // A value past 16 bits is refused, naming it.
+  opt.pixel_type = FitsPixelType::UInt16;
+  EXPECT_THROW(write_fits_image(dir.file("bad.fits"), img32.data(), w, h, FitsHeader{}, opt), ImageIoError);
 }
 
 TEST(FitsWriter, AtomicReplaceAndErrors) {

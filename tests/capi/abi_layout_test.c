@@ -78,6 +78,10 @@ int main(void) {
   CHECK_LAYOUT(eoir_image_info, observer_earth_fixed_m, 200);
   CHECK_LAYOUT(eoir_image_info, saturation_electrons, 224);
   CHECK_LAYOUT(eoir_image_info, read_noise_electrons, 232);
+  CHECK_LAYOUT(eoir_image_info, gain_e_per_adu, 240); /* 1.7 */
+  CHECK_LAYOUT(eoir_image_info, bias_adu, 248);
+  CHECK_LAYOUT(eoir_image_info, saturation_adu, 256);
+  CHECK_LAYOUT(eoir_image_info, adc_max_adu, 264);
   CHECK_SIZE(eoir_pick, 144);
   CHECK_LAYOUT(eoir_pick, hit, 4);
   CHECK_LAYOUT(eoir_pick, object, 8);
@@ -122,5 +126,6 @@ int main(void) {
   CHECK_LAYOUT(eoir_api_v1, sensor_point_azel, 400);  /* 1.5 */
   CHECK_LAYOUT(eoir_api_v1, sensor_point_at, 408);
   CHECK_LAYOUT(eoir_api_v1, pick_term_get, 416);  /* 1.6 */
+  CHECK_LAYOUT(eoir_api_v1, image_get_adu, 424);  /* 1.7 */
   return CHECK_SUMMARY();
 }

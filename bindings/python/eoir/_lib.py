@@ -86,6 +86,7 @@ EOIR_IMAGE_SCENE_DISPLAY = 2
 EOIR_IMAGE_SENSOR_ELECTRONS = 3
 EOIR_IMAGE_SENSOR_MEAN = 4
 EOIR_IMAGE_SENSOR_DISPLAY = 5
+EOIR_IMAGE_SENSOR_ADU = 6  # 1.7
 
 # ------------------------------------------------------------------- structs
 eoir_status = c_int32
@@ -155,7 +156,11 @@ class eoir_image_info(Structure):
                 ("observer_velocity_m_s", c_double * 3),
                 ("observer_earth_fixed_m", c_double * 3),
                 ("saturation_electrons", c_double),
-                ("read_noise_electrons", c_double)]
+                ("read_noise_electrons", c_double),
+                ("gain_e_per_adu", c_double),  # appended in 1.7 (the detector stage)
+                ("bias_adu", c_double),
+                ("saturation_adu", c_double),
+                ("adc_max_adu", c_double)]
 
 
 class eoir_pick(Structure):
@@ -268,6 +273,7 @@ _SIGNATURES = {
     "eoir_image_info_get": (eoir_status, [eoir_engine, _c_str, c_int32, POINTER(eoir_image_info)]),
     "eoir_image_get": (eoir_status, [eoir_engine, _c_str, c_int32, _c_dblp, c_size_t]),
     "eoir_image_get_bytes": (eoir_status, [eoir_engine, _c_str, c_int32, POINTER(ctypes.c_uint8), c_size_t]),
+    "eoir_image_get_adu": (eoir_status, [eoir_engine, _c_str, POINTER(ctypes.c_uint32), c_size_t]),
     "eoir_pick_get": (eoir_status, [eoir_engine, _c_str, c_int32, c_uint32, c_uint32, POINTER(eoir_pick),
                                     _c_dblp, _c_dblp, c_size_t, _c_sizep]),
     "eoir_snr_constraint": (eoir_status, [eoir_engine, _c_str, _c_str, POINTER(eoir_time), _c_dblp]),
@@ -353,7 +359,9 @@ class eoir_api_v1(Structure):
                 ("sensor_point_azel", _fn("eoir_sensor_point_azel")),
                 ("sensor_point_at", _fn("eoir_sensor_point_at")),
                 # appended in 1.6 (eq. 9's terms)
-                ("pick_term_get", _fn("eoir_pick_term_get"))]
+                ("pick_term_get", _fn("eoir_pick_term_get")),
+                # appended in 1.7 (the detector stage)
+                ("image_get_adu", _fn("eoir_image_get_adu"))]
 
 
 # ------------------------------------------------------------------- loading

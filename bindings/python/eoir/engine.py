@@ -78,6 +78,7 @@ IMAGE_KINDS = {
     "sensor_electrons": _lib.EOIR_IMAGE_SENSOR_ELECTRONS,
     "sensor_mean": _lib.EOIR_IMAGE_SENSOR_MEAN,
     "sensor_display": _lib.EOIR_IMAGE_SENSOR_DISPLAY,
+    "sensor_adu": _lib.EOIR_IMAGE_SENSOR_ADU,
 }
 _IMAGE_KIND_NAMES = {v: k for k, v in IMAGE_KINDS.items()}
 _DISPLAY_KINDS = (_lib.EOIR_IMAGE_SCENE_DISPLAY, _lib.EOIR_IMAGE_SENSOR_DISPLAY)
@@ -770,7 +771,11 @@ class Engine(_Closing):
         top); observer_position_m, observer_velocity_m_s (J2000) and
         observer_earth_fixed_m (ITRS) of the sensor at the middle;
         saturation_electrons and read_noise_electrons of the sensor images
-        (0 where saturation or noise is off)."""
+        (0 where saturation or noise is off; with the sensor's detector_model
+        on, its full well and read noise); gain_e_per_adu, bias_adu,
+        saturation_adu and adc_max_adu of the detector stage (0 with it off;
+        README "Detector model"). "sensor_adu" raises NoStateError unless
+        the frame was rendered with detector_model on."""
         code = _lookup(IMAGE_KINDS, kind, "image kind")
         info = self._image_info(sensor, code)
 
@@ -803,13 +808,19 @@ class Engine(_Closing):
             "observer_earth_fixed_m": np.array(list(info.observer_earth_fixed_m)),
             "saturation_electrons": float(info.saturation_electrons),
             "read_noise_electrons": float(info.read_noise_electrons),
+            "gain_e_per_adu": float(info.gain_e_per_adu),
+            "bias_adu": float(info.bias_adu),
+            "saturation_adu": float(info.saturation_adu),
+            "adc_max_adu": float(info.adc_max_adu),
         }
 
     def image(self, sensor: str, kind) -> np.ndarray:
         """The last frame's image of a kind as a (height, width) array, row 0
         at the top as seen on the sky: float64 for "scene_radiance"
         (W/(cm^2 sr)), "sensor_electrons" and "sensor_mean" (electrons);
-        uint8 for "scene_display" and "sensor_display"."""
+        uint8 for "scene_display" and "sensor_display"; uint32 for
+        "sensor_adu" (the detector stage's ADU, sensor property
+        detector_model; NoStateError with it off)."""
         code = _lookup(IMAGE_KINDS, kind, "image kind")
         info = self._image_info(sensor, code)
         h, w = int(info.height), int(info.width)
@@ -818,6 +829,10 @@ class Engine(_Closing):
             out = np.zeros((h, w), dtype=np.uint8)
             ptr = out.ctypes.data_as(ctypes.POINTER(ctypes.c_uint8))
             check(lib.eoir_image_get_bytes(self.handle, s, code, ptr, out.size))
+        elif code == _lib.EOIR_IMAGE_SENSOR_ADU:
+            out = np.zeros((h, w), dtype=np.uint32)
+            ptr = out.ctypes.data_as(ctypes.POINTER(ctypes.c_uint32))
+            check(lib.eoir_image_get_adu(self.handle, s, ptr, out.size))
         else:
             out = np.zeros((h, w), dtype=np.float64)
             ptr = out.ctypes.data_as(ctypes.POINTER(c_double))

@@ -64,7 +64,31 @@ def test_shapes_and_dtypes(engine):
         info = engine.image_info("Cam", kind)
         assert (info["height"], info["width"]) == shape, kind
         assert info["kind"] == kind
-    assert set(eoir.IMAGE_KINDS) == set(shapes)
+    assert set(eoir.IMAGE_KINDS) == set(shapes) | {"sensor_adu"}  # with detector_model on: below
+
+
+def test_detector_adu_image(engine):
+    """The detector stage (README "Detector model"): an unsigned ADU image
+    beside the electrons, ADU = clamp(floor(e / gain + bias + 1/2), 0,
+    2^bits - 1), and no ADU image with the stage off."""
+    build(engine)
+    engine.render("Cam")
+    with pytest.raises(eoir.NoStateError):
+        engine.image("Cam", "sensor_adu")
+    build_detector = dict(detector_model=True, gain_e_per_adu=3.0, bias_adu=200.0, read_noise_e=4.0,
+                          full_well_e=5.0e4, adc_bits=12, dark_current_e_s=50.0)
+    for name, value in build_detector.items():
+        engine.set("Cam", name, value)
+    engine.render("Cam")
+    adu = engine.image("Cam", "sensor_adu")
+    e = engine.image("Cam", "sensor_electrons")
+    assert adu.dtype == np.uint32 and adu.shape == (H, W)
+    np.testing.assert_array_equal(adu, np.clip(np.floor(e / 3.0 + 200.0 + 0.5), 0, 4095))
+    info = engine.image_info("Cam", "sensor_adu")
+    assert info["unit"] == "adu"
+    assert info["gain_e_per_adu"] == 3.0 and info["bias_adu"] == 200.0 and info["adc_max_adu"] == 4095.0
+    assert info["saturation_adu"] == 4095.0  # 5e4 / 3 + 200 is past 2^12 - 1
+    assert info["saturation_electrons"] == 5.0e4 and info["read_noise_electrons"] == 4.0
 
 
 def test_image_info_fields(engine):

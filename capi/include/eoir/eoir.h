@@ -45,7 +45,7 @@ extern "C" {
 
 /* ------------------------------------------------------------------ version */
 #define EOIR_VERSION_MAJOR 1
-#define EOIR_VERSION_MINOR 6
+#define EOIR_VERSION_MINOR 7
 #define EOIR_VERSION_PATCH 0
 
 /* Returns EOIR_VERSION_MAJOR*10000 + MINOR*100 + PATCH of the loaded library. */
@@ -351,13 +351,15 @@ typedef enum eoir_image_kind {
   EOIR_IMAGE_SCENE_DISPLAY = 2,   /* display bytes of the scene view (spec 4.1.2), one per sample */
   EOIR_IMAGE_SENSOR_ELECTRONS = 3, /* total response with noise and saturation (eq. 55), electrons */
   EOIR_IMAGE_SENSOR_MEAN = 4,     /* noise-free response r_L + r_E (eqs. 49-50), electrons */
-  EOIR_IMAGE_SENSOR_DISPLAY = 5   /* display bytes of the sensor view, one per pixel */
+  EOIR_IMAGE_SENSOR_DISPLAY = 5,  /* display bytes of the sensor view, one per pixel */
+  EOIR_IMAGE_SENSOR_ADU = 6       /* 1.7: the detector stage's ADU per pixel (sensor property detector_model;
+                                     README "Detector model"); eoir_image_get_adu, or eoir_image_get as doubles */
 } eoir_image_kind;
 
 /* Renders the frame of `sensor` at the engine time (ray casting, shading,
  * band integration, OTF convolution, point sources, noise from the engine's
  * seeded generator). The frame is kept until the next render of that sensor.
- * Settings: sensor properties noise_enabled, display_agc, display_gain_step, display_stretch,
+ * Settings: sensor properties noise_enabled, detector_model (1.7), display_agc, display_gain_step, display_stretch,
  * the fidelity knobs (scene_mode, band_integration, samples_per_pixel, ...;
  * README "Fidelity") and objects' patch_size_m. The host's progress callback
  * is called between stages; a non-zero return cancels the render
@@ -402,6 +404,12 @@ typedef struct eoir_image_info {
   double observer_earth_fixed_m[3]; /* the same position in Earth-fixed axes (ITRS, WGS84) */
   double saturation_electrons;      /* sensor images: the saturation level (spec 5.11.5); 0 if it is off */
   double read_noise_electrons;      /* sensor images: the dark noise sigma (spec 5.11.4); 0 if noise is off */
+  /* appended in 1.7; with detector_model on, saturation_electrons is the full well and
+     read_noise_electrons the read noise (0 if noise is off); all four are 0 with it off */
+  double gain_e_per_adu;            /* detector: conversion gain, electrons per ADU */
+  double bias_adu;                  /* detector: bias added before the ADC, ADU */
+  double saturation_adu;            /* detector: the ADU of a full well, at most adc_max_adu */
+  double adc_max_adu;               /* detector: 2^adc_bits - 1 */
 } eoir_image_info;
 
 EOIR_API eoir_status eoir_image_info_get(eoir_engine engine, const char* sensor, int32_t kind,
@@ -412,6 +420,9 @@ EOIR_API eoir_status eoir_image_get(eoir_engine engine, const char* sensor, int3
                                     size_t capacity);
 EOIR_API eoir_status eoir_image_get_bytes(eoir_engine engine, const char* sensor, int32_t kind, uint8_t* bytes,
                                           size_t capacity);
+/* 1.7: the detector stage's ADU image (width*height values, EOIR_IMAGE_SENSOR_ADU) into a caller buffer;
+ * EOIR_ERR_NO_STATE if no frame was rendered or the frame was rendered with detector_model off. */
+EOIR_API eoir_status eoir_image_get_adu(eoir_engine engine, const char* sensor, uint32_t* adu, size_t capacity);
 
 /* "For Each Pixel Pick" (spec 6.2.1): what a scene sample (space 0) or a
  * sensor pixel (space 1, its centre sample) sees in the last frame. */
@@ -614,6 +625,8 @@ typedef struct eoir_api_v1 {
   /* appended in 1.6 (eq. 9's terms) */
   eoir_status (*pick_term_get)(eoir_engine, const char*, int32_t, uint32_t, uint32_t, int32_t, double*, size_t,
                                size_t*);
+  /* appended in 1.7 (the detector stage) */
+  eoir_status (*image_get_adu)(eoir_engine, const char*, uint32_t*, size_t);
 } eoir_api_v1;
 
 /* The plugin's one entry point (resolved by name with dlsym). Returns, in

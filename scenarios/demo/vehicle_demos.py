@@ -227,13 +227,22 @@ def main():
     for k, v in rows:
         print(f"  {k}: {v}")
 
-    fig, ax = plt.subplots(1, 2, figsize=(11, 5.4))
-    top = np.percentile(scene, 99.9)
-    ax[0].imshow(scene, cmap="gray", vmin=0, vmax=top)
-    ax[0].set_title("scene radiance (bitmap mode, 0.45-0.75 um)")
+    # The square about the aircraft and its shadow, with a margin.
+    rows_, cols_ = np.nonzero(shadow | aircraft)
+    if rows_.size:
+        half = max(rows_.ptp(), cols_.ptp()) // 2 + max(8, scene.shape[0] // 16)
+        cy, cx = (rows_.min() + rows_.max()) // 2, (cols_.min() + cols_.max()) // 2
+        y0, x0 = max(0, cy - half), max(0, cx - half)
+        crop = (slice(y0, min(scene.shape[0], cy + half)), slice(x0, min(scene.shape[1], cx + half)))
+    else:
+        crop = (slice(None), slice(None))
+    metres = 2 * 490e3 * math.tan(math.radians(0.06)) / scene.shape[1]  # per sample at the aircraft
+    fig, ax = plt.subplots(1, 2, figsize=(11, 5.6))
+    ax[0].imshow(scene[crop], cmap="gray", vmin=0, vmax=scene.max())
+    ax[0].set_title(f"scene radiance (bitmap mode, 0.45-0.75 um), {metres:.1f} m samples", fontsize=9)
     lim = max(abs(diff).max(), 1e-30)
-    ax[1].imshow(diff, cmap="RdBu_r", vmin=-lim, vmax=lim)
-    ax[1].set_title("minus the same without the aircraft")
+    ax[1].imshow(diff[crop], cmap="RdBu_r", vmin=-lim, vmax=lim)
+    ax[1].set_title("minus the same without the aircraft: aircraft red, shadow blue", fontsize=9)
     for a in ax:
         a.set_xticks([])
         a.set_yticks([])

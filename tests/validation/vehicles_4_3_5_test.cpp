@@ -1,7 +1,7 @@
 // Aircraft and ground vehicles (issue 22 item 3; spec 4.3.4, 4.3.5), through
 // the real host path (scenarios/validation/vehicle_shadow.json: a black box
 // 6 x 2.5 x 3 m, heading 30 deg by its heading_pitch_roll attitude, on the
-// WGS84 ellipsoid at 0 N 0 E, the Sun ~37 deg high; Sensor1 1000 m straight
+// WGS84 ellipsoid at 0 N 0 E, the Sun 35.6 deg high; Sensor1 1000 m straight
 // above it, 4.7 cm per scene sample, smooth mode, vacuum).
 //
 // 1. The shadow it casts is the shape of its parts. Independent values: the
@@ -21,13 +21,16 @@
 //    spectrum: its spectral radiance over a gray Lambertian vehicle's of
 //    reflectance 1 at the same place, interval by interval, is the table's
 //    interval mean times one geometric constant (eq. 1's BRDF shape; within
-//    1e-3), read here from the data file.
+//    1e-3), read here from the data file. soil_camouflage is built only where
+//    the Dirt block's base spectra are installed; where it is not, the build
+//    must say so and the engine must refuse the name.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -212,7 +215,8 @@ TEST(Vehicles_4_3_5, ShadowedGroundSeesTheSkyOnly) {
   for (std::size_t i = 0; i < surface_s.size(); ++i) {
     ASSERT_GT(sky_s[i], 0);
     EXPECT_NEAR(surface_s[i] / sky_s[i], 1.0, 1e-9) << "interval " << i;
-    EXPECT_NEAR(sky_l[i] / sky_s[i], 1.0, 1e-9) << "interval " << i;
+    // (the Sun's zenith angle differs by ~1.3e-6 rad over the ~8 m between them)
+    EXPECT_NEAR(sky_l[i] / sky_s[i], 1.0, 1e-5) << "interval " << i;
     EXPECT_GT(surface_l[i], 2.0 * sky_l[i]) << "interval " << i;  // the Sun's light besides
   }
 }
@@ -242,7 +246,16 @@ TEST(Vehicles_4_3_5, CamouflageMaterialsReflectTheirTables) {
   for (const char* name : {"mixed_forest_camouflage", "soil_camouflage", "water_camouflage"}) {
     SCOPED_TRACE(name);
     std::ifstream in(std::string(EOIR_DATA_DIR) + "/materials/" + name + ".json");
-    ASSERT_TRUE(in.good());
+    if (!in.good()) {
+      // Built only where its base spectra are installed (soil_camouflage needs
+      // the Dirt block's: data/materials/README.md); then the engine refuses it.
+      std::ifstream status(std::string(EOIR_DATA_DIR) + "/materials/land_cover_status.txt");
+      const std::string text((std::istreambuf_iterator<char>(status)), std::istreambuf_iterator<char>());
+      EXPECT_NE(text.find(std::string("NOT BUILT  ") + name), std::string::npos);
+      EXPECT_ANY_THROW(render_top(std::string("\"material\": \"") + name + "\""));
+      std::printf("%s: not built here (base spectra missing), refused by the engine\n", name);
+      continue;
+    }
     const nlohmann::json m = nlohmann::json::parse(in);
     v::Table table;
     table.x = m.at("wavelength_um").get<std::vector<double>>();

@@ -49,7 +49,8 @@ class Engine {
   void add_sensor(const std::string& name, const std::string& parent);
   // Removes an object and the sensors attached to it (never the Sun).
   void remove_object(const std::string& name);
-  // frame: 0 J2000, 1 Earth-fixed, 2 geodetic (universe/object_motion.hpp).
+  // frame: 0 J2000, 1 Earth-fixed, 2 geodetic, 3 geodetic with local
+  // north-east-down axes (universe/object_motion.hpp).
   void push_state(const std::string& name, const EngineTime& epoch, int frame, const double position[3],
                   const double velocity[3], const double attitude_wxyz[4],
                   const double angular_velocity_rad_s[3] = nullptr);

@@ -154,10 +154,17 @@ EOIR_API eoir_status eoir_object_get_state(eoir_engine engine, const char* name,
     const universe::Kinematics k = universe::kinematics_at(e.universe(), o, e.time());
     frames::Vec3 r = k.position_m, v = k.velocity_m_s;
     Eigen::Quaterniond q = k.attitude;
-    if (state->frame == EOIR_FRAME_EARTH_FIXED || state->frame == EOIR_FRAME_GEODETIC) {
+    frames::Mat3 to_ned = frames::Mat3::Identity();  // Earth-fixed -> the asked axes
+    if (state->frame == EOIR_FRAME_EARTH_FIXED || state->frame == EOIR_FRAME_GEODETIC ||
+        state->frame == EOIR_FRAME_GEODETIC_NED) {
       frames::j2000_to_earth_fixed(e.time(), k.position_m, k.velocity_m_s, r, v);
       q = Eigen::Quaterniond(frames::j2000_to_earth_fixed(e.time())) * k.attitude;
-      if (state->frame == EOIR_FRAME_GEODETIC) r = frames::earth_fixed_to_geodetic(r);
+      if (state->frame != EOIR_FRAME_EARTH_FIXED) r = frames::earth_fixed_to_geodetic(r);
+      if (state->frame == EOIR_FRAME_GEODETIC_NED) {
+        to_ned = frames::ned_to_earth_fixed(r.x(), r.y()).transpose();
+        v = to_ned * v;
+        q = Eigen::Quaterniond(to_ned) * q;
+      }
     } else if (state->frame != EOIR_FRAME_J2000) {
       throw Error(Status::out_of_range, "state.frame: unknown frame " + std::to_string(state->frame));
     }
@@ -183,6 +190,7 @@ EOIR_API eoir_status eoir_object_get_state(eoir_engine engine, const char* name,
       const frames::Vec3 earth_rate(0.0, 0.0, 7.292115e-5);
       if (pushed_j2000 && !want_j2000) w = frames::j2000_to_earth_fixed(e.time()) * w - earth_rate;
       if (!pushed_j2000 && want_j2000) w = frames::j2000_to_earth_fixed(e.time()).transpose() * (w + earth_rate);
+      if (!want_j2000) w = to_ned * w;
       for (int i = 0; i < 3; ++i) state->angular_velocity[i] = w[i];
     }
   });

@@ -86,6 +86,15 @@ Mat3 horizon_to_earth_fixed(double lat_deg, double lon_deg) {
   return m;
 }
 
+Mat3 ned_to_earth_fixed(double lat_deg, double lon_deg) {
+  const Mat3 enu = horizon_to_earth_fixed(lat_deg, lon_deg);
+  Mat3 m;
+  m.col(0) = enu.col(1);   // north
+  m.col(1) = enu.col(0);   // east
+  m.col(2) = -enu.col(2);  // down
+  return m;
+}
+
 void azimuth_elevation_deg(const Vec3& d, double& azimuth_deg, double& elevation_deg) {
   constexpr double deg = constants::deg_per_rad;
   const double horizontal = std::hypot(d.x(), d.y());

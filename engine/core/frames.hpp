@@ -36,6 +36,9 @@ Vec3 earth_fixed_to_geodetic(const Vec3& r_ef);
 // columns east, north and up (the WGS84 ellipsoid's normal), in Earth-fixed
 // axes.
 Mat3 horizon_to_earth_fixed(double lat_deg, double lon_deg);
+// The local north-east-down frame there (aircraft axes: x north, y east,
+// z down along the ellipsoid's inward normal), columns in Earth-fixed axes.
+Mat3 ned_to_earth_fixed(double lat_deg, double lon_deg);
 // Topocentric azimuth (deg from north through east, [0, 360)) and elevation
 // (deg above the geodetic horizon, [-90, 90]) of a direction given in the
 // horizon frame's own axes (east, north, up); the azimuth is 0 straight up

@@ -10,6 +10,7 @@
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "core/frames.hpp"
+#include "geometry/part_shadow.hpp"
 #include "geometry/projected_area.hpp"
 #include "scene/cloud_top.hpp"
 #include "universe/object_motion.hpp"
@@ -199,6 +200,10 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
   return w;
 }
 
+// Aircraft and ground vehicles shade the Sun's light by their parts (their
+// bounding spheres would cast round shadows on the ground).
+bool shades_by_parts(ObjectKind kind) { return kind == ObjectKind::aircraft || kind == ObjectKind::ground_vehicle; }
+
 geometry::Occulter occulter_of(const WorldObject& w) {
   if (w.central_body)
     return geometry::Occulter{w.placed.position_m, w.equatorial_radius_m, w.polar_radius_m, w.placed.body_to_frame.col(2)};
@@ -229,7 +234,14 @@ Vec3 WorldObject::toward_observer_body() const {
 
 double WorldObject::sun_fraction(const Vec3& point_frame_m) const {
   const SunLight& sun = world_->sun;
-  return geometry::solar_disk_visible_fraction(point_frame_m, sun.position_m, sun.radius_m, occulters_[0]);
+  const double f = geometry::solar_disk_visible_fraction(point_frame_m, sun.position_m, sun.radius_m, occulters_[0]);
+  if (f > 0 && !part_shadows_.empty() && !(central_body && point_frame_m == placed.position_m)) {
+    const Vec3 to_sun = sun.position_m - point_frame_m;
+    const double d = to_sun.norm();
+    for (const WorldObject* o : part_shadows_)
+      if (geometry::parts_block_ray(o->placed, o->bounding_radius_m, point_frame_m, to_sun / d, d)) return 0.0;
+  }
+  return f;
 }
 
 void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const Vec3& toward,
@@ -1143,17 +1155,22 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   // 2. What may shade what: every other body, for the Sun and each source.
   std::vector<geometry::Occulter> occulters;
   for (const auto& w : world->objects) occulters.push_back(occulter_of(*w));
-  auto candidates = [&](const WorldObject& receiver, const Vec3& light, double light_radius, std::int32_t light_object) {
+  // by_parts: the Sun's vehicles go there, shading by their parts (sun_fraction).
+  auto candidates = [&](const WorldObject& receiver, const Vec3& light, double light_radius, std::int32_t light_object,
+                        std::vector<const WorldObject*>* by_parts = nullptr) {
     std::vector<geometry::Occulter> out;
     for (const auto& w : world->objects)
       if (w->id != receiver.id && w->id != light_object &&
           can_shade(receiver.placed.position_m, receiver.bounding_radius_m, light, light_radius,
-                    occulters[static_cast<std::size_t>(w->id)]))
-        out.push_back(occulters[static_cast<std::size_t>(w->id)]);
+                    occulters[static_cast<std::size_t>(w->id)])) {
+        if (by_parts && shades_by_parts(w->kind)) by_parts->push_back(w.get());
+        else out.push_back(occulters[static_cast<std::size_t>(w->id)]);
+      }
     return out;
   };
   for (const auto& w : world->objects)
-    w->occulters_.push_back(candidates(*w, world->sun.position_m, world->sun.radius_m, world->sun.object));
+    w->occulters_.push_back(
+        candidates(*w, world->sun.position_m, world->sun.radius_m, world->sun.object, &w->part_shadows_));
 
   // 3. Surfaces: materials through the view, temperatures (spec 4.3.1.3).
   WorldBuilder builder(*world, library);

@@ -350,7 +350,9 @@ class WorldObject {
   const LightSpectra& light_spectra() const;
 
   // Visible fraction of the Sun's disc at a point of this object (umbra 0,
-  // penumbra between, sunlight 1) against every other body.
+  // penumbra between, sunlight 1) against every other body; aircraft and
+  // ground vehicles shade by their parts, 0 or 1 (geometry/part_shadow.hpp;
+  // not at a central body's centre, whose eq. 7 disc they hide nothing of).
   double sun_fraction(const Vec3& point_frame_m) const;
 
   // The spectral view of this object's light at the sensor: the world's, or
@@ -396,6 +398,7 @@ class WorldObject {
   bool under_atmosphere_ = false;          // the Earth: its points see World::atmosphere.surface's paths
   std::int32_t light_ = -1;  // index in World::lights, -1 if not a source
   std::vector<std::vector<geometry::Occulter>> occulters_;  // per light (0 the Sun, 1 + k lights[k]): may shade it
+  std::vector<const WorldObject*> part_shadows_;  // vehicles that may shade it from the Sun, by their parts
   std::vector<char> negligible_light_;  // per lights[k]: its light here is below kNegligible of the self-emission
   mutable std::once_flag tessellated_;
   mutable geometry::Tessellation tessellation_;

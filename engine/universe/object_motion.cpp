@@ -22,10 +22,11 @@ void push_state(Object& object, const EngineTime& epoch, int frame, const double
   const Range metres{-b::max_position_m, b::max_position_m};
   for (int i = 0; i < 3; ++i) {
     const std::string field = "position[" + std::to_string(i) + "]";
-    if (frame == 2 && i == 0) check_range(position[0], Range{-90, 90}, field + " (latitude)", "deg");
-    else if (frame == 2 && i == 1)
+    const bool geodetic = frame == 2 || frame == 3;
+    if (geodetic && i == 0) check_range(position[0], Range{-90, 90}, field + " (latitude)", "deg");
+    else if (geodetic && i == 1)
       check_range(position[1], Range{-b::max_abs_longitude_deg, b::max_abs_longitude_deg}, field + " (longitude)", "deg");
-    else check_range(position[i], metres, field + (frame == 2 ? " (height)" : ""), "m");
+    else check_range(position[i], metres, field + (geodetic ? " (height)" : ""), "m");
   }
   for (int i = 0; i < 3; ++i) require_finite(velocity[i], "velocity[" + std::to_string(i) + "]");
   const double speed = std::sqrt(velocity[0] * velocity[0] + velocity[1] * velocity[1] + velocity[2] * velocity[2]);
@@ -65,6 +66,15 @@ void push_state(Object& object, const EngineTime& epoch, int frame, const double
       s.frame = StateFrame::earth_fixed;
       s.position_m = frames::geodetic_to_earth_fixed(position[0], position[1], position[2]);
       break;
+    case 3: {  // local north-east-down at the place -> Earth-fixed
+      s.frame = StateFrame::earth_fixed;
+      s.position_m = frames::geodetic_to_earth_fixed(position[0], position[1], position[2]);
+      const frames::Mat3 ned = frames::ned_to_earth_fixed(position[0], position[1]);
+      s.velocity_m_s = ned * s.velocity_m_s;
+      s.angular_velocity_rad_s = ned * s.angular_velocity_rad_s;
+      s.attitude = (Eigen::Quaterniond(ned) * s.attitude).normalized();
+      break;
+    }
     default: throw Error(Status::out_of_range, "frame: unknown frame " + std::to_string(frame));
   }
   object.state = s;

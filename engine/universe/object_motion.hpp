@@ -20,7 +20,9 @@ struct Kinematics {
 Kinematics kinematics_at(const Universe& universe, const Object& object, const EngineTime& t);
 
 // Validates and stores a state pushed by the host. frame: 0 J2000, 1
-// Earth-fixed, 2 geodetic (position = lat deg, lon deg, height m); the
+// Earth-fixed, 2 geodetic (position = lat deg, lon deg, height m), 3
+// geodetic with velocity, attitude and angular velocity in the local
+// north-east-down axes there (kept as an Earth-fixed state, as 2 is); the
 // angular velocity (NULL = none) is about the frame's axes. Positions,
 // speeds and rates within object_bounds. Throws eoir::Error naming the field (position[1],
 // attitude, angular_velocity[2], frame, ...); central bodies, the star field

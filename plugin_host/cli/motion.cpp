@@ -193,6 +193,12 @@ Quat multiply(const Quat& a, const Quat& b) {
 
 Quat conjugate(const Quat& q) { return {q[0], -q[1], -q[2], -q[3]}; }
 
+Quat heading_pitch_roll(double heading_deg, double pitch_deg, double roll_deg) {
+  constexpr double rad = 3.14159265358979323846 / 180.0;
+  return normalize(multiply(axis_angle({0, 0, 1}, heading_deg * rad),
+                            multiply(axis_angle({0, 1, 0}, pitch_deg * rad), axis_angle({1, 0, 0}, roll_deg * rad))));
+}
+
 Quat axis_angle(const Vec3& axis, double angle_rad) {
   const Vec3 u = normalize(axis);
   const double s = std::sin(0.5 * angle_rad);

@@ -107,6 +107,10 @@ Quat axis_angle(const Vec3& axis, double angle_rad);
 // The angular velocity (rad/s, frame axes) that turns q0 into q1 in dt seconds.
 Vec3 angular_velocity(const Quat& q0, const Quat& q1, double dt_s);
 Quat normalize(const Quat& q);              // throws std::domain_error for zero
+// Body -> local north-east-down of an aircraft's heading (from north through
+// east), pitch (nose up) and roll (right wing down), deg: the ZYX Euler
+// angles Rz(heading) Ry(pitch) Rx(roll); body x forward, y right, z down.
+Quat heading_pitch_roll(double heading_deg, double pitch_deg, double roll_deg);
 
 // Body +Z along `boresight`; body +X along `hint` projected perpendicular to
 // +Z (if hint is (nearly) parallel, the frame axis least aligned with +Z is

@@ -196,11 +196,22 @@ Attitude parse_attitude(const json& j, const std::string& path, bool sensor) {
     a.type = Attitude::Type::azel;
   } else if (type == "azel") {
     fail(path + ".type", "'azel' points sensors only (a sensor's pointing)");
+  } else if (type == "heading_pitch_roll" && !sensor) {
+    only_keys(j, path, {"type", "heading_deg", "pitch_deg", "roll_deg"});
+    a.heading_deg = get_number_or(j, path, "heading_deg", 0.0);
+    a.pitch_deg = get_number_or(j, path, "pitch_deg", 0.0);
+    a.roll_deg = get_number_or(j, path, "roll_deg", 0.0);
+    if (std::fabs(a.heading_deg) > 360) fail(path + ".heading_deg", "must be in [-360, 360]");
+    if (std::fabs(a.pitch_deg) > 90) fail(path + ".pitch_deg", "must be in [-90, 90]");
+    if (std::fabs(a.roll_deg) > 180) fail(path + ".roll_deg", "must be in [-180, 180]");
+    a.type = Attitude::Type::heading_pitch_roll;
+  } else if (type == "heading_pitch_roll") {
+    fail(path + ".type", "'heading_pitch_roll' turns objects only (aircraft, ground vehicles...)");
   } else {
     const std::vector<std::string> types = sensor ? std::vector<std::string>{"fixed_inertial", "spinning_inertial",
                                                                              "nadir", "target", "azel"}
                                                   : std::vector<std::string>{"fixed_inertial", "spinning_inertial",
-                                                                             "nadir", "target"};
+                                                                             "nadir", "target", "heading_pitch_roll"};
     std::string list;
     for (const auto& t : types) list += (list.empty() ? "" : ", ") + t;
     fail(path + ".type", "'" + type + "' is not one of " + list + did_you_mean(type, types));

@@ -25,7 +25,9 @@ class ScenarioError : public std::runtime_error {
 struct Attitude {
   // azel: sensors only, pointed by the engine (eoir_sensor_point_azel); a
   // sensor on a site tracks its target through eoir_sensor_point_at.
-  enum class Type { none, fixed_inertial, nadir, target, spinning_inertial, azel };
+  // heading_pitch_roll: objects only, body -> local north-east-down at the
+  // object's place at each step (pushed in EOIR_FRAME_GEODETIC_NED).
+  enum class Type { none, fixed_inertial, nadir, target, spinning_inertial, azel, heading_pitch_roll };
   Type type = Type::none;
   Quat quaternion{1, 0, 0, 0};  // body -> J2000 (fixed_inertial; spinning_inertial at the epoch)
   std::string target;           // object name (target)
@@ -34,6 +36,9 @@ struct Attitude {
   double epoch_s = 0;           //   when it has `quaternion` (default: the scenario's start)
   double azimuth_deg = 0;       // azel: from north through east
   double elevation_deg = 0;     //   above the geodetic horizon
+  double heading_deg = 0;       // heading_pitch_roll: from north through east
+  double pitch_deg = 0;         //   nose up
+  double roll_deg = 0;          //   right wing down
 };
 
 // Where the host pushes an object's state from.

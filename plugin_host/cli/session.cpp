@@ -170,7 +170,8 @@ Quat Session::attitude_j2000(const Attitude& a, const PosVel& self_now, const st
   try {
     switch (a.type) {
       case Attitude::Type::none:
-      case Attitude::Type::azel:  // pointed by the engine (set_time step 3)
+      case Attitude::Type::azel:                // pointed by the engine (set_time step 3)
+      case Attitude::Type::heading_pitch_roll:  // pushed in the local axes (set_time step 2)
         return {1, 0, 0, 0};
       case Attitude::Type::fixed_inertial:
         return a.quaternion;
@@ -225,7 +226,8 @@ void Session::set_time(double t) {
     const bool j2000 = natural_j2000(o);
     if (j2000) host_j2000_[o.name] = st;
     const bool final_now = o.attitude.type == Attitude::Type::none ||
-                           (j2000 && o.attitude.type != Attitude::Type::target);
+                           (j2000 && o.attitude.type != Attitude::Type::target &&
+                            o.attitude.type != Attitude::Type::heading_pitch_roll);
     const bool turning = final_now && j2000;
     const Quat q = turning ? attitude_j2000(o.attitude, st, o.path + ".attitude") : Quat{1, 0, 0, 0};
     const Vec3 w = turning ? angular_velocity_j2000(o.attitude, st, o.path + ".attitude") : Vec3{0, 0, 0};
@@ -235,6 +237,22 @@ void Session::set_time(double t) {
   // 2. Attitudes that need other objects' positions or a frame change: the
   //    state is re-pushed in J2000 (position from the engine if need be).
   for (const ObjectSpec* o : later) {
+    if (o->attitude.type == Attitude::Type::heading_pitch_roll) {
+      // Body -> local north-east-down at the object's place now.
+      eoir_state g{};
+      g.struct_size = sizeof g;
+      g.frame = EOIR_FRAME_GEODETIC_NED;
+      engine_.check(api.object_get_state(engine_.handle(), o->name.c_str(), &g), o->path + ".motion");
+      PosVel local;
+      for (int k = 0; k < 3; ++k) {
+        local.position[k] = g.position[k];
+        local.velocity[k] = g.velocity[k];
+      }
+      const Attitude& a = o->attitude;
+      push(o->name, EOIR_FRAME_GEODETIC_NED, local, heading_pitch_roll(a.heading_deg, a.pitch_deg, a.roll_deg),
+           o->path + ".attitude");
+      continue;
+    }
     const PosVel self = j2000_state(o->name, o->path + ".motion");
     push(o->name, EOIR_FRAME_J2000, self, attitude_j2000(o->attitude, self, o->path + ".attitude"),
          o->path + ".attitude", angular_velocity_j2000(o->attitude, self, o->path + ".attitude"));

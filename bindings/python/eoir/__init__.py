@@ -26,7 +26,8 @@ from .errors import (AbiMismatchError, AlreadyExistsError, ArgumentError,
                      NullArgumentError, OutOfRangeError, PluginError,
                      StructSizeError, TypeMismatchError, UniverseError,
                      UnknownNameError)
-from .engine import (FRAMES, IMAGE_KINDS, KINDS, PICK_TERMS, TIME_SCALES, TYPES, Engine, last_error,
+from .engine import (FRAMES, IMAGE_KINDS, KINDS, PICK_TERMS, TIME_SCALES, TYPES, Engine, heading_pitch_roll_quaternion,
+                     last_error,
                      provider_elements, provider_groups, status_name,
                      time_from_iso, time_to_iso, version, version_string)
 from .scenario import Scenario, tle_state
@@ -45,6 +46,7 @@ __version__ = "{}.{}.{}".format(version_number // 10000, version_number // 100 %
 __all__ = [
     "Engine", "Scenario", "tle_state", "version", "version_string", "status_name", "last_error",
     "provider_groups", "provider_elements", "time_from_iso", "time_to_iso",
+    "heading_pitch_roll_quaternion",
     "KINDS", "FRAMES", "TIME_SCALES", "TYPES", "IMAGE_KINDS", "PICK_TERMS",
     "MAX_SATELLITES", "MAX_VEHICLES", "MAX_MISSILES", "MAX_MISSILE_STAGES",
     "MAX_SENSORS", "MAX_SITES", "MAX_REFERENCE_PAIRS", "MAX_NAME_LENGTH",

@@ -51,6 +51,7 @@ FRAMES = {
     "j2000": _lib.EOIR_FRAME_J2000,
     "earth_fixed": _lib.EOIR_FRAME_EARTH_FIXED,
     "geodetic": _lib.EOIR_FRAME_GEODETIC,
+    "geodetic_ned": _lib.EOIR_FRAME_GEODETIC_NED,
 }
 _FRAME_NAMES = {v: k for k, v in FRAMES.items()}
 
@@ -227,6 +228,27 @@ def _to_c_time(value) -> "_lib.eoir_time":
     return t
 
 
+def heading_pitch_roll_quaternion(heading_deg: float, pitch_deg: float, roll_deg: float) -> Tuple[float, float, float, float]:
+    """The unit quaternion (w, x, y, z) body -> local north-east-down of an
+    aircraft's heading (from north through east), pitch (nose up) and roll
+    (right wing down), deg: the ZYX Euler angles, q = Rz(heading) Ry(pitch)
+    Rx(roll), body x forward, y right, z down (for frame="geodetic_ned")."""
+    half = math.pi / 360.0
+    angles = []
+    for value, what in ((heading_deg, "heading_deg"), (pitch_deg, "pitch_deg"), (roll_deg, "roll_deg")):
+        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
+            raise errors.OutOfRangeError(_lib.EOIR_ERR_OUT_OF_RANGE, "EOIR_ERR_OUT_OF_RANGE",
+                                         f"{what}: must be a finite number, got {value!r}")
+        angles.append(float(value) * half)
+    ch, sh = math.cos(angles[0]), math.sin(angles[0])
+    cp, sp = math.cos(angles[1]), math.sin(angles[1])
+    cr, sr = math.cos(angles[2]), math.sin(angles[2])
+    return (ch * cp * cr + sh * sp * sr,
+            ch * cp * sr - sh * sp * cr,
+            ch * sp * cr + sh * cp * sr,
+            sh * cp * cr - ch * sp * sr)
+
+
 def _vector(value, n: int, what: str) -> List[float]:
     arr = np.asarray(value, dtype=np.float64).ravel()
     if arr.size != n:
@@ -369,9 +391,13 @@ class Engine(_Closing):
                   attitude=(1.0, 0.0, 0.0, 0.0), frame="j2000", time=None,
                   angular_velocity=(0.0, 0.0, 0.0)) -> None:
         """Push a state: position in metres (or lat deg, lon deg, height m for
-        "geodetic"), velocity in m/s, attitude quaternion (w, x, y, z) body to
-        frame, angular velocity in rad/s about the frame's axes (the attitude
-        turns at it between pushes); time None means the engine time."""
+        "geodetic" and "geodetic_ned"), velocity in m/s, attitude quaternion
+        (w, x, y, z) body to frame, angular velocity in rad/s about the
+        frame's axes (the attitude turns at it between pushes); time None
+        means the engine time. "geodetic_ned": velocity, attitude and angular
+        velocity in the local north-east-down axes at that place (attitude
+        from heading_pitch_roll_quaternion); height 0 m is the WGS84
+        ellipsoid's surface (no terrain)."""
         st = _lib.eoir_state()
         st.struct_size = ctypes.sizeof(st)
         st.frame = _lookup(FRAMES, frame, "frame")

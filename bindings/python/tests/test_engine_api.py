@@ -80,6 +80,35 @@ def test_geodetic_state(engine):
     np.testing.assert_allclose(geo["position"], [0.0, 0.0, 0.0], atol=1e-6)
 
 
+def test_geodetic_ned_state(engine):
+    """frame="geodetic_ned" with heading_pitch_roll_quaternion (issue 22):
+    at 0 N 0 E north is Earth-fixed +z, east +y, down -x, so a heading of
+    90 deg (east) with no pitch or roll puts the nose along +y and the right
+    wing along -z (south); the NED velocity (north 100, east 20, down -3)
+    is (3, 20, 100) Earth-fixed."""
+    engine.set_time("2010-08-25T18:00:00Z")
+    engine.add_object("aircraft", "Jet")
+    q = eoir.heading_pitch_roll_quaternion(90.0, 0.0, 0.0)
+    np.testing.assert_allclose(q, [np.sqrt(0.5), 0.0, 0.0, np.sqrt(0.5)], atol=1e-15)
+    engine.set_state("Jet", position=(0.0, 0.0, 10000.0), velocity=(100.0, 20.0, -3.0), attitude=q,
+                     frame="geodetic_ned")
+    ef = engine.get_state("Jet", "earth_fixed")
+    np.testing.assert_allclose(ef["position"], [6388137.0, 0.0, 0.0], atol=1e-3)
+    np.testing.assert_allclose(ef["velocity"], [3.0, 20.0, 100.0], atol=1e-9)
+    w, x, y, z = ef["attitude"]
+    nose = [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)]
+    wing = [2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)]
+    np.testing.assert_allclose(nose, [0.0, 1.0, 0.0], atol=1e-12)
+    np.testing.assert_allclose(wing, [0.0, 0.0, -1.0], atol=1e-12)
+    back = engine.get_state("Jet", "geodetic_ned")
+    assert back["frame"] == "geodetic_ned"
+    np.testing.assert_allclose(back["position"], [0.0, 0.0, 10000.0], atol=1e-6)
+    np.testing.assert_allclose(back["velocity"], [100.0, 20.0, -3.0], atol=1e-9)
+    np.testing.assert_allclose(np.abs(np.dot(back["attitude"], q)), 1.0, atol=1e-12)
+    with pytest.raises(eoir.OutOfRangeError, match="pitch_deg"):
+        eoir.heading_pitch_roll_quaternion(0.0, float("nan"), 0.0)
+
+
 def test_state_at_explicit_time_extrapolates(engine):
     engine.set_time("2010-08-25T18:00:00Z")
     engine.add_object("aircraft", "Plane")

@@ -174,8 +174,18 @@ EOIR_API eoir_status eoir_object_at(eoir_engine engine, size_t index, const char
 typedef enum eoir_frame {
   EOIR_FRAME_J2000 = 0,       /* Earth-centred inertial (GCRS ~ J2000), metres */
   EOIR_FRAME_EARTH_FIXED = 1, /* Earth-centred Earth-fixed (ITRS, WGS84), metres */
-  EOIR_FRAME_GEODETIC = 2     /* position = {lat deg, lon deg, height m} on WGS84;
+  EOIR_FRAME_GEODETIC = 2,    /* position = {lat deg, lon deg, height m} on WGS84;
                                  velocity and attitude as in EARTH_FIXED */
+  EOIR_FRAME_GEODETIC_NED = 3 /* position as in GEODETIC; velocity (m/s),
+                                 attitude and angular velocity in the local
+                                 north-east-down axes at that place (attitude =
+                                 body -> NED; aircraft body x forward, y right,
+                                 z down: heading, pitch, roll are its ZYX Euler
+                                 angles). Kept and extrapolated as an
+                                 Earth-fixed state (a straight line in the
+                                 Earth-fixed frame, attitude fixed there).
+                                 Height 0 is the ellipsoid's surface (no
+                                 terrain). */
 } eoir_frame;
 
 typedef struct eoir_state {

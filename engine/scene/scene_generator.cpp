@@ -20,7 +20,8 @@ namespace {
 // samples about them (bilinear weights, summing to 1), as radiance over a
 // sample's solid angle (the sensor's IFOV over samples_per_pixel^2, eqs.
 // 13-14), and cover that share of the sample; the rest of the sample sees
-// what lies behind the object (its centre ray cast past it). An object of
+// what lies behind the object (its centre ray cast past it); samples inside
+// a single part keep their own value. An object of
 // several parts brings its patches' radiances scaled to its point
 // irradiance, so that the image holds its detailed sum (ERRATA eq. 11) at
 // every range, as its point source does once it is smaller than a sample;
@@ -89,13 +90,25 @@ void add_small_objects(const World& world, std::vector<double>& radiance, const 
       add(jc, jr + 1, (1 - fc) * fr, E, omega);
       add(jc + 1, jr + 1, fc * fr, E, omega);
     }
-    // The samples it reaches or whose centre ray ends on it, seen past it.
+    // The samples it reaches or whose centre ray ends on it, seen past it,
+    // but for those inside it (theirs and their 4-neighbours' centre rays
+    // end on it): there a single part keeps its own value (the one the
+    // sample's pick gives), a composite (whose parts meet there) takes its
+    // window's, with nothing behind.
+    const auto on = [&](std::int64_t c, std::int64_t r) {
+      return c >= 0 && c < w && r >= 0 && r < h && hits[static_cast<std::size_t>(r * w + c)].object_id == o->id;
+    };
     std::vector<std::size_t> box;
     std::vector<Vec3> directions;
     for (std::int64_t r = r0; r < r1; ++r)
       for (std::int64_t c = c0; c < c1; ++c) {
         const auto i = static_cast<std::size_t>((r - r0) * bw + (c - c0));
-        if (cover[i] > 0 || hits[static_cast<std::size_t>(r * w + c)].object_id == o->id) {
+        if (on(c, r) && on(c - 1, r) && on(c + 1, r) && on(c, r - 1) && on(c, r + 1)) {
+          // (a composite's parts meet inside it: its window there, nothing behind)
+          if (composite) radiance[static_cast<std::size_t>(r * w + c)] = energy[i] / sample_sr;
+          continue;
+        }
+        if (cover[i] > 0 || on(c, r)) {
           box.push_back(i);
           directions.push_back(world.sample_direction(static_cast<double>(c), static_cast<double>(r)));
         }

@@ -280,7 +280,10 @@ FidelityChoice choose_fidelity(const World& world, const universe::Universe& uni
   for (const auto& o : world.objects) {
     if (o->imaging == Imaging::extended && !o->central_body && !o->surface->plain())
       divisions = std::max(divisions, own.object_patch_divisions);  // its coarse patches stay as fine
-    if (o->imaging != Imaging::point_source || !o->detailed_point_source || o->central_body) continue;
+    // (small extended objects are imaged from the same sum: scene/scene_generator.cpp)
+    if ((o->imaging != Imaging::point_source && o->imaging != Imaging::small_extended) ||
+        !o->detailed_point_source || o->central_body)
+      continue;
     if (o->placed.parts.size() == 1 && o->surface->plain()) continue;  // exact (analytic projected area)
     const universe::Object* u = universe.find(o->name);
     if (!u || u->body.patch_size_m > 0) continue;  // the object's own patch edge

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -9,6 +10,129 @@
 #include "scene/apparent_grid.hpp"
 
 namespace eoir::scene {
+namespace {
+
+// Objects imaged as Imaging::small_extended are ray-cast as any extended
+// object (their samples' hits, picks), but a sample is too coarse for them:
+// every sample they reach takes its light from a window of at least 2 x 2
+// rays per sample across them (WorldObject::window). The rays that meet the
+// object bring their radiance times their solid angle (W cm^-2) to the four
+// samples about them (bilinear weights, summing to 1), as radiance over a
+// sample's solid angle (the sensor's IFOV over samples_per_pixel^2, eqs.
+// 13-14), and cover that share of the sample; the rest of the sample sees
+// what lies behind the object (its centre ray cast past it); samples inside
+// a single part keep their own value. An object of
+// several parts brings its patches' radiances scaled to its point
+// irradiance, so that the image holds its detailed sum (ERRATA eq. 11) at
+// every range, as its point source does once it is smaller than a sample;
+// one part, convex, its radiance at each ray's point as the scene mode has
+// it, the window's solid angle scaled to its projected area (eq. 58), and
+// below kSmallBlendSamples samples across drawn toward its point irradiance.
+constexpr double kSmallBlendSamples = 4.0;
+
+void add_small_objects(const World& world, std::vector<double>& radiance, const std::vector<SampleHit>& hits,
+                       unsigned threads) {
+  const geometry::SampleGrid& grid = world.grid();
+  const std::int64_t w = grid.width(), h = grid.height();
+  const double n = static_cast<double>(grid.per_pixel);
+  const double sample_sr = (2.0 * std::atan(grid.pitch_x_cm / (2.0 * grid.focal_length_cm)) / n) *
+                           (2.0 * std::atan(grid.pitch_y_cm / (2.0 * grid.focal_length_cm)) / n);
+  const Mat3 to_body = world.observer.body_to_j2000.transpose();
+  for (const auto& o : world.objects) {
+    if (o->imaging != Imaging::small_extended) continue;
+    double cc = 0, rc = 0;
+    if (!grid.sample_of(to_body * o->seen.position_m, cc, rc)) continue;
+    const double across =
+        2.0 * std::asin(std::min(1.0, o->bounding_radius_m / o->seen.position_m.norm())) / grid.sample_angle_rad();
+    const auto rays = std::max<std::int64_t>(kVisibleWindowRays, static_cast<std::int64_t>(std::ceil(2.0 * across)));
+    VisibleWindow own;
+    if (rays > kVisibleWindowRays) own = o->window(rays, threads);
+    const VisibleWindow& window = rays > kVisibleWindowRays ? own : o->visible_window();
+    const bool composite = o->placed.parts.size() > 1;
+    std::vector<double> L(window.rays.size());
+    double sum = 0, window_sr = 0;
+    for (std::size_t k = 0; k < L.size(); ++k) {
+      const VisibleWindow::Ray& ray = window.rays[k];
+      L[k] = composite ? o->patch_radiance(ray.patch) : o->radiance_at(ray.part, ray.point_body_m, ray.normal_body);
+      sum += L[k] * ray.solid_angle_sr;
+      window_sr += ray.solid_angle_sr;
+    }
+    // One part: its solid angle is A* / R^2 (eq. 58, exact for every single
+    // shape), its light drawn toward its point irradiance as it nears a
+    // sample's size (continuous with its point source).
+    const double to_point = sum > 0 ? o->point_irradiance_W_cm2() / sum : 0.0;
+    const double to_area = window_sr > 0 ? o->projected_area_m2() / (o->range_m * o->range_m) / window_sr : 0.0;
+    const double t = std::clamp((across - 1.0) / (kSmallBlendSamples - 1.0), 0.0, 1.0);
+    const double scale = composite ? to_point : (1.0 - t) * to_point + t * to_area;
+    // The box of samples it may reach.
+    const auto reach = static_cast<std::int64_t>(std::ceil(0.5 * across)) + 2;
+    const auto ic = static_cast<std::int64_t>(std::lround(cc)), ir = static_cast<std::int64_t>(std::lround(rc));
+    const std::int64_t c0 = std::max<std::int64_t>(0, ic - reach), c1 = std::min<std::int64_t>(w, ic + reach + 1);
+    const std::int64_t r0 = std::max<std::int64_t>(0, ir - reach), r1 = std::min<std::int64_t>(h, ir + reach + 1);
+    if (c1 <= c0 || r1 <= r0) continue;
+    const std::int64_t bw = c1 - c0;
+    std::vector<double> energy(static_cast<std::size_t>(bw * (r1 - r0)), 0.0), cover(energy.size(), 0.0);
+    const auto add = [&](std::int64_t c, std::int64_t r, double weight, double E, double omega) {
+      if (c < c0 || c >= c1 || r < r0 || r >= r1) return;
+      const auto i = static_cast<std::size_t>((r - r0) * bw + (c - c0));
+      energy[i] += weight * E;
+      cover[i] += weight * omega;
+    };
+    for (std::size_t k = 0; k < L.size(); ++k) {
+      const VisibleWindow::Ray& ray = window.rays[k];
+      double c = 0, r = 0;
+      if (!grid.sample_of(to_body * ray.direction, c, r)) continue;
+      const double E = L[k] * ray.solid_angle_sr * scale, omega = ray.solid_angle_sr;
+      const double fc = c - std::floor(c), fr = r - std::floor(r);
+      const auto jc = static_cast<std::int64_t>(std::floor(c)), jr = static_cast<std::int64_t>(std::floor(r));
+      add(jc, jr, (1 - fc) * (1 - fr), E, omega);
+      add(jc + 1, jr, fc * (1 - fr), E, omega);
+      add(jc, jr + 1, (1 - fc) * fr, E, omega);
+      add(jc + 1, jr + 1, fc * fr, E, omega);
+    }
+    // The samples it reaches or whose centre ray ends on it, seen past it,
+    // but for those inside it (theirs and their 4-neighbours' centre rays
+    // end on it): there a single part keeps its own value (the one the
+    // sample's pick gives), a composite (whose parts meet there) takes its
+    // window's, with nothing behind.
+    const auto on = [&](std::int64_t c, std::int64_t r) {
+      return c >= 0 && c < w && r >= 0 && r < h && hits[static_cast<std::size_t>(r * w + c)].object_id == o->id;
+    };
+    std::vector<std::size_t> box;
+    std::vector<Vec3> directions;
+    for (std::int64_t r = r0; r < r1; ++r)
+      for (std::int64_t c = c0; c < c1; ++c) {
+        const auto i = static_cast<std::size_t>((r - r0) * bw + (c - c0));
+        if (on(c, r) && on(c - 1, r) && on(c + 1, r) && on(c, r - 1) && on(c, r + 1)) {
+          // (a composite's parts meet inside it: its window there, nothing behind)
+          if (composite) radiance[static_cast<std::size_t>(r * w + c)] = energy[i] / sample_sr;
+          continue;
+        }
+        if (cover[i] > 0 || on(c, r)) {
+          box.push_back(i);
+          directions.push_back(world.sample_direction(static_cast<double>(c), static_cast<double>(r)));
+        }
+      }
+    std::vector<geometry::Hit> behind;
+    world.caster.cast(directions, behind, threads, geometry::RayQuery{geometry::ray_mask_extended, o->id});
+    for (std::size_t k = 0; k < box.size(); ++k) {
+      const geometry::Hit& hit = behind[k];
+      double L_behind = 0;
+      if (hit.object_id < 0) {
+        L_behind = world.sky_radiance(directions[k]);
+      } else {
+        const WorldObject& x = *world.objects[static_cast<std::size_t>(hit.object_id)];
+        L_behind = x.radiance_at(hit.part, hit.point_body_m, x.direction_to_body(hit.normal_frame));
+      }
+      const std::size_t i = box[k];
+      const std::int64_t c = c0 + static_cast<std::int64_t>(i) % bw, r = r0 + static_cast<std::int64_t>(i) / bw;
+      radiance[static_cast<std::size_t>(r * w + c)] =
+          energy[i] / sample_sr + (1.0 - std::min(1.0, cover[i] / sample_sr)) * L_behind;
+    }
+  }
+}
+
+}  // namespace
 
 SceneImage generate_scene(const World& world, unsigned threads, SceneImage storage) {
   using clock = std::chrono::steady_clock;
@@ -170,6 +294,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
     }
     out.rays += edges.size() * sub;
   }
+  add_small_objects(world, out.image.radiance_W_cm2_sr, out.hits, threads);
   out.point_sources_s = seconds(t0, t1);
   out.ray_casting_s = seconds(t1, clock::now());
   return out;

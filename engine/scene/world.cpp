@@ -541,7 +541,57 @@ double WorldObject::point_irradiance_W_cm2() const {
   // (the spectral vector is at the sensor already: T_out applied)
   if (!detailed_point_source) return world_->view.spectral.integrate(point_spectral_irradiance());
   if (placed.parts.size() == 1 && plain()) return plain_radiance(0) * (projected_area_m2() / r2);
+  if (placed.parts.size() > 1) {  // parts may hide each other: each patch as much as is visible
+    const std::vector<double>& omega = visible_window().patch_solid_angle_sr;
+    double sum = 0;
+    for (std::size_t k = 0; k < omega.size(); ++k)
+      if (omega[k] > 0) sum += patch_radiance(static_cast<std::int32_t>(k)) * omega[k];
+    return sum;
+  }
   return visible_patch_sum(tessellation(), [this](std::int32_t k) { return patch_radiance(k); }) / r2;
+}
+
+const VisibleWindow& WorldObject::visible_window() const {
+  std::call_once(windowed_, [this] { window_ = window(kVisibleWindowRays, 1); });
+  return window_;
+}
+
+VisibleWindow WorldObject::window(std::int64_t rays_across, unsigned threads) const {
+  VisibleWindow out;
+  const geometry::Tessellation& t = tessellation();
+  out.patch_solid_angle_sr.assign(t.patches.size(), 0.0);
+  const double distance = seen.position_m.norm();
+  if (!(distance > bounding_radius_m) || rays_across < 1) return out;
+  // rays_across cells of angle `step` across the bounding disc, on the
+  // tangent plane about the line of sight (u, v); a cell's solid angle is
+  // cos^3 theta sec^2 x sec^2 y step^2 (theta off the line of sight).
+  const Vec3 los = seen.position_m / distance;
+  const Vec3 u = los.cross(std::fabs(los.z()) < 0.9 ? Vec3::UnitZ() : Vec3::UnitX()).normalized();
+  const Vec3 v = los.cross(u);
+  const double half = std::asin(bounding_radius_m / distance);
+  const double step = 2.0 * half / static_cast<double>(rays_across);
+  std::vector<Vec3> directions;
+  std::vector<double> omega;
+  for (std::int64_t j = 0; j < rays_across; ++j)
+    for (std::int64_t i = 0; i < rays_across; ++i) {
+      const double x = -half + (static_cast<double>(i) + 0.5) * step, y = -half + (static_cast<double>(j) + 0.5) * step;
+      if (x * x + y * y > half * half) continue;  // outside the bounding disc
+      const double tx = std::tan(x), ty = std::tan(y);
+      const double cos_theta = 1.0 / std::sqrt(1.0 + tx * tx + ty * ty);
+      directions.push_back((los + tx * u + ty * v) * cos_theta);
+      omega.push_back(cos_theta * cos_theta * cos_theta * (1.0 + tx * tx) * (1.0 + ty * ty) * step * step);
+    }
+  std::vector<geometry::Hit> hits;
+  world_->caster.cast(directions, hits, threads);
+  for (std::size_t k = 0; k < hits.size(); ++k) {
+    const geometry::Hit& h = hits[k];
+    if (h.object_id != id) continue;  // the sky, or another object in front
+    const Vec3 normal_body = direction_to_body(h.normal_frame);
+    const std::int32_t patch = geometry::patch_at_facing(t, placed.parts, h.part, h.point_body_m, normal_body);
+    out.rays.push_back(VisibleWindow::Ray{directions[k], patch, omega[k], h.part, h.point_body_m, normal_body});
+    out.patch_solid_angle_sr[static_cast<std::size_t>(patch)] += omega[k];
+  }
+  return out;
 }
 
 double WorldObject::detailed_point_irradiance_W_cm2(double patch_edge_m) const {
@@ -584,11 +634,13 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
   const Vec3 v = toward_observer_body();
   const Vec3 toward = placed.body_to_frame * v;
   const geometry::Tessellation& t = tessellation();
-  for (const geometry::Patch& patch : t.patches) {
-    const double facing = patch.normal_body.dot(v);
-    if (facing <= 0) continue;
+  const std::vector<double>* visible = placed.parts.size() > 1 ? &visible_window().patch_solid_angle_sr : nullptr;
+  for (std::size_t k = 0; k < t.patches.size(); ++k) {
+    const geometry::Patch& patch = t.patches[k];
+    // dOmega as point_irradiance_W_cm2 takes it
+    const double omega = visible ? (*visible)[k] : std::max(0.0, patch.normal_body.dot(v)) * patch.area_m2 / r2;
+    if (!(omega > 0)) continue;
     const std::vector<double> L = spectral_radiance(patch.part, patch.centre_body_m, patch.normal_body, toward);
-    const double omega = facing * patch.area_m2 / r2;
     const std::vector<double> received = at_sensor(L, patch.centre_body_m, patch.normal_body);
     for (std::size_t i = 0; i < E.size(); ++i) E[i] += received[i] * omega;
   }
@@ -981,6 +1033,22 @@ std::shared_ptr<const std::vector<double>> WorldCache::airglow(
   return cached(airglow_, optics.get(), make);
 }
 
+namespace {
+// Imaging::small_extended (world.hpp): its bounding disc spans fewer than
+// kSmallObjectSamples samples, or one of several parts fewer than
+// kSmallPartSamples.
+bool small_object(const WorldObject& w, double sample_angle_rad) {
+  const auto samples = [&](double radius_m) {
+    return 2.0 * std::asin(std::min(1.0, radius_m / w.range_m)) / sample_angle_rad;
+  };
+  if (samples(w.bounding_radius_m) < kSmallObjectSamples) return true;
+  if (w.placed.parts.size() < 2) return false;
+  for (const geometry::ShapePart& part : w.placed.parts)
+    if (samples(geometry::shape_bounding_radius_m(part.geom)) < kSmallPartSamples) return true;
+  return false;
+}
+}  // namespace
+
 std::shared_ptr<const World> build_world(const universe::Universe& universe, const universe::Library& library,
                                          const EngineTime& t, const universe::Object& sensor,
                                          const ViewDefinition& view, WorldCache* cache) {
@@ -1083,9 +1151,13 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       w->imaging = Imaging::outside;
     else if (range > radius && 2.0 * std::asin(std::min(1.0, radius / range)) < sample_angle_rad)
       w->imaging = Imaging::point_source;  // a distant area source smaller than a sample (4.1.6.1)
+    else if (!w->central_body && range > radius && small_object(*w, sample_angle_rad))
+      w->imaging = Imaging::small_extended;  // its parts may be thinner than a sample
     else
       w->imaging = Imaging::extended;
-    w->placed.ray_mask = w->imaging == Imaging::extended ? geometry::ray_mask_extended : geometry::ray_mask_other;
+    w->placed.ray_mask = w->imaging == Imaging::extended || w->imaging == Imaging::small_extended
+                             ? geometry::ray_mask_extended
+                             : geometry::ray_mask_other;
     w->seen.ray_mask = w->placed.ray_mask;
     if (w->imaging == Imaging::point_source && half_integration_s > 0) {
       // Displacement on the grid over the integration: the object's and the

@@ -49,6 +49,37 @@ enum class Imaging : int {
   outside = 0,       // wholly outside the view frustum (field plus guard band): culled
   extended = 1,      // resolved: ray-cast on the sample grid
   point_source = 2,  // smaller than a sample: kept apart at its focal-plane position
+  // resolved, but few samples across (kSmallObjectSamples) or with parts
+  // that are (kSmallPartSamples): a sample is too coarse for it, so the
+  // samples it reaches take its light from a finer window of rays
+  // (WorldObject::window; scene/scene_generator.cpp)
+  small_extended = 3,
+};
+
+// Objects (not central bodies) whose bounding disc spans fewer scene samples
+// than kSmallObjectSamples, or one of whose several parts spans fewer than
+// kSmallPartSamples, are imaged as Imaging::small_extended.
+constexpr double kSmallObjectSamples = 64.0;
+constexpr double kSmallPartSamples = 8.0;
+// Rays across an object's bounding disc in the window of its detailed sum
+// (each axis).
+constexpr std::int64_t kVisibleWindowRays = 128;
+
+// An object seen through a fine window of rays from the observer across its
+// bounding disc (the spec's "tessellations that are visible to the
+// observer", 4.1.6.1): each ray that meets the object before anything else
+// carries its patch and its solid angle, so the patch's visible projected
+// solid angle is the sum of its rays'.
+struct VisibleWindow {
+  struct Ray {
+    Vec3 direction;            // unit, observer frame (J2000 axes)
+    std::int32_t patch = 0;    // in the object's tessellation
+    double solid_angle_sr = 0;
+    std::int32_t part = 0;     // where it meets the object: part, point and outward normal (body frame)
+    Vec3 point_body_m = Vec3::Zero(), normal_body = Vec3::UnitZ();
+  };
+  std::vector<Ray> rays;                 // those meeting the object
+  std::vector<double> patch_solid_angle_sr;  // per patch: its visible projected solid angle
 };
 
 // What the sensor defines for the scene generator: its sample grid and
@@ -316,9 +347,16 @@ class WorldObject {
   double projected_area_m2() const;
   // Band-integrated irradiance at the observer of the object seen as a point
   // (spec 4.1.6.1): detailed, the sum over visible patches of L dOmega (ERRATA
-  // eq. 11; L A* / R^2 for a single plain shape); simple, eq. 7 toward the
-  // observer.
+  // eq. 11: for one part, its facing patches' cos A dA / R^2, or L A* / R^2
+  // for a plain shape; for several, that may hide each other, each patch's
+  // visible projected solid angle in visible_window); simple, eq. 7 toward
+  // the observer.
   double point_irradiance_W_cm2() const;
+  // The window of its detailed sum: kVisibleWindowRays across it
+  // (VisibleWindow), made on first use (thread-safe).
+  const VisibleWindow& visible_window() const;
+  // A window of rays_across rays across it, cast on `threads` workers.
+  VisibleWindow window(std::int64_t rays_across, unsigned threads) const;
   // The detailed sum on a tessellation of another patch edge (uncached): how
   // the sum converges with the patch size (scene/adaptive_fidelity.hpp).
   double detailed_point_irradiance_W_cm2(double patch_edge_m) const;
@@ -403,6 +441,8 @@ class WorldObject {
   mutable std::once_flag tessellated_;
   mutable geometry::Tessellation tessellation_;
   mutable std::unique_ptr<std::atomic<double>[]> patch_cache_;  // NaN until computed
+  mutable std::once_flag windowed_;
+  mutable VisibleWindow window_;
   mutable std::once_flag lit_;
   mutable LightSpectra light_spectra_;
   mutable std::mutex area_mutex_;

@@ -53,7 +53,8 @@ void add_small_objects(const World& world, std::vector<double>& radiance, const 
     double sum = 0, window_sr = 0;
     for (std::size_t k = 0; k < L.size(); ++k) {
       const VisibleWindow::Ray& ray = window.rays[k];
-      L[k] = composite ? o->patch_radiance(ray.patch) : o->radiance_at(ray.part, ray.point_body_m, ray.normal_body);
+      L[k] = composite ? o->patch_radiance(ray.patch)
+                       : o->radiance_at(ray.part, ray.point_body_m, ray.normal_body, ray.facet);
       sum += L[k] * ray.solid_angle_sr;
       window_sr += ray.solid_angle_sr;
     }
@@ -122,7 +123,7 @@ void add_small_objects(const World& world, std::vector<double>& radiance, const 
         L_behind = world.sky_radiance(directions[k]);
       } else {
         const WorldObject& x = *world.objects[static_cast<std::size_t>(hit.object_id)];
-        L_behind = x.radiance_at(hit.part, hit.point_body_m, x.direction_to_body(hit.normal_frame));
+        L_behind = x.radiance_at(hit.part, hit.point_body_m, x.direction_to_body(hit.normal_frame), hit.facet);
       }
       const std::size_t i = box[k];
       const std::int64_t c = c0 + static_cast<std::int64_t>(i) % bw, r = r0 + static_cast<std::int64_t>(i) / bw;

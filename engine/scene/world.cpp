@@ -587,8 +587,8 @@ VisibleWindow WorldObject::window(std::int64_t rays_across, unsigned threads) co
     const geometry::Hit& h = hits[k];
     if (h.object_id != id) continue;  // the sky, or another object in front
     const Vec3 normal_body = direction_to_body(h.normal_frame);
-    const std::int32_t patch = geometry::patch_at_facing(t, placed.parts, h.part, h.point_body_m, normal_body);
-    out.rays.push_back(VisibleWindow::Ray{directions[k], patch, omega[k], h.part, h.point_body_m, normal_body});
+    const std::int32_t patch = geometry::patch_at_facet(t, placed.parts, h.part, h.facet, h.point_body_m, normal_body);
+    out.rays.push_back(VisibleWindow::Ray{directions[k], patch, omega[k], h.part, h.point_body_m, normal_body, h.facet});
     out.patch_solid_angle_sr[static_cast<std::size_t>(patch)] += omega[k];
   }
   return out;

@@ -77,6 +77,7 @@ struct VisibleWindow {
     double solid_angle_sr = 0;
     std::int32_t part = 0;     // where it meets the object: part, point and outward normal (body frame)
     Vec3 point_body_m = Vec3::Zero(), normal_body = Vec3::UnitZ();
+    std::int32_t facet = -1;   // the mesh triangle it meets (geometry::Hit::facet)
   };
   std::vector<Ray> rays;                 // those meeting the object
   std::vector<double> patch_solid_angle_sr;  // per patch: its visible projected solid angle

@@ -53,8 +53,9 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
     if (geography_.clouds) reflects_ = reflects_ || geography_.cloud_spectrum->reflects();
   }
   for (const PartSurface& s : parts_)
-    part_radiance_.push_back(self_radiance_.empty() ? s.spectrum->emission_radiance(s.temperature_K)
-                                                    : view.integrate(self_radiance_));
+    part_radiance_.push_back(!self_radiance_.empty()   ? view.integrate(self_radiance_)
+                             : !s.self_radiance.empty() ? view.integrate(s.self_radiance)
+                                                        : s.spectrum->emission_radiance(s.temperature_K));
   if (thermal_.subsolar && temperature_table_size > 0) {
     const auto n = temperature_table_size;
     table_T0_ = std::min(thermal_.night_K, thermal_.subsolar_K);
@@ -75,6 +76,8 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
     emission_bound_ = std::numeric_limits<double>::infinity();
     return;
   }
+  for (const PartSurface& s : parts_)
+    if (!s.self_radiance.empty()) emission_bound_ = std::numeric_limits<double>::infinity();
   double hottest_K = 0;
   for (const PartSurface& s : parts_) hottest_K = std::max(hottest_K, s.temperature_K);
   if (thermal_.subsolar) hottest_K = std::max({hottest_K, thermal_.subsolar_K, thermal_.night_K}) + table_dT_;
@@ -170,6 +173,10 @@ void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& 
     for (std::size_t i = 0; i < out.size(); ++i) out[i] += self_radiance_[i];
     return;
   }
+  if (const std::vector<double>& own = parts_[index(point.site.part)].self_radiance; !own.empty()) {
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] += own[i];
+    return;
+  }
   const double f = point.cloud_fraction, s = point.reflectance_scale;
   if (f == 0.0 && s == 1.0) return point.spectrum->add_emission(temperature_K(point), out);
   // Emissivity 1 - s SRF: (1 - s) B + s (1 - SRF) B; the cloud top's by its fraction.
@@ -188,7 +195,7 @@ void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& 
 }
 
 double SurfaceModel::emission_radiance(const SurfacePoint& point) const {
-  if (!varying()) return part_radiance(point.site.part);
+  if (!varying() || !parts_[index(point.site.part)].self_radiance.empty()) return part_radiance(point.site.part);
   const double f = point.cloud_fraction, s = point.reflectance_scale;
   if (f == 0.0 && s == 1.0) return point.spectrum->emission_radiance(temperature_K(point));
   double L = 0;
@@ -211,6 +218,7 @@ void SurfaceModel::add_srf(const SurfacePoint& point, double weight, std::vector
 }
 
 double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point) const {
+  if (!parts_[index(point.site.part)].self_radiance.empty()) return part_radiance(point.site.part);
   if (!thermal_.subsolar || table_.empty() || geography_.bitmap() || geography_.climatology || geography_.clouds)
     return emission_radiance(point);
   const auto& row = table_[index(point.site.part)];

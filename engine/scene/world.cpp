@@ -60,6 +60,12 @@ double shape_volume_m3(const geometry::ShapeGeom& g) {
       const double r1 = g.r_bottom_m, r2 = g.r_top_m;
       return pi * g.length_m * (r1 * r1 + r1 * r2 + r2 * r2) / 3.0;
     }
+    case universe::ShapeKind::plume: {  // the sphere less its cap above the tangent circle, plus the cone
+      const geometry::PlumeProfile p = geometry::plume_profile(g);
+      const double r = g.a_m, cap = r - p.tangent_z_m;
+      return 4.0 / 3.0 * pi * r * r * r - pi * cap * cap * (3.0 * r - cap) / 3.0 +
+             pi * p.tangent_radius_m * p.tangent_radius_m * (p.apex_z_m - p.tangent_z_m) / 3.0;
+    }
     default: return 0.0;
   }
 }
@@ -139,7 +145,7 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
                                    const World& world) {
   if (o.kind == ObjectKind::sensor || o.kind == ObjectKind::star_field) return nullptr;
   if (o.kind != ObjectKind::central_body && !o.state.valid) return nullptr;
-  const std::vector<universe::ShapePart> shape = universe::shape_parts(o.body);
+  const std::vector<universe::ShapePart> shape = universe::shape_parts_at(o, t);
   if (shape.empty()) return nullptr;
   universe::Kinematics k = universe::kinematics_at(universe, o, t);
   auto w = std::make_unique<WorldObject>();
@@ -162,8 +168,11 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
   w->kind = o.kind;
   w->central_body = o.kind == ObjectKind::central_body;
   geometry::PlacedObject& po = w->placed;
+  const bool staged = o.kind == ObjectKind::missile && !o.body.missile_stage_list->empty();
+  w->parts_hide_each_other = staged;
   for (std::size_t i = 0; i < shape.size(); ++i) {
-    const std::string field = o.body.shape == universe::ShapeKind::composite
+    const std::string field = staged ? o.name + ".missile_stages"
+                              : o.body.shape == universe::ShapeKind::composite
                                   ? o.name + ".composite[" + std::to_string(i) + "]"
                                   : o.name + ".shape";
     po.parts.push_back(geometry::make_part(shape[i], field));
@@ -545,9 +554,26 @@ double WorldObject::visible_patch_sum(const geometry::Tessellation& t, PatchRadi
   for (std::size_t k = 0; k < t.patches.size(); ++k) {
     const geometry::Patch& patch = t.patches[k];
     const double facing = patch.normal_body.dot(v);
-    if (facing > 0) sum += radiance(static_cast<std::int32_t>(k)) * facing * patch.area_m2;
+    if (facing > 0 && !(parts_hide_each_other && patch_hidden(patch, v)))
+      sum += radiance(static_cast<std::int32_t>(k)) * facing * patch.area_m2;
   }
   return sum;
+}
+
+bool WorldObject::patch_hidden(const geometry::Patch& patch, const Vec3& v) const {
+  const double lift = 1e-9 * std::max(bounding_radius_m, 1e-3);  // off the patch's own surface
+  for (std::size_t q = 0; q < placed.parts.size(); ++q) {
+    if (static_cast<std::int32_t>(q) == patch.part) continue;
+    const geometry::ShapePart& sp = placed.parts[q];
+    const Vec3 o = sp.orientation.conjugate() * (patch.centre_body_m + lift * patch.normal_body - sp.offset_m);
+    if (geometry::shape_contains(sp.geom, o)) return true;
+    double t = 0;
+    Vec3 n;
+    if (geometry::intersect_shape(sp.geom, o, sp.orientation.conjugate() * v, 0.0,
+                                  std::numeric_limits<double>::infinity(), t, n))
+      return true;
+  }
+  return false;
 }
 
 std::vector<double> WorldObject::point_spectral_irradiance() const {
@@ -571,7 +597,7 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
   const geometry::Tessellation& t = tessellation();
   for (const geometry::Patch& patch : t.patches) {
     const double facing = patch.normal_body.dot(v);
-    if (facing <= 0) continue;
+    if (facing <= 0 || (parts_hide_each_other && patch_hidden(patch, v))) continue;
     const std::vector<double> L = spectral_radiance(patch.part, patch.centre_body_m, patch.normal_body, toward);
     const double omega = facing * patch.area_m2 / r2;
     const std::vector<double> received = at_sensor(L, patch.centre_body_m, patch.normal_body);
@@ -1157,7 +1183,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   for (std::size_t i = 0; i < world->objects.size(); ++i) {
     WorldObject& w = *world->objects[i];
     const universe::Object& o = *sources[i];
-    const std::vector<universe::ShapePart> shape = universe::shape_parts(o.body);
+    const std::vector<universe::ShapePart> shape = universe::shape_parts_at(o, t);
     ThermalField thermal;
     if (o.body.thermal_model == universe::ThermalModel::subsolar) {
       thermal.subsolar = true;
@@ -1184,7 +1210,9 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       if (eclipse) T = std::pow(te4 + fraction * (std::pow(T, 4.0) - te4), 0.25);
       parts.push_back(PartSurface{builder.spectrum(shape[p].material.value_or(o.body.material),
                                                    shape[p].reflectance.value_or(o.body.reflectance), field, w.view()),
-                                  T});
+                                  T,
+                                  shape[p].spectrum ? builder.self_radiance(*shape[p].spectrum, o.name + ".missile_stages")
+                                                    : std::vector<double>{}});
     }
     Geography geography;
     if (w.central_body) {

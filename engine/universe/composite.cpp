@@ -94,7 +94,7 @@ void flatten(const json& parts, const std::string& where, const Eigen::Vector3d&
     check_dimensions(kind, dims, at + ".dimensions_m");
     if (out.size() >= max_composite_parts)
       throw Error(Status::limit_exceeded, at + ": at most " + std::to_string(max_composite_parts) + " parts per object");
-    out.push_back(ShapePart{kind, dims, body_offset, body_orientation, t, r, mat});
+    out.push_back(ShapePart{kind, dims, body_offset, body_orientation, t, r, mat, std::nullopt});
   }
 }
 }  // namespace

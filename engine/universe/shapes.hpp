@@ -10,7 +10,18 @@
 
 namespace eoir::universe {
 
-enum class ShapeKind : int { sphere, oblate, box, plate, cylinder, cone, coupler, none, composite };
+enum class ShapeKind : int {
+  sphere,
+  oblate,
+  box,
+  plate,
+  cylinder,
+  cone,
+  coupler,
+  none,
+  composite,
+  plume,
+};
 
 struct ShapeInfo {
   ShapeKind kind;
@@ -18,13 +29,13 @@ struct ShapeInfo {
   std::vector<const char*> dimensions;  // meaning of each entry of dimensions_m
 };
 
-// sphere, oblate, box, plate, cylinder, cone, coupler, none, composite.
+// sphere, oblate, box, plate, cylinder, cone, coupler, none, composite, plume.
 const std::vector<ShapeInfo>& shapes();
 const ShapeInfo& shape_info(ShapeKind kind);
 // Throws eoir::Error(unknown_name) naming `field` with the list of shapes.
 ShapeKind parse_shape(const std::string& name, const std::string& field);
 // Throws eoir::Error(out_of_range) unless dims fits the shape (count, each
-// within object_bounds' lengths).
+// within object_bounds' lengths; a plume's length above twice its radius).
 void check_dimensions(ShapeKind kind, const std::vector<double>& dims, const std::string& field);
 
 // One simple shape placed in its object's body frame (a composite's part, or
@@ -37,6 +48,7 @@ struct ShapePart {
   std::optional<double> temperature_K;  // else the object's
   std::optional<double> reflectance;    // else the object's
   std::optional<std::string> material;  // else the object's
+  std::optional<std::string> spectrum;  // a tabulated self-radiance (spectrum table) instead of eps B(T); else the object's
 };
 
 }  // namespace eoir::universe

@@ -163,7 +163,9 @@ void tessellate_plume(Tessellation& t, std::int32_t part, const ShapePart& sp, c
   const PlumeProfile pp = plume_profile(g);
   const double r = g.a_m;
   const double beta_t = std::asin(std::clamp(pp.tangent_z_m / r, -1.0, 1.0));
-  const int n_lat = count_for(r * (beta_t + 0.5 * pi), target);
+  // (At least 3 bands of 8 cells, and 8 cells around the cone: coarse
+  // targets still face every way.)
+  const int n_lat = std::max(3, count_for(r * (beta_t + 0.5 * pi), target));
   const double dbeta = (beta_t + 0.5 * pi) / n_lat;
   grid.push_back(n_lat);
   std::int32_t off = 0;
@@ -171,13 +173,11 @@ void tessellate_plume(Tessellation& t, std::int32_t part, const ShapePart& sp, c
   for (int i = 0; i < n_lat; ++i) {
     const double b1 = -0.5 * pi + i * dbeta, b2 = (i + 1 == n_lat) ? beta_t : b1 + dbeta;
     const double band = 2.0 * pi * r * r * (std::sin(b2) - std::sin(b1));  // a sphere's zone: 2 pi r dz
-    const int n_lon = static_cast<int>(std::max(1.0, std::round(band / (target * target))));
+    const int n_lon = static_cast<int>(std::max(8.0, std::round(band / (target * target))));
     const double bm = 0.5 * (b1 + b2);
     for (int j = 0; j < n_lon; ++j) {
-      const Vec3 centre = (n_lon == 1 && i == 0)
-                              ? Vec3(0, 0, -r)
-                              : Vec3(r * std::cos(bm) * std::cos((j + 0.5) * 2.0 * pi / n_lon),
-                                     r * std::cos(bm) * std::sin((j + 0.5) * 2.0 * pi / n_lon), r * std::sin(bm));
+      const double lam = (j + 0.5) * 2.0 * pi / n_lon;
+      const Vec3 centre(r * std::cos(bm) * std::cos(lam), r * std::cos(bm) * std::sin(lam), r * std::sin(bm));
       add_patch(t, part, sp, centre, centre.normalized(), band / n_lon);
     }
     off += n_lon;
@@ -188,7 +188,7 @@ void tessellate_plume(Tessellation& t, std::int32_t part, const ShapePart& sp, c
   const double slant = std::hypot(rb, len);
   const double side = pi * rb * slant;
   const int n_h = count_for(slant, target);
-  const int n_a = static_cast<int>(std::max(1.0, std::round(side / (n_h * target * target))));
+  const int n_a = static_cast<int>(std::max(8.0, std::round(side / (n_h * target * target))));
   grid.insert(grid.end(), {n_a, n_h, off});
   for (int i = 0; i < n_h; ++i) {
     const double w = frustum_w(rb, 0.0, (i + 0.5) / n_h);

@@ -47,7 +47,7 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
     geography_ = Geography{};
   }
   if (self_radiance_.empty()) {
-    for (const PartSurface& s : parts_) reflects_ = reflects_ || s.spectrum->reflects();
+    for (const PartSurface& s : parts_) reflects_ = reflects_ || (!s.emits_only && s.spectrum->reflects());
     for (const auto* s : geography_.class_spectra) reflects_ = reflects_ || (s && s->reflects());
     for (const auto* s : geography_.albedo_spectra) reflects_ = reflects_ || (s && s->reflects());
     if (geography_.clouds) reflects_ = reflects_ || geography_.cloud_spectrum->reflects();

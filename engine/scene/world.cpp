@@ -42,6 +42,13 @@ double patch_size_m(const universe::Object& o, const std::vector<geometry::Shape
   if (o.body.patch_size_m > 0) return o.body.patch_size_m;
   if (o.kind == ObjectKind::central_body)
     return f.central_body_patch_size_m * o.body.dimensions_m[0] / 6378137.0;  // scaled from the Earth's radius
+  if (o.kind == ObjectKind::missile && !o.body.missile_stage_list->empty()) {
+    // A missile's stages and plumes are long and thin: patches from its
+    // narrowest stage's diameter, not its length (or its plume's).
+    double narrowest = std::numeric_limits<double>::infinity();
+    for (const universe::MissileStage& s : *o.body.missile_stage_list) narrowest = std::min(narrowest, s.radius_m);
+    return 2.0 * narrowest / f.object_patch_divisions;
+  }
   double size = 0;
   for (const auto& part : parts) size = std::max(size, 2.0 * geometry::shape_bounding_radius_m(part.geom));
   return std::max(size, 1e-6) / f.object_patch_divisions;
@@ -1212,7 +1219,8 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
                                                    shape[p].reflectance.value_or(o.body.reflectance), field, w.view()),
                                   T,
                                   shape[p].spectrum ? builder.self_radiance(*shape[p].spectrum, o.name + ".missile_stages")
-                                                    : std::vector<double>{}});
+                                                    : std::vector<double>{},
+                                  shape[p].kind == universe::ShapeKind::plume});
     }
     Geography geography;
     if (w.central_body) {

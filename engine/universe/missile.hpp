@@ -30,7 +30,8 @@
 // width_scale x the stage's radius_m, length (sphere's far pole to the apex)
 // length_scale x the stage's length_m (defaults 1 and 1); a gray body of
 // emittance 0.99 at temperature_K (material gray_body, reflectance 0.01), or
-// the named tabulated spectral radiance of the spectrum table instead.
+// the named tabulated spectral radiance of the spectrum table instead; a
+// plume (any part of shape plume) emits only: it reflects no light.
 #pragma once
 #include <limits>
 #include <optional>

@@ -3,10 +3,12 @@
 // 0.99 or a tabulated radiance), hidden by the hardbody in the detailed
 // point-source sum (spec 4.1.6.1). The uniform-source scenario's Satellite2
 // (1000 km along the sensor's boresight +z) is made a missile; with the
-// identity attitude its tail (-z) faces the sensor.
+// identity attitude its tail (-z) faces the sensor. Picks are of pixels
+// (space 1: a pixel's centre sample).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "scenario_host.hpp"
 
@@ -52,12 +54,13 @@ TEST(Missile, PlumeBandRadianceIsGrayBody099) {
     ScenarioHost host("valid_sens_uniform_ext_area_src.json", missile(stages));
     host.at(1.0);
     host.render();
-    const auto p = host.pick(64, 64);
+    const auto p = host.pick(64, 64, 1);
     ASSERT_TRUE(p.hit);
     EXPECT_EQ(p.object, "Satellite2");
     // The plume's apex (stage aft end at 1000 km, apex 37 km nearer).
     EXPECT_NEAR(p.range_m, 1000e3 - (40e3 - 3e3), 3e3);  // (the sample is off the axis by up to ~100 m)
     const double expected = 0.99 * eoir::test::reference_band_radiance_8_12(T);
+    std::printf("T = %g K: L / (0.99 B) - 1 = %.2e\n", T, p.effective_radiance / expected - 1);
     EXPECT_NEAR(p.effective_radiance / expected, 1.0, 1e-9) << T;
   }
 }
@@ -73,7 +76,7 @@ TEST(Missile, PlumeTabulatedRadiance) {
   host.set_string("Satellite2", "missile_stages", stages);
   host.at(1.0);
   host.render();
-  const auto p = host.pick(64, 64);
+  const auto p = host.pick(64, 64, 1);
   ASSERT_TRUE(p.hit);
   EXPECT_NEAR(p.effective_radiance / 8e-4, 1.0, 1e-9);
 }
@@ -107,8 +110,8 @@ TEST(Missile, StagesAndPlumesAtTheirTimes) {
                           Expect{11.999, false, L300}, Expect{12.001, false, L1100}, Expect{100.0, false, L1100}}) {
     host.at(e.t_s);
     host.render();
-    EXPECT_EQ(host.pick(64 + off, 64).hit, e.ring_hit) << e.t_s;
-    const auto axis = host.pick(64, 64);
+    EXPECT_EQ(host.pick(64 + off, 64, 1).hit, e.ring_hit) << e.t_s;
+    const auto axis = host.pick(64, 64, 1);
     ASSERT_TRUE(axis.hit) << e.t_s;
     EXPECT_NEAR(axis.effective_radiance / e.axis_radiance, 1.0, 1e-6) << e.t_s;
   }
@@ -122,13 +125,13 @@ TEST(Missile, NoPlumeBeforeLaunch) {
   ScenarioHost host("valid_sens_uniform_ext_area_src.json", missile(stages, {{"launch_time_utc", "2010-08-25T18:00:30Z"}}));
   host.at(29.0);
   host.render();
-  auto p = host.pick(64, 64);
+  auto p = host.pick(64, 64, 1);
   ASSERT_TRUE(p.hit);
   EXPECT_NEAR(p.range_m, 1000e3, 100.0);  // the stage's aft end
   EXPECT_NEAR(p.effective_radiance / eoir::test::reference_band_radiance_8_12(300), 1.0, 1e-6);
   host.at(31.0);
   host.render();
-  p = host.pick(64, 64);
+  p = host.pick(64, 64, 1);
   EXPECT_NEAR(p.effective_radiance / (0.99 * eoir::test::reference_band_radiance_8_12(1500)), 1.0, 1e-6);
 }
 
@@ -150,12 +153,14 @@ TEST(Missile, HardbodyHidesThePlumeBehindIt) {
     host.at(1.0);
     const double E = host.target_metric("Effective Target Irradiance", "Satellite2");
     const double visible = E / (L * kPi * r * r / (D * D));
+    std::printf("nose-on: visible fraction %.5f, geometry %.5f\n", visible, (r * r - R * R) / (r * r));
     EXPECT_NEAR(visible, (r * r - R * R) / (r * r), 0.005 * 0.75);
   }
   {
     ScenarioHost host("valid_sens_uniform_ext_area_src.json", missile(stages, far));
     host.at(1.0);
     const double E = host.target_metric("Effective Target Irradiance", "Satellite2");
+    std::printf("tail-on: E / (L pi r^2 / D^2) = %.5f\n", E / (L * kPi * r * r / (D * D)));
     EXPECT_NEAR(E / (L * kPi * r * r / (D * D)), 1.0, 0.005);
   }
 }

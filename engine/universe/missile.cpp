@@ -176,7 +176,8 @@ std::vector<ShapePart> missile_parts(const std::vector<MissileStage>& stages, do
 std::vector<ShapePart> shape_parts_at(const Object& o, const EngineTime& t) {
   if (o.kind != ObjectKind::missile || !o.body.missile_stage_list || o.body.missile_stage_list->empty())
     return shape_parts(o.body);
-  const double since = o.body.launch_time ? t.seconds_since(*o.body.launch_time)
+  // (to the nanosecond: a stage event on a whole second of UTC falls on it)
+  const double since = o.body.launch_time ? std::round(t.seconds_since(*o.body.launch_time) * 1e9) / 1e9
                                           : std::numeric_limits<double>::quiet_NaN();
   return missile_parts(*o.body.missile_stage_list, since);
 }

@@ -119,7 +119,8 @@ std::vector<Spec> body_properties(bool missile) {
   t.push_back(number_property<Object>(
       "patch_size_m", "m",
       "Edge of the patches dA the surface is divided into (spec 4.1.5.2); 0 = automatic (the imaging sensor's "
-      "fidelity: 785 km at the Earth's radius for central bodies, an eighth of the object's size otherwise)",
+      "fidelity: 785 km at the Earth's radius for central bodies, an eighth of the object's size otherwise, of "
+      "its narrowest stage's diameter for a missile with missile_stages)",
       [](Object& o) -> auto& { return o.body.patch_size_m; }, Range{0, max_length_m}));
   if (missile) {
     Spec stages = integer_property<Object>("stages", "count", "Number of stages, 1-18 (spec 4.3.6)",

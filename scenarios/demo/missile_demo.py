@@ -10,7 +10,7 @@ in build/lib, or EOIR_LIBRARY):
   minimum-energy Keplerian arc from 5 N 30 W to 30 N 15 W, 170 s powered)
   nose first (attitude velocity), with two stages (missile_stages): the first
   (14 m x 0.9 m) burns with a 1800 K plume for 90 s and separates, then falls
-  back from the stack for 60 s; the second (7 m x 0.6 m) lights its 1500 K
+  back from the stack for 30 s; the second (7 m x 0.6 m) lights its 1500 K
   plume 3 s after the separation and burns to 80 s of its own time.
 - missile_boost_frames.png: the image sequence (sensor electrons, a frame
   every 10 s from 10 s before the launch; asinh stretch, the missile's truth
@@ -60,8 +60,10 @@ LAUNCH_DELAY_S = 10.0
 LAUNCH = (5.0, -30.0)
 IMPACT = (30.0, -15.0)
 BURN_S = 170.0  # the motion's powered flight: both stages' burns
-STAGE1 = {"length_m": 14.0, "radius_m": 0.9, "separation_s": 90.0, "drawn_after_separation_s": 60.0,
-          "separation_speed_m_s": 30.0,
+# (The spent stage recedes 150 m at most: the missile stays smaller than a
+# sample, a point source; README "Missiles".)
+STAGE1 = {"length_m": 14.0, "radius_m": 0.9, "separation_s": 90.0, "drawn_after_separation_s": 30.0,
+          "separation_speed_m_s": 5.0,
           "plume": {"temperature_K": 1800.0, "length_scale": 3.0, "width_scale": 2.0}}
 STAGE2 = {"length_m": 7.0, "radius_m": 0.6,
           "parts": [{"shape": "cylinder", "dimensions_m": [0.6, 5.0], "offset_m": [0, 0, 2.5]},
@@ -149,7 +151,7 @@ def main(argv=None) -> int:
     with open(path, "w", encoding="utf-8") as f:
         json.dump(scenario(args.quick), f, indent=2)
         f.write("\n")
-    times_s = [0.0, 40.0, 110.0, 200.0] if args.quick else [10.0 * k for k in range(23)]
+    times_s = [0.0, 40.0, 110.0, 200.0] if args.quick else [10.0 * k for k in range(22)]
     frames, rows = [], []
     with eoir.Scenario.load(path, threads=args.threads) as sc:
         e = sc.engine
@@ -175,37 +177,47 @@ def main(argv=None) -> int:
         for r in rows:
             w.writerow(["" if v is None else v for v in r])
 
-    # The image sequence: one stretch for every frame (the background's median and spread).
-    stack = np.array([img for _, img, _ in frames])
-    med = float(np.median(stack))
-    spread = float(np.percentile(stack, 99.0) - med) or 1.0
-    top = float(stack.max() - med) or 1.0
-    for k, (t, img, m) in enumerate(frames):
-        disp = asinh_stretch(img - med, max(spread, 1e-9), max(top, 1e-9))
-        plt.imsave(out / f"missile_boost_frame_{k:02d}.png", disp, cmap="inferno", vmin=0, vmax=1)
+    # The image sequence: each frame less its median (the Earth's night-time
+    # background), one asinh stretch for all, its knee at the background's
+    # spread; the montage shows a 48-pixel crop around the missile.
+    diffs = [img - np.median(img) for _, img, _ in frames]
+    spread = max(float(np.median([np.percentile(np.abs(d), 90) for d in diffs])), 1e-12)
+    top = max(float(max(d.max() for d in diffs)), 10 * spread)
+    soft = max(spread, 1e-3 * top)
+    for k, d in enumerate(diffs):
+        plt.imsave(out / f"missile_boost_frame_{k:02d}.png", asinh_stretch(d, soft, top), cmap="inferno", vmin=0,
+                   vmax=1)
     cols = 4 if args.quick else 6
-    shown = frames if args.quick else frames[::2][:12]
+    shown = list(range(len(frames))) if args.quick else list(range(0, len(frames), 2))[:12]
     nrows = math.ceil(len(shown) / cols)
     fig, axes = plt.subplots(nrows, cols, figsize=(2.6 * cols, 2.8 * nrows), dpi=110, squeeze=False)
     for ax in axes.flat:
         ax.set_axis_off()
-    for ax, (t, img, m) in zip(axes.flat, shown):
-        ax.imshow(asinh_stretch(img - med, max(spread, 1e-9), max(top, 1e-9)), cmap="inferno", vmin=0, vmax=1,
-                  interpolation="nearest")
+    half = min(24, frames[0][1].shape[0] // 2)
+    last = (frames[0][1].shape[1] / 2, frames[0][1].shape[0] / 2)
+    for ax, k in zip(axes.flat, shown):
+        t, img, m = frames[k]
         if m.get("pixel_x") is not None:
-            ax.add_patch(plt.Circle((m["pixel_x"], m["pixel_y"]), max(3, img.shape[1] / 25), fill=False,
-                                    color="cyan", lw=0.8))
+            last = (m["pixel_x"], m["pixel_y"])
+        h, w = img.shape
+        x0 = int(np.clip(round(last[0]) - half, 0, w - 2 * half))
+        y0 = int(np.clip(round(last[1]) - half, 0, h - 2 * half))
+        ax.imshow(asinh_stretch(diffs[k][y0:y0 + 2 * half, x0:x0 + 2 * half], soft, top), cmap="inferno", vmin=0,
+                  vmax=1, interpolation="nearest", extent=(x0 - 0.5, x0 + 2 * half - 0.5, y0 + 2 * half - 0.5,
+                                                           y0 - 0.5))
+        if m.get("pixel_x") is not None:
+            ax.add_patch(plt.Circle((m["pixel_x"], m["pixel_y"]), 3, fill=False, color="cyan", lw=0.6))
         ax.set_title(f"T{t - LAUNCH_DELAY_S:+.0f} s", fontsize=9)
-    fig.suptitle("GEO staring sensor, 3-5 um, 1 deg field: a two-stage missile boosts, stage 1 separates "
-                 f"at T+{STAGE1['separation_s']:.0f} s, stage 2 lights 3 s later (sensor electrons, asinh)",
-                 fontsize=10)
+    fig.suptitle("GEO staring sensor, 3-5 um, 1 deg field (crops of 48 pixels around the missile): a two-stage "
+                 f"missile boosts,\nstage 1 separates at T+{STAGE1['separation_s']:.0f} s, stage 2 lights 3 s later "
+                 "and burns out at T+170 s (sensor electrons less the background, asinh)", fontsize=10)
     fig.savefig(out / "missile_boost_frames.png", bbox_inches="tight")
     plt.close(fig)
 
     fig, ax = plt.subplots(figsize=(8, 4.2), dpi=110)
     t_arr = np.array([r[0] for r in rows])
     E_arr = np.array([r[2] for r in rows])
-    ax.plot(t_arr - LAUNCH_DELAY_S, E_arr, "o-", color="tab:red", ms=3)
+    ax.semilogy(t_arr - LAUNCH_DELAY_S, np.maximum(E_arr, 1e-22), "o-", color="tab:red", ms=3)
     for name, t in events().items():
         ax.axvline(t - LAUNCH_DELAY_S, color="gray", lw=0.7, ls="--")
         ax.text(t - LAUNCH_DELAY_S, ax.get_ylim()[1] * 0.98, name, rotation=90, fontsize=7, va="top", ha="right")

@@ -160,6 +160,7 @@ SurfacePoint SurfaceModel::at(const SurfaceSite& site) const {
 
 double SurfaceModel::temperature_K(const SurfacePoint& point) const {
   const PartSurface& part = parts_[index(point.site.part)];
+  if (part.emits_only) return part.temperature_K;  // a plume keeps its own, whatever the body's thermal model
   const Geography& g = geography_;
   if (!g.climatology || !g.land_mask) return thermal_.at(point.site.normal_body, part.temperature_K);
   const auto kind = g.land_mask->at(point.latitude_deg, point.longitude_deg) ? universe::SurfaceKind::land
@@ -218,7 +219,9 @@ void SurfaceModel::add_srf(const SurfacePoint& point, double weight, std::vector
 }
 
 double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point) const {
-  if (!parts_[index(point.site.part)].self_radiance.empty()) return part_radiance(point.site.part);
+  const PartSurface& part = parts_[index(point.site.part)];
+  if (!part.self_radiance.empty()) return part_radiance(point.site.part);
+  if (part.emits_only) return emission_radiance(point);  // (outside the L(T) table's range)
   if (!thermal_.subsolar || table_.empty() || geography_.bitmap() || geography_.climatology || geography_.clouds)
     return emission_radiance(point);
   const auto& row = table_[index(point.site.part)];

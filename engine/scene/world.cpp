@@ -1214,7 +1214,8 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
                                     ? o.name + ".composite[" + std::to_string(p) + "].material"
                                     : o.name + ".material";
       double T = shape[p].temperature_K.value_or(o.body.temperature_K);
-      if (eclipse) T = std::pow(te4 + fraction * (std::pow(T, 4.0) - te4), 0.25);
+      if (eclipse && shape[p].kind != universe::ShapeKind::plume)  // (a plume keeps its temperature)
+        T = std::pow(te4 + fraction * (std::pow(T, 4.0) - te4), 0.25);
       parts.push_back(PartSurface{builder.spectrum(shape[p].material.value_or(o.body.material),
                                                    shape[p].reflectance.value_or(o.body.reflectance), field, w.view()),
                                   T,

@@ -85,7 +85,6 @@ def scenario(quick: bool) -> dict:
     jd = 2440587.5 + START.timestamp() / 86400.0
     gmst_deg = (280.46061837 + 360.98564736629 * (jd - 2451545.0)) % 360.0
     return {
-        "$schema": "../../schemas/scenario.schema.json",
         "format": "eoir-scenario",
         "version": 1,
         "name": "EOIR demo: a two-stage missile boosts and separates, seen from GEO in the MWIR",

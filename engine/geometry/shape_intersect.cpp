@@ -162,7 +162,54 @@ double arc_ratio(double x, double s) {
   return s > 0 ? std::asinh(x) / x : std::asin(x) / x;
 }
 
+// The plume's tangent cone as a cone in its own frame, whose origin lies at
+// z_centre of the plume's frame.
+ShapeGeom plume_cone(const ShapeGeom& g, double& z_centre) {
+  const PlumeProfile p = plume_profile(g);
+  ShapeGeom c;
+  c.kind = ShapeKind::cone;
+  c.r_bottom_m = p.tangent_radius_m;
+  c.r_top_m = 0.0;
+  c.length_m = p.apex_z_m - p.tangent_z_m;
+  z_centre = 0.5 * (p.apex_z_m + p.tangent_z_m);
+  return c;
+}
+
+// Union of the sphere and its tangent cone (a convex solid): the nearer
+// entry of the two, dropping an entry that lies inside the other.
+bool hit_plume(const ShapeGeom& g, const Vec3& o, const Vec3& d, double t_min, double t_max, double& t, Vec3& n) {
+  double zc = 0;
+  const ShapeGeom cone = plume_cone(g, zc);
+  const Vec3 shift(0, 0, zc);
+  double ts = 0, tc = 0;
+  Vec3 ns = Vec3::Zero(), nc = Vec3::Zero();
+  bool s = hit_spheroid(g.a_m, g.a_m, o, d, t_min, t_max, ts, ns);
+  if (s && shape_contains(cone, o + ts * d - shift)) s = false;
+  bool c = hit_frustum(cone, o - shift, d, t_min, t_max, tc, nc);
+  if (c && (o + tc * d).squaredNorm() < g.a_m * g.a_m * (1.0 - 1e-9)) c = false;
+  if (!s && !c) return false;
+  if (s && (!c || ts <= tc)) {
+    t = ts;
+    n = ns;
+  } else {
+    t = tc;
+    n = nc;
+  }
+  return true;
+}
+
 }  // namespace
+
+PlumeProfile plume_profile(const ShapeGeom& g) {
+  // Apex at h = length - r from the centre; the tangent circle at z = r^2 / h,
+  // radius r sqrt(1 - r^2 / h^2); the tangent length sqrt(h^2 - r^2).
+  PlumeProfile p;
+  const double r = g.a_m;
+  p.apex_z_m = g.length_m - r;
+  p.tangent_z_m = r * r / p.apex_z_m;
+  p.tangent_radius_m = r * std::sqrt(std::max(0.0, 1.0 - (r / p.apex_z_m) * (r / p.apex_z_m)));
+  return p;
+}
 
 ShapeGeom shape_geom(ShapeKind kind, const std::vector<double>& d, const std::string& field) {
   if (kind == ShapeKind::composite)
@@ -179,6 +226,7 @@ ShapeGeom shape_geom(ShapeKind kind, const std::vector<double>& d, const std::st
     case ShapeKind::cylinder: g.r_bottom_m = g.r_top_m = d[0]; g.length_m = d[1]; break;
     case ShapeKind::cone: g.r_bottom_m = d[0]; g.r_top_m = 0.0; g.length_m = d[1]; break;
     case ShapeKind::coupler: g.r_bottom_m = d[0]; g.r_top_m = d[1]; g.length_m = d[2]; break;
+    case ShapeKind::plume: g.a_m = g.c_m = d[0]; g.length_m = d[1]; break;
     case ShapeKind::none:
     case ShapeKind::composite:
     case ShapeKind::mesh: break;
@@ -210,6 +258,7 @@ bool intersect_shape(const ShapeGeom& g, const Vec3& origin_m, const Vec3& dir, 
     case ShapeKind::cylinder:
     case ShapeKind::cone:
     case ShapeKind::coupler: hit = hit_frustum(g, o, dir, lo, hi, t, normal); break;
+    case ShapeKind::plume: hit = hit_plume(g, o, dir, lo, hi, t, normal); break;
     case ShapeKind::none:
     case ShapeKind::composite:
     case ShapeKind::mesh: break;
@@ -239,6 +288,12 @@ bool shape_contains(const ShapeGeom& g, const Vec3& p) {
       return std::hypot(p.x(), p.y()) < r - kInsideTolerance * std::max(g.r_bottom_m, g.r_top_m);
     }
     case ShapeKind::mesh: return g.mesh->contains(p);
+    case ShapeKind::plume: {
+      if (p.squaredNorm() < g.a_m * g.a_m * f * f) return true;
+      double zc = 0;
+      const ShapeGeom cone = plume_cone(g, zc);
+      return shape_contains(cone, p - Vec3(0, 0, zc));
+    }
     case ShapeKind::plate:
     case ShapeKind::none:
     case ShapeKind::composite: return false;
@@ -257,6 +312,7 @@ double shape_bounding_radius_m(const ShapeGeom& g) {
     case ShapeKind::coupler:
       return std::max(std::hypot(g.r_bottom_m, 0.5 * g.length_m), std::hypot(g.r_top_m, 0.5 * g.length_m));
     case ShapeKind::mesh: return g.mesh->bounding_radius_m(g.mesh_group);
+    case ShapeKind::plume: return std::max(g.a_m, g.length_m - g.a_m);
     case ShapeKind::none:
     case ShapeKind::composite: return 0.0;
   }
@@ -287,6 +343,11 @@ double shape_surface_area_m2(const ShapeGeom& g) {
       return kPi * (r1 + r2) * std::hypot(r1 - r2, g.length_m) + kPi * (r1 * r1 + r2 * r2);
     }
     case ShapeKind::mesh: return g.mesh->surface_area_m2(g.mesh_group);
+    case ShapeKind::plume: {  // the sphere below the tangent circle, 2 pi r (r + z_t), and the cone's side, pi rho_t s
+      const PlumeProfile p = plume_profile(g);
+      const double h = p.apex_z_m, r = g.a_m;
+      return 2.0 * kPi * r * (r + p.tangent_z_m) + kPi * p.tangent_radius_m * std::sqrt(h * h - r * r);
+    }
     case ShapeKind::none:
     case ShapeKind::composite: return 0.0;
   }
@@ -345,6 +406,13 @@ Vec3 shape_normal(const ShapeGeom& g, const Vec3& p) {
       return rho > 0 ? Vec3(p.x() / rho, p.y() / rho, -k).normalized() : Vec3(0, 0, 1);
     }
     case ShapeKind::mesh: return g.mesh->normal(g.mesh->nearest_triangle(g.mesh_group, p));
+    case ShapeKind::plume: {
+      const PlumeProfile pp = plume_profile(g);
+      if (p.z() <= pp.tangent_z_m) return p.norm() > 0 ? Vec3(p.normalized()) : Vec3(0, 0, -1);
+      const double rho = std::hypot(p.x(), p.y());
+      const double k = pp.tangent_radius_m / (pp.apex_z_m - pp.tangent_z_m);  // the cone's dr/dz, negated
+      return rho > 0 ? Vec3(p.x() / rho, p.y() / rho, k).normalized() : Vec3(0, 0, 1);
+    }
     case ShapeKind::none:
     case ShapeKind::composite: break;
   }

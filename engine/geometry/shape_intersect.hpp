@@ -28,6 +28,15 @@ struct ShapeGeom {
   std::int32_t mesh_group = -1;                      // mesh: this part's material group
 };
 
+// Plume: a = c = the sphere's radius r (centre at the origin), length_m from
+// the sphere's pole at z = -r to the cone's apex on +z.
+struct PlumeProfile {
+  double apex_z_m = 0;         // h = length - r
+  double tangent_z_m = 0;      // where the cone touches the sphere: r^2 / h
+  double tangent_radius_m = 0; // radius of that circle: r sqrt(1 - r^2 / h^2)
+};
+PlumeProfile plume_profile(const ShapeGeom& g);
+
 // Decodes dimensions (checked as universe::check_dimensions; throws
 // eoir::Error naming `field`). Composite is not a simple shape, and a mesh
 // needs its model (make_part): out_of_range.

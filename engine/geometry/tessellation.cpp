@@ -16,6 +16,10 @@
 //  - mesh: one patch per triangle of the part's group (the model's own
 //    tessellation, whatever the target), two (front, back) on open sheets;
 //    grid = each triangle's first patch in the part.
+//  - plume: the sphere below the tangent circle in latitude bands as the
+//    sphere's (the last band ends at the tangent circle), then the cone's
+//    side as a cone's; grid = {n_lat, off_0, ..., off_n_lat, n_angle,
+//    n_slant, off}.
 //  - none: no patches.
 #include <algorithm>
 #include <cmath>
@@ -157,6 +161,68 @@ void tessellate_frustum(Tessellation& t, std::int32_t part, const ShapePart& sp,
   tessellate_cap(t, part, sp, rt, h, 1.0, target, grid, off);
 }
 
+void tessellate_plume(Tessellation& t, std::int32_t part, const ShapePart& sp, const ShapeGeom& g, double target,
+                      std::vector<std::int32_t>& grid) {
+  const PlumeProfile pp = plume_profile(g);
+  const double r = g.a_m;
+  const double beta_t = std::asin(std::clamp(pp.tangent_z_m / r, -1.0, 1.0));
+  // (At least 3 bands of 8 cells, and 8 cells around the cone: coarse
+  // targets still face every way.)
+  const int n_lat = std::max(3, count_for(r * (beta_t + 0.5 * pi), target));
+  const double dbeta = (beta_t + 0.5 * pi) / n_lat;
+  grid.push_back(n_lat);
+  std::int32_t off = 0;
+  grid.push_back(off);
+  for (int i = 0; i < n_lat; ++i) {
+    const double b1 = -0.5 * pi + i * dbeta, b2 = (i + 1 == n_lat) ? beta_t : b1 + dbeta;
+    const double band = 2.0 * pi * r * r * (std::sin(b2) - std::sin(b1));  // a sphere's zone: 2 pi r dz
+    const int n_lon = static_cast<int>(std::max(8.0, std::round(band / (target * target))));
+    const double bm = 0.5 * (b1 + b2);
+    for (int j = 0; j < n_lon; ++j) {
+      const double lam = (j + 0.5) * 2.0 * pi / n_lon;
+      const Vec3 centre(r * std::cos(bm) * std::cos(lam), r * std::cos(bm) * std::sin(lam), r * std::sin(bm));
+      add_patch(t, part, sp, centre, centre.normalized(), band / n_lon);
+    }
+    off += n_lon;
+    grid.push_back(off);
+  }
+  // The cone's side from the tangent circle (rb) to the apex (rt = 0).
+  const double rb = pp.tangent_radius_m, len = pp.apex_z_m - pp.tangent_z_m;
+  const double slant = std::hypot(rb, len);
+  const double side = pi * rb * slant;
+  const int n_h = count_for(slant, target);
+  const int n_a = static_cast<int>(std::max(8.0, std::round(side / (n_h * target * target))));
+  grid.insert(grid.end(), {n_a, n_h, off});
+  for (int i = 0; i < n_h; ++i) {
+    const double w = frustum_w(rb, 0.0, (i + 0.5) / n_h);
+    const double z = pp.tangent_z_m + w * len, rr = rb * (1.0 - w);
+    for (int j = 0; j < n_a; ++j) {
+      const double phi = (j + 0.5) * 2.0 * pi / n_a;
+      const Vec3 c(rr * std::cos(phi), rr * std::sin(phi), z);
+      add_patch(t, part, sp, c, Vec3(std::cos(phi), std::sin(phi), rb / len).normalized(), side / (n_h * n_a));
+    }
+  }
+}
+
+std::int32_t plume_cell(const std::vector<std::int32_t>& grid, const ShapeGeom& g, const Vec3& p) {
+  const PlumeProfile pp = plume_profile(g);
+  const int n_lat = grid[0];
+  if (p.z() <= pp.tangent_z_m) {
+    const double r = g.a_m;
+    const double beta_t = std::asin(std::clamp(pp.tangent_z_m / r, -1.0, 1.0));
+    const double beta = std::atan2(p.z(), std::hypot(p.x(), p.y()));
+    const int i = clamp_index((beta + 0.5 * pi) / ((beta_t + 0.5 * pi) / n_lat), n_lat);
+    const int n_lon = grid[1 + i + 1] - grid[1 + i];
+    return grid[1 + i] + clamp_index(azimuth(p.x(), p.y()) / (2.0 * pi / n_lon), n_lon);
+  }
+  const std::size_t c = static_cast<std::size_t>(n_lat) + 2;
+  const int n_a = grid[c], n_h = grid[c + 1], off = grid[c + 2];
+  const double len = pp.apex_z_m - pp.tangent_z_m;
+  const double w = std::clamp((p.z() - pp.tangent_z_m) / len, 0.0, 1.0);
+  const int i = clamp_index(frustum_f(pp.tangent_radius_m, 0.0, w) * n_h, n_h);
+  return off + i * n_a + clamp_index(azimuth(p.x(), p.y()) / (2.0 * pi / n_a), n_a);
+}
+
 std::int32_t spheroid_cell(const std::vector<std::int32_t>& grid, const ShapeGeom& g, const Vec3& p) {
   const int n_lat = grid[0];
   const double beta = std::atan2(p.z() / g.c_m, std::sqrt(p.x() * p.x() + p.y() * p.y()) / g.a_m);
@@ -257,6 +323,7 @@ Tessellation tessellate(const std::vector<ShapePart>& parts, double target_patch
       case ShapeKind::cone:
       case ShapeKind::coupler: tessellate_frustum(t, part, parts[k], g, target, grid); break;
       case ShapeKind::mesh: tessellate_mesh(t, part, parts[k], g, grid); break;
+      case ShapeKind::plume: tessellate_plume(t, part, parts[k], g, target, grid); break;
       case ShapeKind::none:
       case ShapeKind::composite: break;
     }
@@ -285,6 +352,7 @@ std::int32_t patch_in_part(const Tessellation& t, std::int32_t part, const Shape
     case ShapeKind::cone:
     case ShapeKind::coupler: local = frustum_cell(grid, g, p); break;
     case ShapeKind::mesh: local = mesh_cell(grid, g, p, normal_part); break;
+    case ShapeKind::plume: local = plume_cell(grid, g, p); break;
     case ShapeKind::none:
     case ShapeKind::composite: return -1;
   }

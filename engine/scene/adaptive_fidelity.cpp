@@ -58,7 +58,7 @@ std::vector<PlanckTerm> planck_terms(const World& world, const universe::Univers
     const universe::Object* u = universe.find(o->name);
     if (!u) continue;
     out.push_back(u->body.temperature_K);
-    for (const universe::ShapePart& p : universe::shape_parts(u->body))
+    for (const universe::ShapePart& p : universe::shape_parts_at(*u, world.time))
       if (p.temperature_K) out.push_back(*p.temperature_K);
   }
   const radiometry::SpectralBand& band = world.spectral().band;

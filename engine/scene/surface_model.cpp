@@ -47,14 +47,15 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
     geography_ = Geography{};
   }
   if (self_radiance_.empty()) {
-    for (const PartSurface& s : parts_) reflects_ = reflects_ || s.spectrum->reflects();
+    for (const PartSurface& s : parts_) reflects_ = reflects_ || (!s.emits_only && s.spectrum->reflects());
     for (const auto* s : geography_.class_spectra) reflects_ = reflects_ || (s && s->reflects());
     for (const auto* s : geography_.albedo_spectra) reflects_ = reflects_ || (s && s->reflects());
     if (geography_.clouds) reflects_ = reflects_ || geography_.cloud_spectrum->reflects();
   }
   for (const PartSurface& s : parts_)
-    part_radiance_.push_back(self_radiance_.empty() ? s.spectrum->emission_radiance(s.temperature_K)
-                                                    : view.integrate(self_radiance_));
+    part_radiance_.push_back(!self_radiance_.empty()   ? view.integrate(self_radiance_)
+                             : !s.self_radiance.empty() ? view.integrate(s.self_radiance)
+                                                        : s.spectrum->emission_radiance(s.temperature_K));
   if (thermal_.subsolar && temperature_table_size > 0) {
     const auto n = temperature_table_size;
     table_T0_ = std::min(thermal_.night_K, thermal_.subsolar_K);
@@ -75,6 +76,8 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
     emission_bound_ = std::numeric_limits<double>::infinity();
     return;
   }
+  for (const PartSurface& s : parts_)
+    if (!s.self_radiance.empty()) emission_bound_ = std::numeric_limits<double>::infinity();
   double hottest_K = 0;
   for (const PartSurface& s : parts_) hottest_K = std::max(hottest_K, s.temperature_K);
   if (thermal_.subsolar) hottest_K = std::max({hottest_K, thermal_.subsolar_K, thermal_.night_K}) + table_dT_;
@@ -157,6 +160,7 @@ SurfacePoint SurfaceModel::at(const SurfaceSite& site) const {
 
 double SurfaceModel::temperature_K(const SurfacePoint& point) const {
   const PartSurface& part = parts_[index(point.site.part)];
+  if (part.emits_only) return part.temperature_K;  // a plume keeps its own, whatever the body's thermal model
   const Geography& g = geography_;
   if (!g.climatology || !g.land_mask) return thermal_.at(point.site.normal_body, part.temperature_K);
   const auto kind = g.land_mask->at(point.latitude_deg, point.longitude_deg) ? universe::SurfaceKind::land
@@ -168,6 +172,10 @@ double SurfaceModel::temperature_K(const SurfacePoint& point) const {
 void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& out) const {
   if (!self_radiance_.empty()) {
     for (std::size_t i = 0; i < out.size(); ++i) out[i] += self_radiance_[i];
+    return;
+  }
+  if (const std::vector<double>& own = parts_[index(point.site.part)].self_radiance; !own.empty()) {
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] += own[i];
     return;
   }
   const double f = point.cloud_fraction, s = point.reflectance_scale;
@@ -188,7 +196,7 @@ void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& 
 }
 
 double SurfaceModel::emission_radiance(const SurfacePoint& point) const {
-  if (!varying()) return part_radiance(point.site.part);
+  if (!varying() || !parts_[index(point.site.part)].self_radiance.empty()) return part_radiance(point.site.part);
   const double f = point.cloud_fraction, s = point.reflectance_scale;
   if (f == 0.0 && s == 1.0) return point.spectrum->emission_radiance(temperature_K(point));
   double L = 0;
@@ -211,6 +219,9 @@ void SurfaceModel::add_srf(const SurfacePoint& point, double weight, std::vector
 }
 
 double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point) const {
+  const PartSurface& part = parts_[index(point.site.part)];
+  if (!part.self_radiance.empty()) return part_radiance(point.site.part);
+  if (part.emits_only) return emission_radiance(point);  // (outside the L(T) table's range)
   if (!thermal_.subsolar || table_.empty() || geography_.bitmap() || geography_.climatology || geography_.clouds)
     return emission_radiance(point);
   const auto& row = table_[index(point.site.part)];

@@ -29,6 +29,8 @@ using Vec3 = Eigen::Vector3d;
 struct PartSurface {
   const SurfaceSpectrum* spectrum = nullptr;  // the world's, shared by parts of the same material
   double temperature_K = 0.0;                 // the uniform thermal model's (or the eclipse model's result)
+  std::vector<double> self_radiance;          // this part's tabulated radiance (a plume's, spec 4.3.6), or empty
+  bool emits_only = false;                    // reflects nothing whatever its material (a plume: spec 4.3.6)
 };
 
 // A point of the surface: its part, position and outward normal (body frame).
@@ -93,7 +95,9 @@ class SurfaceModel {
   // Some part (or map class) reflects light in the band.
   bool reflects() const { return reflects_; }
   bool reflects(const SurfacePoint& point) const {
-    return self_radiance_.empty() && (point.spectrum->reflects() || point.cloud_fraction > 0);
+    const PartSurface& part = parts_[index(point.site.part)];
+    return self_radiance_.empty() && part.self_radiance.empty() && !part.emits_only &&
+           (point.spectrum->reflects() || point.cloud_fraction > 0);
   }
   // The reflected spectrum at a point (eq. 4, SRF x E): `out` = the sum over
   // its layers (the surface, and the cloud top by its fraction) of the

@@ -43,6 +43,13 @@ double patch_size_m(const universe::Object& o, const std::vector<geometry::Shape
   if (o.body.patch_size_m > 0) return o.body.patch_size_m;
   if (o.kind == ObjectKind::central_body)
     return f.central_body_patch_size_m * o.body.dimensions_m[0] / 6378137.0;  // scaled from the Earth's radius
+  if (o.kind == ObjectKind::missile && !o.body.missile_stage_list->empty()) {
+    // A missile's stages and plumes are long and thin: patches from its
+    // narrowest stage's diameter, not its length (or its plume's).
+    double narrowest = std::numeric_limits<double>::infinity();
+    for (const universe::MissileStage& s : *o.body.missile_stage_list) narrowest = std::min(narrowest, s.radius_m);
+    return 2.0 * narrowest / f.object_patch_divisions;
+  }
   double size = 0;
   for (const auto& part : parts) size = std::max(size, 2.0 * geometry::shape_bounding_radius_m(part.geom));
   return std::max(size, 1e-6) / f.object_patch_divisions;
@@ -62,6 +69,12 @@ double shape_volume_m3(const geometry::ShapeGeom& g) {
       return pi * g.length_m * (r1 * r1 + r1 * r2 + r2 * r2) / 3.0;
     }
     case universe::ShapeKind::mesh: return g.mesh->volume_m3(g.mesh_group);  // (its closed pieces')
+    case universe::ShapeKind::plume: {  // the sphere less its cap above the tangent circle, plus the cone
+      const geometry::PlumeProfile p = geometry::plume_profile(g);
+      const double r = g.a_m, cap = r - p.tangent_z_m;
+      return 4.0 / 3.0 * pi * r * r * r - pi * cap * cap * (3.0 * r - cap) / 3.0 +
+             pi * p.tangent_radius_m * p.tangent_radius_m * (p.apex_z_m - p.tangent_z_m) / 3.0;
+    }
     default: return 0.0;
   }
 }
@@ -141,7 +154,7 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
                                    const World& world) {
   if (o.kind == ObjectKind::sensor || o.kind == ObjectKind::star_field) return nullptr;
   if (o.kind != ObjectKind::central_body && !o.state.valid) return nullptr;
-  const std::vector<universe::ShapePart> shape = universe::shape_parts(o.body);
+  const std::vector<universe::ShapePart> shape = universe::shape_parts_at(o, t);
   if (shape.empty()) return nullptr;
   universe::Kinematics k = universe::kinematics_at(universe, o, t);
   auto w = std::make_unique<WorldObject>();
@@ -164,8 +177,11 @@ std::unique_ptr<WorldObject> place(const universe::Universe& universe, const uni
   w->kind = o.kind;
   w->central_body = o.kind == ObjectKind::central_body;
   geometry::PlacedObject& po = w->placed;
+  const bool staged = o.kind == ObjectKind::missile && !o.body.missile_stage_list->empty();
+  w->parts_hide_each_other = staged;
   for (std::size_t i = 0; i < shape.size(); ++i) {
-    const std::string field = o.body.shape == universe::ShapeKind::composite
+    const std::string field = staged ? o.name + ".missile_stages"
+                              : o.body.shape == universe::ShapeKind::composite
                                   ? o.name + ".composite[" + std::to_string(i) + "]"
                                   : o.name + ".shape";
     po.parts.push_back(geometry::make_part(shape[i], field));
@@ -541,7 +557,7 @@ double WorldObject::point_irradiance_W_cm2() const {
   // (the spectral vector is at the sensor already: T_out applied)
   if (!detailed_point_source) return world_->view.spectral.integrate(point_spectral_irradiance());
   if (placed.parts.size() == 1 && plain()) return plain_radiance(0) * (projected_area_m2() / r2);
-  if (placed.parts.size() > 1) {  // parts may hide each other: each patch as much as is visible
+  if (hidden_by_window()) {  // parts may hide each other: each patch as much as is visible
     const std::vector<double>& omega = visible_window().patch_solid_angle_sr;
     double sum = 0;
     for (std::size_t k = 0; k < omega.size(); ++k)
@@ -610,9 +626,26 @@ double WorldObject::visible_patch_sum(const geometry::Tessellation& t, PatchRadi
   for (std::size_t k = 0; k < t.patches.size(); ++k) {
     const geometry::Patch& patch = t.patches[k];
     const double facing = patch.normal_body.dot(v);
-    if (facing > 0) sum += radiance(static_cast<std::int32_t>(k)) * facing * patch.area_m2;
+    if (facing > 0 && !(parts_hide_each_other && patch_hidden(patch, v)))
+      sum += radiance(static_cast<std::int32_t>(k)) * facing * patch.area_m2;
   }
   return sum;
+}
+
+bool WorldObject::patch_hidden(const geometry::Patch& patch, const Vec3& v) const {
+  const double lift = 1e-9 * std::max(bounding_radius_m, 1e-3);  // off the patch's own surface
+  for (std::size_t q = 0; q < placed.parts.size(); ++q) {
+    if (static_cast<std::int32_t>(q) == patch.part) continue;
+    const geometry::ShapePart& sp = placed.parts[q];
+    const Vec3 o = sp.orientation.conjugate() * (patch.centre_body_m + lift * patch.normal_body - sp.offset_m);
+    if (geometry::shape_contains(sp.geom, o)) return true;
+    double t = 0;
+    Vec3 n;
+    if (geometry::intersect_shape(sp.geom, o, sp.orientation.conjugate() * v, 0.0,
+                                  std::numeric_limits<double>::infinity(), t, n))
+      return true;
+  }
+  return false;
 }
 
 std::vector<double> WorldObject::point_spectral_irradiance() const {
@@ -634,11 +667,14 @@ std::vector<double> WorldObject::point_spectral_irradiance() const {
   const Vec3 v = toward_observer_body();
   const Vec3 toward = placed.body_to_frame * v;
   const geometry::Tessellation& t = tessellation();
-  const std::vector<double>* visible = placed.parts.size() > 1 ? &visible_window().patch_solid_angle_sr : nullptr;
+  const std::vector<double>* visible = hidden_by_window() ? &visible_window().patch_solid_angle_sr : nullptr;
   for (std::size_t k = 0; k < t.patches.size(); ++k) {
     const geometry::Patch& patch = t.patches[k];
     // dOmega as point_irradiance_W_cm2 takes it
-    const double omega = visible ? (*visible)[k] : std::max(0.0, patch.normal_body.dot(v)) * patch.area_m2 / r2;
+    const double omega = visible ? (*visible)[k]
+                         : parts_hide_each_other && patch_hidden(patch, v)
+                             ? 0.0
+                             : std::max(0.0, patch.normal_body.dot(v)) * patch.area_m2 / r2;
     if (!(omega > 0)) continue;
     const std::vector<double> L = spectral_radiance(patch.part, patch.centre_body_m, patch.normal_body, toward);
     const std::vector<double> received = at_sensor(L, patch.centre_body_m, patch.normal_body);
@@ -1249,7 +1285,7 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   for (std::size_t i = 0; i < world->objects.size(); ++i) {
     WorldObject& w = *world->objects[i];
     const universe::Object& o = *sources[i];
-    const std::vector<universe::ShapePart> shape = universe::shape_parts(o.body);
+    const std::vector<universe::ShapePart> shape = universe::shape_parts_at(o, t);
     ThermalField thermal;
     if (o.body.thermal_model == universe::ThermalModel::subsolar) {
       thermal.subsolar = true;
@@ -1273,10 +1309,14 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
                                     ? o.name + ".composite[" + std::to_string(p) + "].material"
                                     : o.name + ".material";
       double T = shape[p].temperature_K.value_or(o.body.temperature_K);
-      if (eclipse) T = std::pow(te4 + fraction * (std::pow(T, 4.0) - te4), 0.25);
+      if (eclipse && shape[p].kind != universe::ShapeKind::plume)  // (a plume keeps its temperature)
+        T = std::pow(te4 + fraction * (std::pow(T, 4.0) - te4), 0.25);
       parts.push_back(PartSurface{builder.spectrum(shape[p].material.value_or(o.body.material),
                                                    shape[p].reflectance.value_or(o.body.reflectance), field, w.view()),
-                                  T});
+                                  T,
+                                  shape[p].spectrum ? builder.self_radiance(*shape[p].spectrum, o.name + ".missile_stages")
+                                                    : std::vector<double>{},
+                                  shape[p].kind == universe::ShapeKind::plume});
     }
     Geography geography;
     if (w.central_body) {

@@ -303,6 +303,10 @@ class WorldObject {
   radiometry::DiskPhotometry disk_photometry;  // its disc as a point (eq. 7): Lambertian, or a natural body's law
   Imaging imaging = Imaging::outside;
   bool detailed_point_source = true;  // spec 4.1.6.1: detailed or simple
+  // Its parts hide one another in the detailed point-source sum (a missile's
+  // stages and plumes, spec 4.1.6.1): a patch inside another part, or whose
+  // line toward the observer meets another part, is left out.
+  bool parts_hide_each_other = false;
   double light_time_s = 0;        // the Moon and the planets: seen where they were (apparent place)
   double streak_columns = 0, streak_rows = 0;  // point sources: displacement on the grid over the integration
   double patch_size_m = 0;        // target edge of the tessellation's patches
@@ -411,6 +415,13 @@ class WorldObject {
     std::vector<double> radiance;  // toward the receiver, lit by the Sun
   };
   // sum over the patches of t facing the observer of L_k cos A_k (ERRATA eq. 11 times R^2).
+  // parts_hide_each_other: the patch is inside another part or another part
+  // lies on its line toward the observer (v: toward the observer, body frame).
+  bool patch_hidden(const geometry::Patch& patch, const Vec3& v) const;
+  // Whether the detailed sum takes each patch's visible share from
+  // visible_window (objects of several parts that may hide each other),
+  // rather than facing patches (one part; a staged missile: patch_hidden).
+  bool hidden_by_window() const { return placed.parts.size() > 1 && !parts_hide_each_other; }
   template <class PatchRadiance>
   double visible_patch_sum(const geometry::Tessellation& t, PatchRadiance radiance) const;
   // to_sensor, with or without L_scatter on the Earth's surface (a band

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "universe/atmosphere_settings.hpp"
 #include "universe/cloud_settings.hpp"
 #include "universe/central_bodies.hpp"
+#include "universe/missile.hpp"
 #include "universe/sensor_parameters.hpp"
 #include "universe/shapes.hpp"
 
@@ -89,6 +91,13 @@ struct BodyProperties {
   PointSourceModel point_source_model = PointSourceModel::automatic;
   std::string spectrum;  // a tabulated self-radiance (universe/spectrum_table.hpp) instead of eps B(T); "" none
   bool rings = false;    // Saturn (central body): its disc's brightness with the rings' (on by default)
+  // Missiles (universe/missile.hpp): stages as set, parsed once; "[]" = none
+  // (the missile is its shape). The launch as set ("" = not launched).
+  std::string missile_stages = "[]";
+  std::shared_ptr<const std::vector<MissileStage>> missile_stage_list =
+      std::make_shared<const std::vector<MissileStage>>();
+  std::string launch_time_utc;
+  std::optional<EngineTime> launch_time;
 };
 
 // The shape parts of a body in its body frame: the composite's parts, one part

@@ -33,9 +33,9 @@ std::vector<Spec> body_properties(bool missile) {
   std::vector<Spec> t;
   Spec shape = enum_property<Object, ShapeKind>(
       "shape",
-      "Shape (spec 4.1.5.1): sphere, oblate, box, plate, cylinder, cone, coupler, none, composite or mesh (a 3-D "
-      "model file, mesh_file); a change to a "
-      "shape taking another number of dimensions resets dimensions_m to 1 m each",
+      "Shape (spec 4.1.5.1): sphere, oblate, box, plate, cylinder, cone, coupler, none, composite, mesh (a 3-D "
+      "model file, mesh_file) or plume (spec 4.3.6); a change to a shape taking another number of dimensions resets "
+      "dimensions_m to 1 m each (plume: 1 m, 3 m)",
       [](Object& o) -> auto& { return o.body.shape; }, shape_names());
   const auto set_shape = shape.set;
   shape.set = [set_shape](Object& o, const Value& v) {
@@ -43,12 +43,15 @@ std::vector<Spec> body_properties(bool missile) {
     set_shape(o, v);
     const std::size_t n = shape_info(o.body.shape).dimensions.size();
     if (o.body.dimensions_m.size() != n) o.body.dimensions_m.assign(n, 1.0);
+    if (o.body.shape == ShapeKind::plume && !(o.body.dimensions_m[1] > 2.0 * o.body.dimensions_m[0]))
+      o.body.dimensions_m = {1.0, 3.0};  // (1 m and 1 m has no cone)
   };
   t.push_back(shape);
   t.push_back(Spec{"dimensions_m", ValueType::array, "m",
                    "Dimensions of the shape: sphere [radius], oblate [equatorial, polar radius], box [x, y, z], plate "
                    "[x, y], cylinder [radius, length], cone [base radius, length], coupler [base radius, top radius, "
-                   "length], none [], mesh [scale]",
+                   "length], plume [sphere radius, length from the sphere's far pole to the apex > 2 radius], none [], "
+                   "mesh [scale]",
                    [](const Object& o) { return Value(o.body.dimensions_m); },
                    [](Object& o, const Value& v) {
                      refuse_central_body(o, "dimensions_m");
@@ -138,7 +141,8 @@ std::vector<Spec> body_properties(bool missile) {
   t.push_back(number_property<Object>(
       "patch_size_m", "m",
       "Edge of the patches dA the surface is divided into (spec 4.1.5.2); 0 = automatic (the imaging sensor's "
-      "fidelity: 785 km at the Earth's radius for central bodies, an eighth of the object's size otherwise)",
+      "fidelity: 785 km at the Earth's radius for central bodies, an eighth of the object's size otherwise, of "
+      "its narrowest stage's diameter for a missile with missile_stages)",
       [](Object& o) -> auto& { return o.body.patch_size_m; }, Range{0, max_length_m}));
   if (missile) {
     Spec stages = integer_property<Object>("stages", "count", "Number of stages, 1-18 (spec 4.3.6)",
@@ -149,9 +153,47 @@ std::vector<Spec> body_properties(bool missile) {
       if (integer_of(v, "stages") > static_cast<std::int64_t>(limits::max_missile_stages))
         throw Error(Status::limit_exceeded, "stages: at most " + std::to_string(limits::max_missile_stages) +
                                                 " stages per missile, got " + std::to_string(integer_of(v, "stages")));
+      const auto& list = *o.body.missile_stage_list;
+      if (!list.empty() && integer_of(v, "stages") != static_cast<std::int64_t>(list.size()))
+        throw Error(Status::not_allowed, "stages: missile '" + o.name + "' has " + std::to_string(list.size()) +
+                                             " stages in missile_stages; the count follows them");
       set_stages(o, v);
     };
     t.push_back(stages);
+    t.push_back(Spec{"missile_stages", ValueType::string, "",
+                     "Stages as a JSON array, first (launched) stage first (spec 4.3.6): {length_m, radius_m, parts "
+                     "(composite parts in the stage frame, z = 0 at its aft end; default a cylinder), separation_s, "
+                     "drawn_after_separation_s, separation_speed_m_s, plume {temperature_K or spectrum, length_scale, "
+                     "width_scale, on_s, off_s}}; times from the stage's time 0 (launch, then the separation of the "
+                     "stage below). \"[]\" = none: the missile is its shape. Sets stages to the count",
+                     [](const Object& o) { return Value(o.body.missile_stages); },
+                     [](Object& o, const Value& v) {
+                       const std::string& text = string_of(v, "missile_stages");
+                       auto list = std::make_shared<const std::vector<MissileStage>>(
+                           parse_missile_stages(text, "missile_stages"));
+                       if (!list->empty()) o.body.stages = static_cast<std::int64_t>(list->size());
+                       o.body.missile_stage_list = std::move(list);
+                       o.body.missile_stages = text;
+                     }});
+    t.push_back(Spec{"launch_time_utc", ValueType::string, "",
+                     "Launch time, ISO-8601 UTC (time 0 of the first stage, spec 4.3.6); \"\" = not launched "
+                     "(the stack stands whole, no plume)",
+                     [](const Object& o) { return Value(o.body.launch_time_utc); },
+                     [](Object& o, const Value& v) {
+                       const std::string& text = string_of(v, "launch_time_utc");
+                       if (text.empty()) {
+                         o.body.launch_time.reset();
+                       } else {
+                         JulianDate utc;
+                         try {
+                           utc = utc_from_iso(text);
+                         } catch (const Error& e) {
+                           throw Error(e.status(), std::string("launch_time_utc: ") + e.what());
+                         }
+                         o.body.launch_time = EngineTime::from(utc, "launch_time_utc");
+                       }
+                       o.body.launch_time_utc = text;
+                     }});
   }
   return t;
 }

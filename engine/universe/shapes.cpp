@@ -18,6 +18,9 @@ const std::vector<ShapeInfo>& shapes() {
       {ShapeKind::none, "none", {}},
       {ShapeKind::composite, "composite", {}},  // parts in the object's `composite` property (universe/composite.hpp)
       {ShapeKind::mesh, "mesh", {"scale"}},    // metres per unit of the file named by `mesh_file`
+      // Rocket plume (spec 4.3.6): a sphere of `radius` and its tangent cone,
+      // `length` from the sphere's far pole to the cone's apex.
+      {ShapeKind::plume, "plume", {"radius", "length"}},
   };
   return table;
 }
@@ -41,6 +44,10 @@ void check_dimensions(ShapeKind kind, const std::vector<double>& dims, const std
   for (size_t i = 0; i < dims.size(); ++i)
     check_range(dims[i], Range{object_bounds::min_length_m, object_bounds::max_length_m},
                 field + "[" + std::to_string(i) + "] (" + shape.dimensions[i] + ")", "m");
+  if (kind == ShapeKind::plume && !(dims[1] > 2.0 * dims[0]))
+    throw Error(Status::out_of_range, field + "[1] (length): a plume's length must exceed twice its radius (the "
+                                              "cone's apex outside the sphere), got " +
+                                          std::to_string(dims[1]) + " m for radius " + std::to_string(dims[0]) + " m");
 }
 
 std::vector<ShapePart> split_mesh(const ShapePart& part, const MeshMaterials& materials) {

@@ -15,7 +15,7 @@
 
 namespace eoir::universe {
 
-enum class ShapeKind : int { sphere, oblate, box, plate, cylinder, cone, coupler, none, composite, mesh };
+enum class ShapeKind : int { sphere, oblate, box, plate, cylinder, cone, coupler, none, composite, mesh, plume };
 
 struct ShapeInfo {
   ShapeKind kind;
@@ -23,13 +23,13 @@ struct ShapeInfo {
   std::vector<const char*> dimensions;  // meaning of each entry of dimensions_m
 };
 
-// sphere, oblate, box, plate, cylinder, cone, coupler, none, composite, mesh.
+// sphere, oblate, box, plate, cylinder, cone, coupler, none, composite, mesh, plume.
 const std::vector<ShapeInfo>& shapes();
 const ShapeInfo& shape_info(ShapeKind kind);
 // Throws eoir::Error(unknown_name) naming `field` with the list of shapes.
 ShapeKind parse_shape(const std::string& name, const std::string& field);
 // Throws eoir::Error(out_of_range) unless dims fits the shape (count, each
-// within object_bounds' lengths).
+// within object_bounds' lengths; a plume's length above twice its radius).
 void check_dimensions(ShapeKind kind, const std::vector<double>& dims, const std::string& field);
 
 // One simple shape placed in its object's body frame (a composite's part, or
@@ -47,6 +47,7 @@ struct ShapePart {
   std::string mesh_file;
   std::shared_ptr<const MeshModel> mesh;
   std::int32_t mesh_group = -1;  // -1: every group (before the split)
+  std::optional<std::string> spectrum;  // a tabulated self-radiance (spectrum table) instead of eps B(T); else the object's
 };
 
 // What a mesh file's material (by its name in the file) becomes: an engine

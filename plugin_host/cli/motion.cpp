@@ -137,6 +137,77 @@ PosVel Ephemeris::at(double t) const {
   return out;
 }
 
+// ----------------------------------------------------------- Ballistic
+BallisticArc::BallisticArc(double lat1, double lon1, double lat2, double lon2, double launch_s, double burn_s,
+                           double apogee_height_m)
+    : launch_s_(launch_s), burn_s_(burn_s) {
+  for (double v : {lat1, lon1, lat2, lon2, launch_s})
+    if (!std::isfinite(v))
+      throw std::invalid_argument("launch_lat_deg: launch and impact coordinates and times must be finite");
+  if (!(burn_s >= 0) || !std::isfinite(burn_s)) throw std::invalid_argument("burn_s: must be >= 0");
+  // The directions of the geodetic surface points (the arc ends on them).
+  const auto unit = [](double lat, double lon) { return normalize(geodetic_to_ecef(lat, lon, 0.0)); };
+  const Vec3 u1 = unit(lat1, lon1), u2 = unit(lat2, lon2);
+  theta_ = std::atan2(norm(cross(u1, u2)), dot(u1, u2));
+  const double R = kBallisticEarthRadius_m;
+  if (!(theta_ * R > 1e3))
+    throw std::invalid_argument("impact_lat_deg: the impact lies within 1 km of the launch point");
+  if (!(theta_ < kPi - 1e-6))
+    throw std::invalid_argument("impact_lat_deg: the impact is antipodal to the launch point (no single plane)");
+  e1_ = u1;
+  e2_ = normalize(sub(u2, scale(u1, dot(u1, u2))));
+  const double c = std::cos(theta_ / 2), s = std::sin(theta_ / 2);
+  if (std::isnan(apogee_height_m)) {  // minimum energy
+    a_ = R * (1 + s) / 2;
+    e_ = c / (1 + s);
+  } else {
+    if (!(apogee_height_m >= 1e3) || !std::isfinite(apogee_height_m))
+      throw std::invalid_argument("apogee_height_m: must be at least 1 km");
+    const double ra = R + apogee_height_m;
+    e_ = (ra - R) / (ra - R * c);
+    a_ = ra / (1 + e_);
+  }
+  const double mu = kMuEarthKm3s2 * 1e9;
+  n_ = std::sqrt(mu / (a_ * a_ * a_));
+  // The launch point at true anomaly pi - theta/2 (apogee at pi), the impact
+  // at pi + theta/2: symmetric mean anomalies pi -/+ delta.
+  const double delta = kPi - true_to_mean_anomaly(kPi - theta_ / 2, e_);
+  m0_ = kPi - delta;
+  flight_s_ = 2 * delta / n_;
+  if (!(burn_s < 2 * flight_s_))
+    throw std::invalid_argument("burn_s: must be below twice the free flight (" + std::to_string(flight_s_) + " s)");
+}
+
+PosVel BallisticArc::kepler_at(double tau) const {
+  const double E = solve_kepler(m0_ + n_ * tau, e_);
+  double nu = eccentric_to_true_anomaly(E, e_);
+  if (nu < 0) nu += kTwoPi;
+  const double phi = nu - kPi + theta_ / 2;  // from the launch point in the plane
+  const double p = a_ * (1 - e_ * e_), r = p / (1 + e_ * std::cos(nu));
+  const double k = std::sqrt(kMuEarthKm3s2 * 1e9 / p);
+  const Vec3 radial = add(scale(e1_, std::cos(phi)), scale(e2_, std::sin(phi)));
+  const Vec3 along = add(scale(e1_, -std::sin(phi)), scale(e2_, std::cos(phi)));
+  return PosVel{scale(radial, r), add(scale(radial, k * e_ * std::sin(nu)), scale(along, k * (1 + e_ * std::cos(nu))))};
+}
+
+PosVel BallisticArc::at(double t) const {
+  const double s = std::clamp(t - launch_s_, 0.0, burn_s_ / 2 + flight_s_);
+  double tau = s - burn_s_ / 2, rate = 1;
+  if (s < burn_s_) {  // powered: tau = s^2 / (2 burn), d tau / ds = s / burn
+    tau = s * s / (2 * burn_s_);
+    rate = s / burn_s_;
+  }
+  PosVel out = kepler_at(std::clamp(tau, 0.0, flight_s_));
+  out.velocity = scale(out.velocity, rate);
+  if (t < launch_s_ || t - launch_s_ >= burn_s_ / 2 + flight_s_) out.velocity = {0, 0, 0};  // on the pad, landed
+  // Height above the sphere laid above the WGS84 ellipsoid along the same direction.
+  constexpr double a = 6378137.0, b = 6356752.314245;
+  const Vec3 u = normalize(out.position);
+  const double ellipsoid = 1.0 / std::sqrt((u[0] * u[0] + u[1] * u[1]) / (a * a) + u[2] * u[2] / (b * b));
+  out.position = add(out.position, scale(u, ellipsoid - kBallisticEarthRadius_m));
+  return out;
+}
+
 // ------------------------------------------------------------- vectors
 Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -229,6 +300,10 @@ Quat point_z_axis(const Vec3& boresight, const Vec3& hint) {
   x = normalize(x);
   const Vec3 y = cross(z, x);
   return quat_from_axes(x, y, z);
+}
+
+Quat velocity_attitude(const PosVel& s) {
+  return norm(s.velocity) > 0 ? point_z_axis(s.velocity, s.position) : point_z_axis(s.position, {0, 0, 1});
 }
 
 Quat nadir_attitude(const PosVel& s) { return point_z_axis(scale(s.position, -1.0), s.velocity); }

@@ -64,6 +64,43 @@ class KeplerOrbit {
 // Specific orbital energy v^2/2 - mu/r (J/kg).
 double orbital_energy(const PosVel& s, double mu_m3s2);
 
+// A ballistic missile's flight from a launch point to an impact point
+// (spec 4.3.6's missiles, the engine's stages riding on it), Earth-fixed:
+//  - free flight: the Keplerian ellipse through both points of a spherical
+//    Earth of mean radius kBallisticEarthRadius_m, symmetric about its
+//    apogee; the minimum-energy ellipse (semi-major axis (R + R sin(theta/2))
+//    / 2, e = cos(theta/2) / (1 + sin(theta/2)), theta the central angle), or
+//    the one whose apogee is apogee_height_m above the sphere (lofted or
+//    depressed: e = (r_a - R) / (r_a - R cos(theta/2)), a = r_a / (1 + e));
+//  - powered flight: the first stretch of that arc retraced from rest with a
+//    speed rising linearly over burn_s (Kepler time tau = s^2 / (2 burn_s)),
+//    reaching the arc's speed at burnout (tau = s - burn_s / 2 after it);
+//  - heights above the sphere are laid above the WGS84 ellipsoid along the
+//    geocentric direction; the Earth's rotation is left out (the arc is a
+//    Kepler orbit in the rotating frame: no Coriolis or centrifugal terms).
+// Before the launch the missile stands at the launch point, after the impact
+// at the impact point, at rest.
+constexpr double kBallisticEarthRadius_m = 6371008.8;  // IUGG mean radius
+
+class BallisticArc {
+ public:
+  // Latitudes and longitudes in degrees (WGS84 geodetic: the arc ends on
+  // those surface points); apogee_height_m NaN: minimum energy. Throws
+  // std::invalid_argument naming the bad value (launch and impact too close
+  // or antipodal, burn_s not below twice the free flight, apogee below 1 km).
+  BallisticArc(double launch_lat_deg, double launch_lon_deg, double impact_lat_deg, double impact_lon_deg,
+               double launch_s, double burn_s, double apogee_height_m);
+  PosVel at(double t_s) const;  // Earth-fixed
+  double impact_s() const { return launch_s_ + burn_s_ / 2 + flight_s_; }
+  double free_flight_s() const { return flight_s_; }
+  double apogee_radius_m() const { return a_ * (1 + e_); }
+
+ private:
+  PosVel kepler_at(double tau_s) const;  // on the sphere, tau from the launch point
+  Vec3 e1_{}, e2_{};  // launch direction, and the in-plane normal toward the impact
+  double theta_ = 0, a_ = 0, e_ = 0, n_ = 0, m0_ = 0, flight_s_ = 0, launch_s_ = 0, burn_s_ = 0;
+};
+
 struct EphemerisPoint {
   double t_s = 0;
   Vec3 position{};
@@ -117,6 +154,9 @@ Quat heading_pitch_roll(double heading_deg, double pitch_deg, double roll_deg);
 // used instead); +Y = Z x X.
 Quat point_z_axis(const Vec3& boresight, const Vec3& hint);
 // Nadir: +Z toward the centre of the frame (-position), +X along velocity.
+// Body +z along the velocity (at rest: along the position, up), x toward the
+// position's side: a missile flying nose first.
+Quat velocity_attitude(const PosVel& state);
 Quat nadir_attitude(const PosVel& s);
 
 // Geodetic (WGS84, degrees and metres) to Earth-fixed Cartesian metres.

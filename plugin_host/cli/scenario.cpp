@@ -207,11 +207,14 @@ Attitude parse_attitude(const json& j, const std::string& path, bool sensor) {
     a.type = Attitude::Type::heading_pitch_roll;
   } else if (type == "heading_pitch_roll") {
     fail(path + ".type", "'heading_pitch_roll' turns objects only (aircraft, ground vehicles...)");
+  } else if (type == "velocity" && !sensor) {
+    only_keys(j, path, {"type"});
+    a.type = Attitude::Type::velocity;
   } else {
     const std::vector<std::string> types = sensor ? std::vector<std::string>{"fixed_inertial", "spinning_inertial",
                                                                              "nadir", "target", "azel"}
                                                   : std::vector<std::string>{"fixed_inertial", "spinning_inertial",
-                                                                             "nadir", "target", "heading_pitch_roll"};
+                                                                             "nadir", "target", "heading_pitch_roll", "velocity"};
     std::string list;
     for (const auto& t : types) list += (list.empty() ? "" : ", ") + t;
     fail(path + ".type", "'" + type + "' is not one of " + list + did_you_mean(type, types));
@@ -301,9 +304,31 @@ Motion parse_motion(const json& j, const std::string& path) {
     }
     check_perigee(m.tle->perigee_radius_km() * 1e3, path);
     m.kind = Motion::Kind::tle;
+  } else if (type == "ballistic") {
+    only_keys(j, path, {"type", "launch_lat_deg", "launch_lon_deg", "impact_lat_deg", "impact_lon_deg", "launch_time",
+                        "burn_s", "apogee_height_m"});
+    double v[4];
+    const char* names[4] = {"launch_lat_deg", "launch_lon_deg", "impact_lat_deg", "impact_lon_deg"};
+    for (int k = 0; k < 4; ++k) {
+      v[k] = get_number(j, path, names[k]);
+      if (std::fabs(v[k]) > (k % 2 ? 360.0 : 90.0))
+        fail(path + "." + names[k], k % 2 ? "must be in [-360, 360]" : "must be in [-90, 90]");
+    }
+    const double launch = get_time(j, path, "launch_time");
+    const double burn = get_number(j, path, "burn_s");
+    const double apogee = j.contains("apogee_height_m") ? get_number(j, path, "apogee_height_m") : std::nan("");
+    try {
+      m.ballistic = std::make_shared<BallisticArc>(v[0], v[1], v[2], v[3], launch, burn, apogee);
+    } catch (const std::invalid_argument& e) {
+      const std::string why = e.what();
+      const auto colon = why.find(':');
+      fail(path + (colon == std::string::npos ? "" : "." + why.substr(0, colon)),
+           colon == std::string::npos ? why : why.substr(colon + 2));
+    }
+    m.kind = Motion::Kind::ballistic;
   } else {
-    fail(path + ".type", "'" + type + "' is not one of fixed_geodetic, kepler, ephemeris, tle" +
-                             did_you_mean(type, {"fixed_geodetic", "kepler", "ephemeris", "tle"}));
+    fail(path + ".type", "'" + type + "' is not one of fixed_geodetic, kepler, ephemeris, tle, ballistic" +
+                             did_you_mean(type, {"fixed_geodetic", "kepler", "ephemeris", "tle", "ballistic"}));
   }
   return m;
 }
@@ -422,6 +447,8 @@ Scenario parse_scenario(const json& doc, const std::string& file, const Scenario
         fail(o.path + ".attitude", "a site's attitude is its local horizon (east, north, up); point its sensors "
                                    "with their pointing instead");
       if (objs[i].contains("attitude")) o.attitude = parse_attitude(objs[i]["attitude"], o.path + ".attitude", false);
+      if (o.attitude.type == Attitude::Type::velocity && o.motion.kind == Motion::Kind::fixed_geodetic)
+        fail(o.path + ".attitude.type", "velocity: a fixed_geodetic motion has no velocity");
       if (objs[i].contains("properties")) o.properties = need_object(objs[i]["properties"], o.path + ".properties");
       sc.objects.push_back(std::move(o));
     }
@@ -498,6 +525,8 @@ PosVel motion_state(const ObjectSpec& o, double t) {
       } catch (const std::out_of_range& e) {
         throw ScenarioError(o.path + ".motion: " + e.what());
       }
+    case Motion::Kind::ballistic:
+      return m.ballistic->at(t);
     case Motion::Kind::tle:
       try {
         return tle_state_j2000(*m.tle, t);

@@ -27,7 +27,8 @@ struct Attitude {
   // sensor on a site tracks its target through eoir_sensor_point_at.
   // heading_pitch_roll: objects only, body -> local north-east-down at the
   // object's place at each step (pushed in EOIR_FRAME_GEODETIC_NED).
-  enum class Type { none, fixed_inertial, nadir, target, spinning_inertial, azel, heading_pitch_roll };
+  // velocity: body +z along the velocity in the motion's frame (motion.hpp velocity_attitude).
+  enum class Type { none, fixed_inertial, nadir, target, spinning_inertial, azel, heading_pitch_roll, velocity };
   Type type = Type::none;
   Quat quaternion{1, 0, 0, 0};  // body -> J2000 (fixed_inertial; spinning_inertial at the epoch)
   std::string target;           // object name (target)
@@ -43,13 +44,14 @@ struct Attitude {
 
 // Where the host pushes an object's state from.
 struct Motion {
-  enum class Kind { fixed_geodetic, kepler, ephemeris, tle };
+  enum class Kind { fixed_geodetic, kepler, ephemeris, tle, ballistic };
   Kind kind = Kind::fixed_geodetic;
   double lat_deg = 0, lon_deg = 0, alt_m = 0;  // fixed_geodetic
   std::shared_ptr<const KeplerOrbit> kepler;   // kepler (J2000)
   std::shared_ptr<const Ephemeris> ephemeris;  // ephemeris
   bool earth_fixed = false;                    // ephemeris frame
   std::shared_ptr<const Sgp4> tle;             // tle (SGP4 in TEME, pushed in J2000)
+  std::shared_ptr<const BallisticArc> ballistic;  // ballistic (Earth-fixed)
 };
 
 struct ObjectSpec {
@@ -105,7 +107,8 @@ Scenario load_scenario(const std::string& file, const ScenarioOptions& options =
 Scenario parse_scenario(const nlohmann::json& doc, const std::string& file, const ScenarioOptions& options = {});
 
 // The object's position and velocity at t in its own frame (J2000 for kepler,
-// tle and j2000 ephemerides, Earth-fixed for earth_fixed ephemerides, geodetic
+// tle and j2000 ephemerides, Earth-fixed for earth_fixed ephemerides and
+// ballistic flights, geodetic
 // {lat, lon, height} for fixed_geodetic). Throws ScenarioError naming
 // "objects[i].motion" (e.g. a time outside the ephemeris).
 PosVel motion_state(const ObjectSpec& object, double t_s);

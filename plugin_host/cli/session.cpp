@@ -182,6 +182,8 @@ Quat Session::attitude_j2000(const Attitude& a, const PosVel& self_now, const st
       }
       case Attitude::Type::nadir:
         return nadir_attitude(self);
+      case Attitude::Type::velocity:
+        return velocity_attitude(self);
       case Attitude::Type::target: {
         PosVel target = j2000_state(a.target, where + ".target");
         target.position = add(target.position, scale(target.velocity, dt_s));
@@ -225,6 +227,10 @@ void Session::set_time(double t) {
     const PosVel st = motion_state(o, t);
     const bool j2000 = natural_j2000(o);
     if (j2000) host_j2000_[o.name] = st;
+    if (o.attitude.type == Attitude::Type::velocity) {  // in the motion's own frame, final now
+      push(o.name, natural_frame(o), st, velocity_attitude(st), o.path + ".motion", Vec3{0, 0, 0});
+      continue;
+    }
     const bool final_now = o.attitude.type == Attitude::Type::none ||
                            (j2000 && o.attitude.type != Attitude::Type::target &&
                             o.attitude.type != Attitude::Type::heading_pitch_roll);

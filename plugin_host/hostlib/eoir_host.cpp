@@ -78,6 +78,7 @@ const char* motion_name(Motion::Kind k) {
     case Motion::Kind::kepler: return "kepler";
     case Motion::Kind::ephemeris: return "ephemeris";
     case Motion::Kind::tle: return "tle";
+    case Motion::Kind::ballistic: return "ballistic";
   }
   return "?";
 }

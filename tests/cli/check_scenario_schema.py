@@ -69,6 +69,20 @@ def main():
     case("tle", lambda d: d["objects"][0].__setitem__("motion", dict(TLE)), True, cli=True)
     case("tle_missing_line", lambda d: d["objects"][0].__setitem__("motion", {"type": "tle", "line1": TLE["line1"]}),
          False, cli=False)
+    # Missiles (issue 22): the ballistic motion, the velocity attitude, stages and launch time.
+    ballistic = {"type": "ballistic", "launch_lat_deg": 5.0, "launch_lon_deg": -30.0, "impact_lat_deg": 30.0,
+                 "impact_lon_deg": -15.0, "launch_time": base["start"], "burn_s": 120.0}
+
+    def missile(d, **motion):
+        d["objects"][0].update(kind="missile", motion=dict(ballistic, **motion), attitude={"type": "velocity"})
+        d["objects"][0]["properties"] = {"missile_stages": '[{"length_m": 10, "radius_m": 1}]',
+                                         "launch_time_utc": base["start"]}
+    case("ballistic", missile, True, cli=True)
+    case("ballistic_lofted", lambda d: missile(d, apogee_height_m=1500e3), True, cli=True)
+    case("ballistic_negative_burn", lambda d: missile(d, burn_s=-1.0), False, cli=False)
+    case("ballistic_typo", lambda d: missile(d, burn_time_s=10.0), False, cli=False)
+    case("ballistic_burn_too_long", lambda d: missile(d, burn_s=1e6), True, cli=False)  # (the engine's check)
+    case("ballistic_antipodal", lambda d: missile(d, impact_lat_deg=-5.0, impact_lon_deg=150.0), True, cli=False)
     print(f"{failures} failures")
     sys.exit(1 if failures else 0)
 

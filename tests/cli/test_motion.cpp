@@ -154,3 +154,79 @@ TEST(IsoTime, RoundTripAndErrors) {
   EXPECT_THROW(parse_iso("yesterday"), std::invalid_argument);
   EXPECT_THROW(parse_iso("2010-08-25T18:00:00+02:00"), std::invalid_argument);
 }
+
+// ------------------------------------------------------------ ballistic
+namespace {
+// Height above the WGS84 ellipsoid along the geocentric direction.
+double height_along_radius(const Vec3& p) {
+  constexpr double a = 6378137.0, b = 6356752.314245;
+  const Vec3 u = normalize(p);
+  return norm(p) - 1.0 / std::sqrt((u[0] * u[0] + u[1] * u[1]) / (a * a) + u[2] * u[2] / (b * b));
+}
+}  // namespace
+
+// The arc starts and ends on the geodetic surface points, at rest before the
+// launch and after the impact.
+TEST(Ballistic, EndsOnTheLaunchAndImpactPoints) {
+  const double t0 = parse_iso("2010-08-25T02:00:10Z");
+  const BallisticArc arc(5.0, -30.0, 30.0, -15.0, t0, 170.0, std::nan(""));
+  EXPECT_LT(distance(arc.at(t0 - 5).position, geodetic_to_ecef(5.0, -30.0, 0.0)), 1e-3);
+  EXPECT_LT(distance(arc.at(t0).position, geodetic_to_ecef(5.0, -30.0, 0.0)), 1e-3);
+  EXPECT_EQ(norm(arc.at(t0 - 5).velocity), 0.0);
+  EXPECT_EQ(norm(arc.at(t0).velocity), 0.0);  // the powered flight starts from rest
+  EXPECT_LT(distance(arc.at(arc.impact_s()).position, geodetic_to_ecef(30.0, -15.0, 0.0)), 1e-3);
+  EXPECT_LT(distance(arc.at(arc.impact_s() + 100).position, geodetic_to_ecef(30.0, -15.0, 0.0)), 1e-3);
+  EXPECT_EQ(norm(arc.at(arc.impact_s() + 100).velocity), 0.0);
+  EXPECT_NEAR(arc.impact_s() - t0, 85.0 + arc.free_flight_s(), 1e-6);  // (t0 ~ 1e9 s)
+}
+
+// The minimum-energy ellipse between two points of one radius leaves at the
+// flight-path angle (pi - theta) / 4 above the local horizontal (Bate,
+// Mueller and White 1971, section 6.2) with the speed of vis-viva for a =
+// (R + R sin(theta/2)) / 2 (its semi-major axis: a half of r + c over 2, c
+// the chord); the speed rises from rest over the burn to the arc's speed,
+// continuous at burnout.
+TEST(Ballistic, MinimumEnergyFlightPathAngleAndSpeed) {
+  const double t0 = 1000.0;
+  const BallisticArc coast(0.0, 0.0, 0.0, 40.0, t0, 0.0, std::nan(""));  // along the equator: theta = 40 deg
+  const PosVel s = coast.at(t0);
+  const double theta = 40.0 * kDeg, R = kBallisticEarthRadius_m;
+  const double gamma = std::asin(dot(normalize(s.velocity), normalize(s.position)));
+  EXPECT_NEAR(gamma, (3.14159265358979323846 - theta) / 4, 1e-9);
+  const double a = (R + R * std::sin(theta / 2)) / 2;
+  EXPECT_NEAR(norm(s.velocity), std::sqrt(kMu * (2 / R - 1 / a)), 1e-6);
+  // Apogee midway in time, its radius a (1 + e) with the apogee's speed.
+  const PosVel mid = coast.at(t0 + coast.free_flight_s() / 2);
+  EXPECT_NEAR(dot(mid.velocity, normalize(mid.position)), 0.0, 1e-6);
+  EXPECT_NEAR(height_along_radius(mid.position), coast.apogee_radius_m() - R, 1e-3);
+  const BallisticArc boost(0.0, 0.0, 0.0, 40.0, t0, 120.0, std::nan(""));
+  EXPECT_NEAR(norm(boost.at(t0 + 60).velocity), 0.5 * norm(coast.at(t0 + 15).velocity), 1e-6);  // tau = 60^2/240
+  EXPECT_NEAR(norm(boost.at(t0 + 120 - 1e-6).velocity), norm(boost.at(t0 + 120 + 1e-6).velocity), 1e-3);
+}
+
+// A given apogee: reached midway, that high above the ellipsoid.
+TEST(Ballistic, GivenApogee) {
+  for (double apogee_m : {300e3, 1500e3}) {
+    const BallisticArc arc(40.0, 10.0, 35.0, 40.0, 0.0, 60.0, apogee_m);
+    const double mid = 30.0 + arc.free_flight_s() / 2;
+    EXPECT_NEAR(height_along_radius(arc.at(mid).position), apogee_m, 1e-3) << apogee_m;
+    EXPECT_LT(distance(arc.at(arc.impact_s()).position, geodetic_to_ecef(35.0, 40.0, 0.0)), 1e-3);
+  }
+}
+
+TEST(Ballistic, BadInputNamesTheValue) {
+  auto why = [](double lat2, double lon2, double burn, double apogee) {
+    try {
+      BallisticArc(0.0, 0.0, lat2, lon2, 0.0, burn, apogee);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(why(0.0, 0.001, 10, std::nan("")).find("impact"), std::string::npos);   // 111 m away
+  EXPECT_NE(why(0.0, 180.0, 10, std::nan("")).find("impact"), std::string::npos);   // antipodal
+  EXPECT_NE(why(10.0, 10.0, -1, std::nan("")).find("burn_s"), std::string::npos);
+  EXPECT_NE(why(10.0, 10.0, 1e6, std::nan("")).find("burn_s"), std::string::npos);
+  EXPECT_NE(why(10.0, 10.0, 10, 10.0).find("apogee_height_m"), std::string::npos);
+  EXPECT_NE(why(std::nan(""), 10.0, 10, std::nan("")).find("finite"), std::string::npos);
+}

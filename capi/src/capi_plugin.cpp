@@ -66,6 +66,8 @@ const eoir_api_v1 api_v1 = {
     eoir_sensor_point_azel,
     eoir_sensor_point_at,
     eoir_pick_term_get,
+    eoir_engine_set_limits,
+    eoir_engine_get_limits,
 };
 }  // namespace
 

@@ -154,7 +154,7 @@ json engine_to_json(const Engine& engine) {
   json doc;
   doc["format"] = "eoir-scd";
   const universe::ObjectLimits& limits = engine.universe().limits();
-  doc["version"] = limits.is_default() ? 2 : scd_format_version;
+  doc["version"] = scd_format_version;
   std::ostringstream rng;
   rng << engine.noise_rng();
   doc["engine"] = {{"seed", engine.options().seed}, {"noise_rng_state", rng.str()}};

@@ -9,10 +9,10 @@
 
 namespace eoir::state {
 
-// Version 2 adds the user's materials and spectra, version 3 the engine's
-// object limits (written, as version 3, only when they differ from the
-// default profile; versions 1 and 2 still load).
-constexpr int scd_format_version = 3;
+// Version 2 adds the user's materials and spectra (version 1 files still
+// load), and its optional engine.limits the engine's object limits (written
+// only when they differ from the default profile).
+constexpr int scd_format_version = 2;
 constexpr int sensor_format_version = 1;
 
 nlohmann::json engine_to_json(const Engine& engine);

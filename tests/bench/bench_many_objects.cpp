@@ -1,6 +1,7 @@
 // Frame time against the number of objects (issue 23 items 3 and 7): a GEO
 // belt seen by a ground telescope. The engine's object limits are raised
-// (README "Object limits") to hold N satellites.
+// (README "Object limits") to hold N satellites beyond 16; up to 16 the
+// engine keeps the default profile, as the spec's engine renders them.
 //
 // Scene: 2010-06-21T00:00:00Z (midnight at longitude 0; at the solstice the
 // Earth's shadow passes 23 deg south of the belt, so every GEO satellite is

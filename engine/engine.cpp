@@ -44,6 +44,8 @@ void Engine::set_time(const EngineTime& t) {
   target_cache_.clear();
 }
 
+void Engine::set_limits(const universe::ObjectLimits& limits) { universe_.set_limits(limits); }
+
 void Engine::add_object(universe::ObjectKind kind, const std::string& name) {
   universe_.add(kind, name);
   changed();

@@ -45,6 +45,8 @@ class Engine {
 
   // ---- changes: each invalidates what depends on it
   void set_time(const EngineTime& t);
+  // The object limits (universe/object_limits.hpp); throws naming the field.
+  void set_limits(const universe::ObjectLimits& limits);
   void add_object(universe::ObjectKind kind, const std::string& name);
   void add_sensor(const std::string& name, const std::string& parent);
   // Removes an object and the sensors attached to it (never the Sun).

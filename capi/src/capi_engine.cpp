@@ -54,6 +54,33 @@ EOIR_API eoir_status eoir_engine_create(const eoir_engine_desc* desc, eoir_engin
 
 EOIR_API void eoir_engine_destroy(eoir_engine engine) { delete engine; }
 
+EOIR_API eoir_status eoir_engine_set_limits(eoir_engine engine, const eoir_limits* limits) {
+  return with_engine(engine, [&](Engine& e) {
+    need(limits, "limits");
+    need_size(limits->struct_size, sizeof(eoir_limits), "limits");
+    universe::ObjectLimits l;
+    l.satellites = limits->max_satellites;
+    l.vehicles = limits->max_vehicles;
+    l.sites = limits->max_sites;
+    l.missiles = limits->max_missiles;
+    l.sensors = limits->max_sensors;
+    e.set_limits(l);
+  });
+}
+
+EOIR_API eoir_status eoir_engine_get_limits(eoir_engine engine, eoir_limits* limits_out) {
+  return with_engine(engine, [&](Engine& e) {
+    need(limits_out, "limits_out");
+    need_size(limits_out->struct_size, sizeof(eoir_limits), "limits_out");
+    const universe::ObjectLimits& l = e.universe().limits();
+    limits_out->max_satellites = static_cast<uint32_t>(l.satellites);
+    limits_out->max_vehicles = static_cast<uint32_t>(l.vehicles);
+    limits_out->max_sites = static_cast<uint32_t>(l.sites);
+    limits_out->max_missiles = static_cast<uint32_t>(l.missiles);
+    limits_out->max_sensors = static_cast<uint32_t>(l.sensors);
+  });
+}
+
 EOIR_API eoir_status eoir_engine_set_time(eoir_engine engine, const eoir_time* time) {
   return with_engine(engine, [&](Engine& e) { e.set_time(time_of(time, "time")); });
 }

@@ -67,6 +67,8 @@ const eoir_api_v1 api_v1 = {
     eoir_sensor_point_at,
     eoir_pick_term_get,
     eoir_image_get_adu,
+    eoir_engine_set_limits,
+    eoir_engine_get_limits,
 };
 }  // namespace
 

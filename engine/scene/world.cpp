@@ -1400,9 +1400,6 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     w.light_ = static_cast<std::int32_t>(world->lights.size());
     world->lights.push_back(std::move(light));
   }
-  for (const auto& w : world->objects)
-    for (const ObjectLight& light : world->lights)
-      w->occulters_.push_back(candidates(*w, light.position_m, light.radius_m, light.object));
   // A source whose eq. 7 light cannot reach kNegligible of a receiver's
   // coldest self-emission anywhere on it is left out there (a 1 m satellite
   // 700 km above the Earth in 8-12 um: ~1e-11). Its bound: the greatest
@@ -1412,12 +1409,28 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
   // emission bound (the band rule of light_spectra's sum may differ from
   // emission_radiance's; light_spectra itself can cost a sum over 1e5
   // patches, which a frame may never need). Only where eq. 7, not eq. 8,
-  // serves it.
+  // serves it. With object limits above the default profile (README "Object
+  // limits": the GEO belt's hundreds of satellites), also where its
+  // irradiance dOmega x radiance cannot reach kNegligible of the Sun's at
+  // the receiver (L_sun dOmega_sun: a 2 m satellite 100 km away, ~1e-11).
   const double sun_band_radiance = world->view.spectral.integrate(world->sun.radiance);
+  const bool many_objects = !universe.limits().is_default();
+  std::vector<double> light_radiance(world->lights.size());  // each source's band radiance bound
+  for (std::size_t j = 0; j < world->lights.size(); ++j) {
+    const ObjectLight& light = world->lights[j];
+    const SurfaceModel& source = *world->objects[static_cast<std::size_t>(light.object)]->surface;
+    const double sun_omega = universe::sun_projected_solid_angle_sr((world->sun.position_m - light.position_m).norm());
+    light_radiance[j] =
+        source.srf_bound() * sun_band_radiance * sun_omega * 2.0 / (3.0 * constants::pi) + 2.0 * source.emission_bound();
+  }
   for (const auto& w : world->objects) {
     w->negligible_light_.assign(world->lights.size(), 0);
     const double floor = w->surface->emission_floor(), reflection = w->surface->reflection_bound_per_sr();
-    if (!(floor > 0) || !std::isfinite(reflection) || !w->surface->reflects()) continue;
+    const bool against_emission = floor > 0 && std::isfinite(reflection) && w->surface->reflects();
+    if (!against_emission && !many_objects) continue;
+    const double sunlight =
+        universe::sun_projected_solid_angle_sr((world->sun.position_m - w->placed.position_m).norm()) *
+        sun_band_radiance;
     for (std::size_t j = 0; j < world->lights.size(); ++j) {
       const ObjectLight& light = world->lights[j];
       if (light.object == w->id) continue;
@@ -1425,13 +1438,19 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       if (!(d > light.radius_m)) continue;
       const double omega = constants::pi * (light.radius_m / d) * (light.radius_m / d);
       if (light.area_source && omega > f.area_source_solid_angle_sr) continue;
-      const SurfaceModel& source = *world->objects[static_cast<std::size_t>(light.object)]->surface;
-      const double sun_omega = universe::sun_projected_solid_angle_sr((world->sun.position_m - light.position_m).norm());
-      const double radiance =
-          source.srf_bound() * sun_band_radiance * sun_omega * 2.0 / (3.0 * constants::pi) + 2.0 * source.emission_bound();
-      w->negligible_light_[j] = omega * reflection * radiance < kNegligible * floor;
+      const double radiance = light_radiance[j];
+      w->negligible_light_[j] = (against_emission && omega * reflection * radiance < kNegligible * floor) ||
+                                (many_objects && omega * radiance < kNegligible * sunlight);
     }
   }
+  // What may shade each light that counts at a receiver (a negligible one's
+  // occulters are never asked for: none kept).
+  for (const auto& w : world->objects)
+    for (std::size_t j = 0; j < world->lights.size(); ++j) {
+      const ObjectLight& light = world->lights[j];
+      w->occulters_.push_back(w->negligible_light_[j] ? std::vector<geometry::Occulter>{}
+                                                      : candidates(*w, light.position_m, light.radius_m, light.object));
+    }
 
   std::vector<const geometry::PlacedObject*> cast_against;
   for (const auto& w : world->objects) cast_against.push_back(&w->seen);

@@ -154,10 +154,15 @@ json parse_document(const std::string& text, const std::string& path) {
 json engine_to_json(const Engine& engine) {
   json doc;
   doc["format"] = "eoir-scd";
+  const universe::ObjectLimits& limits = engine.universe().limits();
   doc["version"] = scd_format_version;
   std::ostringstream rng;
   rng << engine.noise_rng();
   doc["engine"] = {{"seed", engine.options().seed}, {"noise_rng_state", rng.str()}};
+  if (!limits.is_default())
+    doc["engine"]["limits"] = {{"max_satellites", limits.satellites}, {"max_vehicles", limits.vehicles},
+                               {"max_sites", limits.sites},           {"max_missiles", limits.missiles},
+                               {"max_sensors", limits.sensors}};
   const EngineTime& t = engine.time();
   doc["time"] = {{"scale", "TT"},
                  {"days_since_j2000", t.days()},
@@ -200,10 +205,27 @@ std::unique_ptr<Engine> engine_from_json(const json& doc, const EngineOptions& r
                {"format", "version", "engine", "time", "objects"});
   check_format(doc, "eoir-scd", scd_format_version, "scd");
   const json& e = doc.at("engine");
-  check_fields(e, "scd.engine", {"seed", "noise_rng_state"}, {"seed", "noise_rng_state"});
+  check_fields(e, "scd.engine", {"seed", "noise_rng_state", "limits"}, {"seed", "noise_rng_state"});
   EngineOptions options = restoring;
   options.seed = field<std::uint64_t>(e, "seed", "scd.engine");
   auto engine = std::make_unique<Engine>(options);
+  if (e.contains("limits")) {
+    const json& l = e.at("limits");
+    const std::string where = "scd.engine.limits";
+    check_fields(l, where, {"max_satellites", "max_vehicles", "max_sites", "max_missiles", "max_sensors"},
+                 {"max_satellites", "max_vehicles", "max_sites", "max_missiles", "max_sensors"});
+    universe::ObjectLimits limits;
+    limits.satellites = field<std::size_t>(l, "max_satellites", where);
+    limits.vehicles = field<std::size_t>(l, "max_vehicles", where);
+    limits.sites = field<std::size_t>(l, "max_sites", where);
+    limits.missiles = field<std::size_t>(l, "max_missiles", where);
+    limits.sensors = field<std::size_t>(l, "max_sensors", where);
+    try {
+      engine->set_limits(limits);
+    } catch (const Error& err) {
+      corrupt(where, err.what());
+    }
+  }
   {
     std::mt19937_64 rng;
     std::istringstream in(field<std::string>(e, "noise_rng_state", "scd.engine"));

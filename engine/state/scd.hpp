@@ -9,7 +9,9 @@
 
 namespace eoir::state {
 
-// Version 2 adds the user's materials and spectra (version 1 files still load).
+// Version 2 adds the user's materials and spectra (version 1 files still
+// load), and its optional engine.limits the engine's object limits (written
+// only when they differ from the default profile).
 constexpr int scd_format_version = 2;
 constexpr int sensor_format_version = 1;
 

@@ -10,10 +10,12 @@
 
 namespace eoir::universe {
 namespace {
-void check_limit(std::size_t have, std::size_t limit, const char* what, const char* source = " (spec 3.1)") {
+void check_limit(std::size_t have, std::size_t limit, const char* what, const char* field) {
   if (have >= limit)
-    throw Error(Status::limit_exceeded, std::string("kind: at most ") + std::to_string(limit) + " " + what + source +
-                                            "; remove one first");
+    throw Error(Status::limit_exceeded, std::string("kind: at most ") + std::to_string(limit) + " " + what +
+                                            " (the engine's " + field +
+                                            "; spec 3.1's by default): remove one first, or raise " + field +
+                                            " (eoir_engine_set_limits)");
 }
 
 // Names travel into files (.scd, FITS, JSON): valid UTF-8 without control
@@ -25,11 +27,6 @@ void check_name_text(const std::string& name) {
 }  // namespace
 
 Universe::Universe() { add(ObjectKind::central_body, "Sun"); }
-
-std::size_t Universe::count(ObjectKind kind) const {
-  return static_cast<std::size_t>(
-      std::count_if(objects_.begin(), objects_.end(), [kind](const Object& o) { return o.kind == kind; }));
-}
 
 Object& Universe::add(ObjectKind kind, const std::string& name, const std::string& parent) {
   if (name.empty()) throw Error(Status::out_of_range, "name: must not be empty");
@@ -67,20 +64,20 @@ Object& Universe::add(ObjectKind kind, const std::string& name, const std::strin
     case ObjectKind::star_field:
       if (name != "Stars") throw Error(Status::unknown_name, "name: the star field must be named 'Stars'");
       break;
-    case ObjectKind::satellite: check_limit(count(kind), limits::max_satellites, "satellites"); break;
+    case ObjectKind::satellite: check_limit(count(kind), limits_.satellites, "satellites", "max_satellites"); break;
     case ObjectKind::aircraft:
     case ObjectKind::ground_vehicle:
-      check_limit(count(ObjectKind::aircraft) + count(ObjectKind::ground_vehicle), limits::max_vehicles,
-                  "aircraft plus ground vehicles");
+      check_limit(count(ObjectKind::aircraft) + count(ObjectKind::ground_vehicle), limits_.vehicles,
+                  "aircraft plus ground vehicles", "max_vehicles");
       break;
-    case ObjectKind::missile: check_limit(count(kind), limits::max_missiles, "missiles"); break;
+    case ObjectKind::missile: check_limit(count(kind), limits_.missiles, "missiles", "max_missiles"); break;
     case ObjectKind::site:
-      check_limit(count(kind), limits::max_sites, "sites", "");
+      check_limit(count(kind), limits_.sites, "sites", "max_sites");
       o.body.shape = ShapeKind::none;  // images nothing
       o.body.dimensions_m.clear();
       break;
     case ObjectKind::sensor: {
-      check_limit(count(kind), limits::max_sensors, "sensors (scene-generator/sensor-model pairs)");
+      check_limit(count(kind), limits_.sensors, "sensors (scene-generator/sensor-model pairs)", "max_sensors");
       const Object& p = get(parent, "parent");
       if (p.kind == ObjectKind::star_field || p.kind == ObjectKind::sensor)
         throw Error(Status::not_allowed,
@@ -90,8 +87,35 @@ Object& Universe::add(ObjectKind kind, const std::string& name, const std::strin
     }
     default: throw Error(Status::out_of_range, "kind: unknown object kind " + std::to_string(static_cast<int>(kind)));
   }
+  index_.emplace(o.name, objects_.size());
+  ++counts_[static_cast<std::size_t>(o.kind)];
   objects_.push_back(std::move(o));
   return objects_.back();
+}
+
+void Universe::reindex() {
+  index_.clear();
+  counts_.fill(0);
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    index_.emplace(objects_[i].name, i);
+    ++counts_[static_cast<std::size_t>(objects_[i].kind)];
+  }
+}
+
+void Universe::set_limits(const ObjectLimits& limits) {
+  check_limits(limits);
+  const auto check = [](std::size_t limit, std::size_t have, const char* field, const char* what) {
+    if (limit < have)
+      throw Error(Status::not_allowed, std::string(field) + ": " + std::to_string(limit) + " is below the " +
+                                           std::to_string(have) + " " + what + " the engine holds; remove some first");
+  };
+  check(limits.satellites, count(ObjectKind::satellite), "max_satellites", "satellites");
+  check(limits.vehicles, count(ObjectKind::aircraft) + count(ObjectKind::ground_vehicle), "max_vehicles",
+        "aircraft plus ground vehicles");
+  check(limits.sites, count(ObjectKind::site), "max_sites", "sites");
+  check(limits.missiles, count(ObjectKind::missile), "max_missiles", "missiles");
+  check(limits.sensors, count(ObjectKind::sensor), "max_sensors", "sensors");
+  limits_ = limits;
 }
 
 void Universe::remove(const std::string& name) {
@@ -104,17 +128,16 @@ void Universe::remove(const std::string& name) {
                                   return x.name == gone || (x.kind == ObjectKind::sensor && x.parent == gone);
                                 }),
                  objects_.end());
+  reindex();
 }
 
 Object* Universe::find(const std::string& name) {
-  for (auto& o : objects_)
-    if (o.name == name) return &o;
-  return nullptr;
+  const auto it = index_.find(name);
+  return it == index_.end() ? nullptr : &objects_[it->second];
 }
 const Object* Universe::find(const std::string& name) const {
-  for (const auto& o : objects_)
-    if (o.name == name) return &o;
-  return nullptr;
+  const auto it = index_.find(name);
+  return it == index_.end() ? nullptr : &objects_[it->second];
 }
 Object& Universe::get(const std::string& name, const char* field) {
   if (Object* o = find(name)) return *o;

@@ -1,11 +1,15 @@
 // The modeled universe of interest (spec 3.1): the registry of objects, with
-// the compile-time limits of core/limits.hpp. Copyable, so that a restore can
-// build a new universe and swap it in only when it is complete.
+// its object limits (universe/object_limits.hpp; the spec's by default).
+// Copyable, so that a restore can build a new universe and swap it in only
+// when it is complete.
 #pragma once
+#include <array>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "universe/object.hpp"
+#include "universe/object_limits.hpp"
 
 namespace eoir::universe {
 
@@ -29,9 +33,18 @@ class Universe {
 
   const std::vector<Object>& objects() const { return objects_; }
 
+  const ObjectLimits& limits() const { return limits_; }
+  // Throws out_of_range (check_limits) or not_allowed naming the field when
+  // a limit is below the objects of its kind the universe holds.
+  void set_limits(const ObjectLimits& limits);
+
  private:
-  std::size_t count(ObjectKind kind) const;
+  std::size_t count(ObjectKind kind) const { return counts_[static_cast<std::size_t>(kind)]; }
+  void reindex();
   std::vector<Object> objects_;
+  std::unordered_map<std::string, std::size_t> index_;  // name -> position in objects_
+  std::array<std::size_t, 9> counts_{};                 // per ObjectKind
+  ObjectLimits limits_;
 };
 
 }  // namespace eoir::universe

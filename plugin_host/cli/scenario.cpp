@@ -11,6 +11,7 @@
 #include "json_guard.hpp"
 #include "suggest.hpp"
 #include "time_steps.hpp"
+#include "tle_file.hpp"
 
 namespace eoir::cli {
 namespace {
@@ -333,6 +334,45 @@ Motion parse_motion(const json& j, const std::string& path) {
   return m;
 }
 
+// objects[i] {"tle_file": F, "kind", "attitude", "properties"}: one object
+// per set of F (tle_file.hpp), named by its title line, on SGP4, each with
+// the entry's kind, attitude and properties.
+void add_tle_file(const json& entry, const std::string& path, const std::string& file,
+                  const ScenarioOptions& options, std::set<std::string>& names, std::vector<ObjectSpec>& objects) {
+  only_keys(entry, path, {"tle_file", "kind", "attitude", "properties"});
+  const std::string kind = get_string(entry, path, "kind");
+  if (kind != "satellite" && kind != "missile")
+    fail(path + ".kind", "'" + kind + "' cannot move on two-line elements: satellite or missile");
+  const std::string named = get_string(entry, path, "tle_file");
+  if (named.empty()) fail(path + ".tle_file", "must name a file");
+  const std::string tle_path = named_file(file, named, path + ".tle_file", options);
+  std::vector<TleSet> sets;
+  try {
+    sets = parse_tle_file(read_file_capped(tle_path));
+  } catch (const JsonInputError& e) {
+    fail(path + ".tle_file", e.what());
+  } catch (const std::invalid_argument& e) {
+    fail(path + ".tle_file", "'" + named + "' " + e.what());
+  }
+  Attitude attitude;
+  if (entry.contains("attitude")) attitude = parse_attitude(entry["attitude"], path + ".attitude", false);
+  json properties = json::object();
+  if (entry.contains("properties")) properties = need_object(entry["properties"], path + ".properties");
+  for (TleSet& set : sets) {
+    ObjectSpec o;
+    o.path = path + ".tle_file line " + std::to_string(set.title_line);
+    o.name = set.name;
+    if (!names.insert(o.name).second) fail(o.path, "an object named '" + o.name + "' exists already");
+    o.kind = kind;
+    o.motion.kind = Motion::Kind::tle;
+    o.motion.tle = std::make_shared<Sgp4>(std::move(set.sgp4));
+    check_perigee(o.motion.tle->perigee_radius_km() * 1e3, o.path);
+    o.attitude = attitude;
+    o.properties = properties;
+    objects.push_back(std::move(o));
+  }
+}
+
 }  // namespace
 
 const ObjectSpec* Scenario::find_object(const std::string& n) const {
@@ -352,7 +392,7 @@ Scenario parse_scenario(const json& doc, const std::string& file, const Scenario
   sc.file = file;
   const std::string root = "scenario";
   if (!doc.is_object()) fail(root, "must be a JSON object");
-  only_keys(doc, "", {"$schema", "format", "version", "name", "description", "start", "stop", "step_s",
+  only_keys(doc, "", {"$schema", "format", "version", "name", "description", "start", "stop", "step_s", "limits",
                       "central_bodies", "stars", "objects", "sensors"});
   if (get_string(doc, root, "format") != "eoir-scenario") fail("format", "must be \"eoir-scenario\"");
   const json& version = need(doc, root, "version");
@@ -378,6 +418,25 @@ Scenario parse_scenario(const json& doc, const std::string& file, const Scenario
     check_step(sc.step_s, "step_s");
   } catch (const std::invalid_argument& e) {
     throw ScenarioError(e.what());
+  }
+
+  if (doc.contains("limits")) {
+    // Each in [1, its ceiling] (eoir.h EOIR_CEILING_*; the engine checks).
+    const json& l = need_object(doc["limits"], "limits");
+    only_keys(l, "limits", {"max_satellites", "max_vehicles", "max_sites", "max_missiles", "max_sensors"});
+    const auto limit = [&](const char* key) -> std::uint32_t {
+      if (!l.contains(key)) return 0;
+      const json& v = l[key];
+      if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000000)
+        fail(std::string("limits.") + key, "must be a whole number of at least 1, not " + v.dump());
+      return static_cast<std::uint32_t>(v.get<long long>());
+    };
+    sc.limits.max_satellites = limit("max_satellites");
+    sc.limits.max_vehicles = limit("max_vehicles");
+    sc.limits.max_sites = limit("max_sites");
+    sc.limits.max_missiles = limit("max_missiles");
+    sc.limits.max_sensors = limit("max_sensors");
+    sc.limits.given = true;
   }
 
   static const std::set<std::string> bodies{"Sun",     "Mercury", "Venus",  "Earth",   "Mars",
@@ -431,6 +490,10 @@ Scenario parse_scenario(const json& doc, const std::string& file, const Scenario
       ObjectSpec o;
       o.path = "objects[" + std::to_string(i) + "]";
       need_object(objs[i], o.path);
+      if (objs[i].contains("tle_file")) {
+        add_tle_file(objs[i], o.path, file, options, names, sc.objects);
+        continue;
+      }
       only_keys(objs[i], o.path, {"name", "kind", "motion", "attitude", "properties"});
       o.name = get_string(objs[i], o.path, "name");
       check_name(o.name, o.path + ".name");

@@ -2,6 +2,7 @@
 // and checked here, with errors that name the JSON path of the bad field,
 // e.g. "objects[2].motion.eccentricity: must be in [0, 1)".
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -55,12 +56,12 @@ struct Motion {
 };
 
 struct ObjectSpec {
-  std::string name;
+  std::string name;  // objects of a tle_file: the set's title line
   std::string kind;  // satellite, aircraft, ground_vehicle, missile, site (fixed_geodetic motion only)
   Motion motion;
   Attitude attitude;
   nlohmann::json properties = nlohmann::json::object();
-  std::string path;  // "objects[i]"
+  std::string path;  // "objects[i]"; objects of a tle_file: "objects[i].tle_file line N" (N: the title's)
 };
 
 struct SensorSpec {
@@ -77,8 +78,16 @@ struct BodyProperties {
   std::string path;  // "central_bodies[i]"
 };
 
+// The engine's object limits a scenario asks for (eoir_engine_set_limits);
+// 0: the default profile's value.
+struct ScenarioLimits {
+  std::uint32_t max_satellites = 0, max_vehicles = 0, max_sites = 0, max_missiles = 0, max_sensors = 0;
+  bool given = false;
+};
+
 struct Scenario {
   std::string file;
+  ScenarioLimits limits;
   std::string name, description;
   double start_s = 0, stop_s = 0, step_s = 60;
   std::vector<std::string> central_bodies;   // added in this order (never the Sun, always present)

@@ -40,6 +40,23 @@ int32_t natural_frame(const ObjectSpec& o) {
 Session::Session(Engine& engine, const Scenario& sc) : engine_(engine), scenario_(sc) {
   const eoir_api_v1& api = engine_.api();
   const eoir_engine e = engine_.handle();
+  if (sc.limits.given) {
+    if (api.struct_size < offsetof(eoir_api_v1, engine_get_limits) + sizeof api.engine_get_limits ||
+        api.engine_set_limits == nullptr || api.engine_get_limits == nullptr)
+      throw EngineError("limits: the engine library cannot set object limits (C ABI 1.7 needed)", EOIR_ERR_ABI_MISMATCH);
+    eoir_limits l{};
+    l.struct_size = sizeof l;
+    engine_.check(api.engine_get_limits(e, &l), "limits");
+    const auto take = [](std::uint32_t asked, std::uint32_t& limit) {
+      if (asked > 0) limit = asked;
+    };
+    take(sc.limits.max_satellites, l.max_satellites);
+    take(sc.limits.max_vehicles, l.max_vehicles);
+    take(sc.limits.max_sites, l.max_sites);
+    take(sc.limits.max_missiles, l.max_missiles);
+    take(sc.limits.max_sensors, l.max_sensors);
+    engine_.check(api.engine_set_limits(e, &l), "limits");
+  }
   for (std::size_t i = 0; i < sc.central_bodies.size(); ++i)
     engine_.check(api.object_add(e, EOIR_KIND_CENTRAL_BODY, sc.central_bodies[i].c_str()),
                   "central_bodies[" + std::to_string(i) + "]");

@@ -23,7 +23,8 @@ python="${PYTHON:-/usr/bin/python3}"
 
 for exe in tests/bench/bench_static_metrics tests/bench/bench_frame tests/bench/bench_state \
            tests/bench/bench_band tests/bench/bench_targets tests/bench/bench_point_sources tests/bench/bench_detector \
-           tests/geometry/bench_ray_caster tests/bench/bench_eclipse tests/bench/bench_brdf; do
+           tests/geometry/bench_ray_caster tests/bench/bench_eclipse tests/bench/bench_brdf \
+           tests/bench/bench_many_objects; do
   [ -x "$build/$exe" ] || { echo "missing $build/$exe: build first" >&2; exit 1; }
 done
 mkdir -p "$results"
@@ -70,6 +71,7 @@ run bench_frame_atmosphere tests/bench/bench_frame --benchmark_filter='^BM_Frame
 run bench_frame_mesh tests/bench/bench_frame --benchmark_filter='^BM_FrameMeshTarget' --benchmark_min_time=2
 run bench_eclipse tests/bench/bench_eclipse --benchmark_min_time=0.1
 run bench_brdf tests/bench/bench_brdf --benchmark_min_time=0.1
+run bench_many_objects tests/bench/bench_many_objects
 
 echo "uptime_after=$(uptime)" >> "$results/machine.txt"
 "$python" "$here/summarise.py" "$results"

@@ -127,5 +127,10 @@ int main(void) {
   CHECK_LAYOUT(eoir_api_v1, sensor_point_at, 408);
   CHECK_LAYOUT(eoir_api_v1, pick_term_get, 416);  /* 1.6 */
   CHECK_LAYOUT(eoir_api_v1, image_get_adu, 424);  /* 1.7 */
+  CHECK_LAYOUT(eoir_api_v1, engine_set_limits, 432); /* 1.7 */
+  CHECK_LAYOUT(eoir_api_v1, engine_get_limits, 440);
+  CHECK_LAYOUT(eoir_limits, max_satellites, 4); /* 1.7 */
+  CHECK_LAYOUT(eoir_limits, max_sensors, 20);
+  CHECK_SIZE(eoir_limits, 24);
   return CHECK_SUMMARY();
 }

@@ -581,3 +581,56 @@ TEST(World, NegligibleLightIsBelowItsThreshold) {
   EXPECT_EQ(kept, 2);  // 1 and 30 km
   EXPECT_EQ(left_out, 2);
 }
+
+namespace {
+// Beyond the default profile (README "Object limits"), eq. 7 light is also
+// left out where its irradiance cannot reach 1e-10 of the Sun's at the
+// receiver. A 1 m gray (0.3) sphere h from the sunlit point (normal +x
+// J2000, the Sun 10 deg off it: cos 0.985) of a 100 km gray sphere in
+// 0.45-0.75 um (where the default profile keeps every source: the
+// self-emission is next to nothing), 45 deg off the normal toward +z. Its
+// irradiance there is at most (R / h)^2 x 0.3 x E_sun x 1.05 (a fully lit
+// Lambertian disc, earthshine on it): 3e-7 of the Sun's at 1 km (kept: the
+// same light as with the default profile), 3.5e-14 at 3,000 km (left out;
+// the light the default profile adds there is at most 3.5e-14 / 0.985 =
+// 3.6e-14 of the point's light, below 1e-10).
+TEST(World, FarLightLeftOutAgainstTheSunBeyondTheDefaultProfile) {
+  const double receiver_radius_m = 100e3;
+  const Eigen::Vector3d receiver(20000e3, 0, 0), up = Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d aside = Eigen::Vector3d(1, 0, 1).normalized();
+  auto radiance_beneath = [&](double h_m, bool with_source, bool raised) {
+    auto e = geo_engine();
+    if (raised) {
+      eoir::universe::ObjectLimits limits;
+      limits.satellites = 1000;
+      e->set_limits(limits);
+    }
+    e->set_property("Sensor", "band_low_um", Value(0.45));
+    e->set_property("Sensor", "band_high_um", Value(0.75));
+    e->set_property("Sensor", "diffraction_wavelength_um", Value(0.6));
+    e->add_object(ObjectKind::satellite, "Receiver");
+    e->set_property("Receiver", "dimensions_m", Value(std::vector<double>{receiver_radius_m}));
+    e->set_property("Receiver", "reflectance", Value(0.3));
+    e->push_state("Receiver", e->time(), 0, receiver.data(), zero, identity);
+    if (with_source) {
+      const Eigen::Vector3d p = receiver + receiver_radius_m * up + h_m * aside;
+      add_sphere(*e, "Source", 1.0, p.data());
+      e->set_property("Source", "reflectance", Value(0.3));
+    }
+    const auto world = e->world("Sensor");
+    return world->find("Receiver")->effective_radiance(0, receiver_radius_m * up, up);
+  };
+  // 1 km: kept by both profiles, the same light.
+  const double near_default = radiance_beneath(1e3, true, false) - radiance_beneath(1e3, false, false);
+  const double near_raised = radiance_beneath(1e3, true, true) - radiance_beneath(1e3, false, true);
+  EXPECT_GT(near_default, 0.0);
+  EXPECT_NEAR(near_raised, near_default, 1e-9 * near_default);
+  // 3,000 km: the default profile keeps it, the raised one leaves it out.
+  const double without = radiance_beneath(3e6, false, true);
+  EXPECT_EQ(radiance_beneath(3e6, true, true), without);
+  const double far_default = radiance_beneath(3e6, true, false) - radiance_beneath(3e6, false, false);
+  EXPECT_GT(far_default, 0.0);
+  std::printf("far / without %.3g\n", far_default / without);
+  EXPECT_LT(far_default, 3.6e-14 * without);
+}
+}  // namespace

@@ -228,6 +228,15 @@ class eoir_host_api(Structure):
 
 _c_str = c_char_p
 _c_strp = POINTER(c_char_p)
+class eoir_limits(Structure):  # 1.7
+    _fields_ = [("struct_size", c_uint32),
+                ("max_satellites", c_uint32),
+                ("max_vehicles", c_uint32),
+                ("max_sites", c_uint32),
+                ("max_missiles", c_uint32),
+                ("max_sensors", c_uint32)]
+
+
 _c_dblp = POINTER(c_double)
 _c_sizep = POINTER(c_size_t)
 
@@ -239,6 +248,8 @@ _SIGNATURES = {
     "eoir_status_name": (c_char_p, [eoir_status]),
     "eoir_engine_create": (eoir_status, [POINTER(eoir_engine_desc), POINTER(eoir_engine)]),
     "eoir_engine_destroy": (None, [eoir_engine]),
+    "eoir_engine_set_limits": (eoir_status, [eoir_engine, POINTER(eoir_limits)]),
+    "eoir_engine_get_limits": (eoir_status, [eoir_engine, POINTER(eoir_limits)]),
     "eoir_engine_set_time": (eoir_status, [eoir_engine, POINTER(eoir_time)]),
     "eoir_engine_get_time": (eoir_status, [eoir_engine, c_int32, POINTER(eoir_time)]),
     "eoir_time_from_iso": (eoir_status, [_c_str, POINTER(eoir_time)]),
@@ -362,7 +373,10 @@ class eoir_api_v1(Structure):
                 # appended in 1.6 (eq. 9's terms)
                 ("pick_term_get", _fn("eoir_pick_term_get")),
                 # appended in 1.7 (the detector stage)
-                ("image_get_adu", _fn("eoir_image_get_adu"))]
+                ("image_get_adu", _fn("eoir_image_get_adu")),
+                # appended in 1.7 (object limits)
+                ("engine_set_limits", _fn("eoir_engine_set_limits")),
+                ("engine_get_limits", _fn("eoir_engine_get_limits"))]
 
 
 # ------------------------------------------------------------------- loading

@@ -65,7 +65,7 @@ typedef int32_t eoir_status;
 #define EOIR_ERR_TYPE_MISMATCH     -104 /* property read or written with the wrong type */
 #define EOIR_ERR_BUFFER_TOO_SMALL  -105 /* *count_out tells the size needed */
 /* -200 block: the modeled universe */
-#define EOIR_ERR_LIMIT_EXCEEDED    -200 /* compile-time object limit reached (spec 3.1) */
+#define EOIR_ERR_LIMIT_EXCEEDED    -200 /* an object limit reached (spec 3.1; eoir_engine_set_limits) */
 #define EOIR_ERR_ALREADY_EXISTS    -201 /* an object of that name exists */
 #define EOIR_ERR_NOT_ALLOWED       -202 /* e.g. removing the Sun, target equal to parent */
 #define EOIR_ERR_NO_STATE          -203 /* the object has no state at the engine time */
@@ -86,7 +86,9 @@ EOIR_API const char* eoir_last_error(void);
 EOIR_API const char* eoir_status_name(eoir_status status);
 
 /* ------------------------------------------------------------------- limits */
-/* Spec 3.1; fixed when the engine is compiled. */
+/* Spec 3.1: the default profile of every new engine. From 1.7 an engine's
+ * object limits are set at run time (eoir_engine_set_limits) up to the
+ * EOIR_CEILING_* values; the others are fixed. */
 #define EOIR_MAX_SATELLITES        16
 #define EOIR_MAX_VEHICLES           6 /* aircraft plus ground vehicles */
 #define EOIR_MAX_SITES             16 /* sites (1.5; not in spec 3.1), not vehicles */
@@ -95,6 +97,11 @@ EOIR_API const char* eoir_status_name(eoir_status status);
 #define EOIR_MAX_SENSORS            6 /* scene-generator/sensor-model pairs */
 #define EOIR_MAX_REFERENCE_PAIRS    8 /* sensitivity or saturation (spec 5.9, 5.10) */
 #define EOIR_MAX_NAME_LENGTH       63
+#define EOIR_CEILING_SATELLITES 100000 /* 1.7: the highest value of each run-time limit */
+#define EOIR_CEILING_VEHICLES    10000
+#define EOIR_CEILING_SITES       10000
+#define EOIR_CEILING_MISSILES    10000
+#define EOIR_CEILING_SENSORS       256
 
 /* ------------------------------------------------------------------- engine */
 typedef struct eoir_engine_s* eoir_engine;
@@ -113,6 +120,27 @@ typedef struct eoir_engine_desc {
 EOIR_API eoir_status eoir_engine_create(const eoir_engine_desc* desc, eoir_engine* engine_out);
 /* Accepts NULL. */
 EOIR_API void eoir_engine_destroy(eoir_engine engine);
+
+/* The engine's object limits (1.7). A new engine has the default profile
+ * (EOIR_MAX_SATELLITES, ...); eoir_object_add and eoir_sensor_add refuse an
+ * object past its limit with EOIR_ERR_LIMIT_EXCEEDED naming the limit
+ * ("max_satellites"). Saved with the state. */
+typedef struct eoir_limits {
+  uint32_t struct_size;    /* sizeof(eoir_limits) */
+  uint32_t max_satellites; /* each in [1, EOIR_CEILING_*] */
+  uint32_t max_vehicles;   /* aircraft plus ground vehicles */
+  uint32_t max_sites;
+  uint32_t max_missiles;
+  uint32_t max_sensors;    /* scene-generator/sensor-model pairs */
+} eoir_limits;
+
+/* Sets every limit at once: a value of 0 or above its ceiling is
+ * EOIR_ERR_OUT_OF_RANGE, one below the objects of its kind the engine holds
+ * EOIR_ERR_NOT_ALLOWED, each naming the field ("max_satellites"); nothing
+ * changes then. */
+EOIR_API eoir_status eoir_engine_set_limits(eoir_engine engine, const eoir_limits* limits);
+/* Writes the limits (struct_size set by the caller). */
+EOIR_API eoir_status eoir_engine_get_limits(eoir_engine engine, eoir_limits* limits_out);
 
 /* --------------------------------------------------------------------- time */
 /* Two-part Julian date (jd1 + jd2, as ERFA) in an explicit time scale. The
@@ -637,6 +665,9 @@ typedef struct eoir_api_v1 {
                                size_t*);
   /* appended in 1.7 (the detector stage) */
   eoir_status (*image_get_adu)(eoir_engine, const char*, uint32_t*, size_t);
+  /* appended in 1.7 (object limits) */
+  eoir_status (*engine_set_limits)(eoir_engine, const eoir_limits*);
+  eoir_status (*engine_get_limits)(eoir_engine, eoir_limits*);
 } eoir_api_v1;
 
 /* The plugin's one entry point (resolved by name with dlsym). Returns, in

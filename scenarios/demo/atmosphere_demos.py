@@ -42,7 +42,6 @@ import argparse
 import csv
 import json
 import math
-import os
 import sys
 import time
 from pathlib import Path
@@ -55,50 +54,16 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-
-
-def import_eoir():
-    """The eoir package (from bindings/python unless it is importable
-    already); the library may be mid-rebuild: wait 30 s and retry."""
-    import importlib.util
-    if importlib.util.find_spec("eoir") is None:
-        sys.path.insert(0, str(REPO / "bindings" / "python"))
-    for attempt in range(4):
-        try:
-            return importlib.import_module("eoir")
-        except (ImportError, OSError) as exc:
-            if attempt == 3:
-                raise
-            print(f"loading eoir failed ({exc}); retrying in 30 s", flush=True)
-            time.sleep(30)
-
+from demo_support import ecef, enu_axes, import_eoir, write_json  # noqa: E402
 
 eoir = import_eoir()
 
 # ---------------------------------------------------------------- geometry
-WGS84_A = 6378137.0
-WGS84_F = 1.0 / 298.257223563
-WGS84_E2 = WGS84_F * (2.0 - WGS84_F)
 GEO_RADIUS_M = 42164.17e3
 
 KITT_PEAK = {"name": "KittPeak", "lat_deg": 31.958, "lon_deg": -111.600, "alt_m": 2096.0}
 ISS_TLE = ("1 25544U 98067A   08264.51782528 -.00002182  00000-0 -11606-4 0  2927",
            "2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.72125391563537")
-
-
-def ecef(lat_deg, lon_deg, h_m):
-    lat, lon = math.radians(lat_deg), math.radians(lon_deg)
-    n = WGS84_A / math.sqrt(1.0 - WGS84_E2 * math.sin(lat) ** 2)
-    return np.array([(n + h_m) * math.cos(lat) * math.cos(lon), (n + h_m) * math.cos(lat) * math.sin(lon),
-                     (n * (1.0 - WGS84_E2) + h_m) * math.sin(lat)])
-
-
-def enu_axes(lat_deg, lon_deg):
-    lat, lon = math.radians(lat_deg), math.radians(lon_deg)
-    east = np.array([-math.sin(lon), math.cos(lon), 0.0])
-    north = np.array([-math.sin(lat) * math.cos(lon), -math.sin(lat) * math.sin(lon), math.cos(lat)])
-    up = np.array([math.cos(lat) * math.cos(lon), math.cos(lat) * math.sin(lon), math.sin(lat)])
-    return east, north, up
 
 
 def azel_of(site, p_ecef):
@@ -116,14 +81,6 @@ def geo_ecef(lon_deg):
 
 
 # ----------------------------------------------------------------- helpers
-def write_json(path, data):
-    tmp = f"{path}.tmp"
-    with open(tmp, "w", encoding="utf-8") as f:
-        json.dump(data, f, indent=1)
-        f.write("\n")
-    os.replace(tmp, path)
-
-
 def write_csv(path, header, rows, comments=()):
     with open(path, "w", newline="", encoding="utf-8") as f:
         for c in comments:

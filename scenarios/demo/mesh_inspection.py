@@ -36,11 +36,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-try:
-    import eoir  # noqa: E402
-except ImportError:
-    sys.path.insert(0, str(REPO / "bindings" / "python"))
-    import eoir  # noqa: E402
+from demo_support import import_eoir  # noqa: E402
+
+eoir = import_eoir()
 
 SIDES = 64
 

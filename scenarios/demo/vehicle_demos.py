@@ -30,7 +30,6 @@ import argparse
 import csv
 import json
 import math
-import os
 import sys
 import time
 from pathlib import Path
@@ -43,36 +42,16 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-
-
-def import_eoir():
-    """The eoir package (from bindings/python unless it is importable
-    already)."""
-    import importlib.util
-    if importlib.util.find_spec("eoir") is None:
-        sys.path.insert(0, str(REPO / "bindings" / "python"))
-    import importlib
-    return importlib.import_module("eoir")
-
+from demo_support import WGS84_A, WGS84_E2, ecef, enu_axes, import_eoir, write_json  # noqa: E402
 
 eoir = import_eoir()
 
-WGS84_A = 6378137.0
-WGS84_F = 1.0 / 298.257223563
-WGS84_E2 = WGS84_F * (2.0 - WGS84_F)
 
 TIME = "2010-06-21T09:00:00Z"
 BESIDE_DEG = 4.0  # the imager's azimuth from the Sun's, seen from the aircraft
 PLACE = (25.0, 17.0, 10000.0)  # lat, lon deg, height m
 HEADING_DEG = 45.0
 SPEED_M_S = 230.0
-
-
-def ecef(lat_deg, lon_deg, h_m):
-    lat, lon = math.radians(lat_deg), math.radians(lon_deg)
-    n = WGS84_A / math.sqrt(1.0 - WGS84_E2 * math.sin(lat) ** 2)
-    return np.array([(n + h_m) * math.cos(lat) * math.cos(lon), (n + h_m) * math.cos(lat) * math.sin(lon),
-                     (n * (1.0 - WGS84_E2) + h_m) * math.sin(lat)])
 
 
 def geodetic(r):
@@ -87,22 +66,6 @@ def geodetic(r):
         lat = math.atan2(z, p * (1.0 - WGS84_E2 * n / (n + h)))
     n = WGS84_A / math.sqrt(1.0 - WGS84_E2 * math.sin(lat) ** 2)
     return math.degrees(lat), math.degrees(lon), p / math.cos(lat) - n
-
-
-def enu_axes(lat_deg, lon_deg):
-    lat, lon = math.radians(lat_deg), math.radians(lon_deg)
-    east = np.array([-math.sin(lon), math.cos(lon), 0.0])
-    north = np.array([-math.sin(lat) * math.cos(lon), -math.sin(lat) * math.sin(lon), math.cos(lat)])
-    up = np.array([math.cos(lat) * math.cos(lon), math.cos(lat) * math.sin(lon), math.sin(lat)])
-    return east, north, up
-
-
-def write_json(path, data):
-    tmp = f"{path}.tmp"
-    with open(tmp, "w", encoding="utf-8") as f:
-        json.dump(data, f, indent=1)
-        f.write("\n")
-    os.replace(tmp, path)
 
 
 def airliner_parts():

@@ -86,6 +86,11 @@ struct PointSourceModel {
 PointSourceModel build_point_source_model(const OpticsModel& optics, const geometry::SampleGrid& grid,
                                           const Fidelity& fidelity);
 
+// Whether the tables come from the product of pixel-integrated line-spread
+// functions (pixels wider than 32 lambda F#, point_source_model.cpp) rather
+// than 2-D FFTs of the OTF.
+bool separable_pixels(const OpticsModel& optics, const geometry::SampleGrid& grid);
+
 // The window half-width H in pixels for point sources: the reach of
 // fidelity.point_psf_reach, at least 2, at most the array's larger side and
 // (psf_grid_size - 2) / 2 (energy_on_detector's FFT must hold the window).

@@ -119,7 +119,8 @@ std::int64_t tail_bytes(std::int64_t h) {
 }  // namespace
 
 std::int64_t PointSourceModel::bytes() const {
-  std::int64_t total = static_cast<std::int64_t>((core.size() + tail.size()) * sizeof(float));
+  std::int64_t total = static_cast<std::int64_t>((core.size() + tail.size()) * sizeof(float) +
+                                                 (core_x.size() + core_y.size()) * sizeof(double));
   for (const HaloLevel& l : halo) total += static_cast<std::int64_t>(l.kernel.size() * sizeof(double));
   return total;
 }
@@ -150,7 +151,8 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
   auto core_half = [&] {
     return m.window_half <= m.taper_start ? m.window_half : std::min(2 * m.taper_start, m.window_half);
   };
-  while (static_cast<double>(core_bytes(core_half(), m.core_steps)) > 0.75 * budget) {
+  m.separable = separable_pixels(optics, g);
+  while (!m.separable && static_cast<double>(core_bytes(core_half(), m.core_steps)) > 0.75 * budget) {
     if (m.core_steps > 1)
       m.core_steps = std::max<std::int64_t>(1, m.core_steps * 9 / 10);
     else if (m.taper_start > 2)
@@ -166,13 +168,32 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
   {
     const std::int64_t s = m.core_steps, offsets = s + 3, half = c * s + s + 1, box = 2 * c + 1;
     const auto entries = entries_of_samples(half, s, offsets, 1, c);
-    m.core.assign(static_cast<std::size_t>(offsets * offsets * box * box), 0.0f);
-    sample_pixel_energy(optics, g, s, half, f, [&](std::int64_t jx, std::int64_t jy, double v) {
-      for (const auto& [iy, dy] : entries[static_cast<std::size_t>(jy + half)])
-        for (const auto& [ix, dx] : entries[static_cast<std::size_t>(jx + half)])
-          m.core[static_cast<std::size_t>((iy * offsets + ix) * box * box + (dy + c) * box + dx + c)] =
-              static_cast<float>(v);
-    });
+    if (m.separable) {
+      // One line-spread function per axis (the 1-D tables hold S + 3 offsets
+      // of 2c + 1 pixels: no memory bound needed).
+      const double delta = s % 2 ? 0.5 : 0.0;
+      const double period_px = std::max(kTablePeriodPerExtent * 2.0 * static_cast<double>(half) / static_cast<double>(s),
+                                        kAliasPeriodPixels / std::cbrt(pixel_in_lambda_f));
+      auto axis = [&](double pitch_cm, std::vector<double>& table) {
+        const double fine = pitch_cm / static_cast<double>(s);
+        const std::vector<double> e =
+            pixel_integrated_lsf(optics, pitch_cm, fine, half, delta * fine, period_px * pitch_cm, f.otf_table_size);
+        table.assign(static_cast<std::size_t>(offsets * box), 0.0);
+        for (std::int64_t j = -half; j <= half; ++j)
+          for (const auto& [i, d] : entries[static_cast<std::size_t>(j + half)])
+            table[static_cast<std::size_t>(i * box + d + c)] = e[static_cast<std::size_t>(j + half)];
+      };
+      axis(g.pitch_x_cm, m.core_x);
+      axis(g.pitch_y_cm, m.core_y);
+    } else {
+      m.core.assign(static_cast<std::size_t>(offsets * offsets * box * box), 0.0f);
+      sample_pixel_energy(optics, g, s, half, f, [&](std::int64_t jx, std::int64_t jy, double v) {
+        for (const auto& [iy, dy] : entries[static_cast<std::size_t>(jy + half)])
+          for (const auto& [ix, dx] : entries[static_cast<std::size_t>(jx + half)])
+            m.core[static_cast<std::size_t>((iy * offsets + ix) * box * box + (dy + c) * box + dx + c)] =
+                static_cast<float>(v);
+      });
+    }
   }
   if (m.has_tail()) {
     // E at half-pixel offsets over the window: the direct tail (if it fits

@@ -65,6 +65,12 @@ struct PointSourceModel {
   // phi) at phi = -1/2 + (i - 1) / S, i = 0..S + 2 (one offset beyond each
   // end for the cubic).
   std::vector<float> core;
+  // Pixels wider than 32 lambda F# (separable_pixels): the core instead as
+  // E_x(d_x - phi_x) E_y(d_y - phi_y), the pixel-integrated line-spread
+  // functions, each at the same S + 3 offsets:
+  // core_x[i (2c + 1) + d + c] = E_x(d - phi_i) (core_y likewise); core empty.
+  bool separable = false;
+  std::vector<double> core_x, core_y;
   // tail[(i_y 3 + i_x) (2H + 1)^2 + (d_y + H)(2H + 1) + d_x + H]: the same at
   // phi = -1/2 + i / 2, zero on the core box; empty when over the memory
   // bound (or without a tail).

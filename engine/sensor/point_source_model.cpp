@@ -152,7 +152,11 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
     return m.window_half <= m.taper_start ? m.window_half : std::min(2 * m.taper_start, m.window_half);
   };
   m.separable = separable_pixels(optics, g);
-  while (!m.separable && static_cast<double>(core_bytes(core_half(), m.core_steps)) > 0.75 * budget) {
+  auto table_bytes = [&] {  // the 2-D core, or the two 1-D ones of doubles
+    const std::int64_t c = core_half(), s = m.core_steps;
+    return m.separable ? 2 * (2 * c + 1) * (s + 3) * 8 : core_bytes(c, s);
+  };
+  while (static_cast<double>(table_bytes()) > 0.75 * budget) {
     if (m.core_steps > 1)
       m.core_steps = std::max<std::int64_t>(1, m.core_steps * 9 / 10);
     else if (m.taper_start > 2)

@@ -43,7 +43,7 @@
 // pixels: the accuracy then degrades, to about 1 % for 140 lambda F#).
 // Pixels wider than 32 lambda F# (separable_pixels) instead hold the core as
 // two 1-D tables, E(u) = E_x(u_x) E_y(u_y) (core_x, core_y: S + 3 offsets of
-// 2c + 1 pixels, S not reduced by the bound), from pixel_integrated_lsf;
+// 2c + 1 pixels, within the same bound), from pixel_integrated_lsf;
 // their tails come from the same product. Built in milliseconds (7-37 ms
 // from 137 to 9,100 lambda F#), where the 2-D fold takes seconds.
 // Build: one FFT of up to 2048^2 points per table, 0.2-0.7 s for the

@@ -42,6 +42,7 @@ struct Image {
 struct Scratch {
   std::vector<float> acc;       // the core box
   std::vector<double> taper_x;  // w along x
+  std::vector<double> along_x, along_y;  // the separable core's factors
 };
 
 // The core box of one source, cubic in the offset, multiplied by the taper w
@@ -64,12 +65,26 @@ void add_core(const PointSourceModel& m, double x, double y, double electrons, b
   std::vector<float>& acc = scratch.acc;
   acc.assign(area, 0.0f);
   float* __restrict a = acc.data();
-  for (int b = 0; b < 4; ++b)
-    for (int k = 0; k < 4; ++k) {
-      const auto w = static_cast<float>(wy[b] * wx[k]);
-      const float* __restrict t = &m.core[static_cast<std::size_t>((iy + b) * offsets + ix + k) * area];
-      for (std::size_t i = from; i < to; ++i) a[i] += w * t[i];
-    }
+  if (m.separable) {
+    // E_y(d_y - phi_y) E_x(d_x - phi_x), each cubic in its own offset.
+    scratch.along_x.assign(static_cast<std::size_t>(box), 0.0);
+    scratch.along_y.assign(static_cast<std::size_t>(box), 0.0);
+    for (int k = 0; k < 4; ++k)
+      for (std::int64_t d = 0; d < box; ++d) {
+        scratch.along_x[static_cast<std::size_t>(d)] += wx[k] * m.core_x[static_cast<std::size_t>((ix + k) * box + d)];
+        scratch.along_y[static_cast<std::size_t>(d)] += wy[k] * m.core_y[static_cast<std::size_t>((iy + k) * box + d)];
+      }
+    for (std::size_t i = from; i < to; ++i)
+      a[i] = static_cast<float>(scratch.along_y[i / static_cast<std::size_t>(box)] *
+                                scratch.along_x[i % static_cast<std::size_t>(box)]);
+  } else {
+    for (int b = 0; b < 4; ++b)
+      for (int k = 0; k < 4; ++k) {
+        const auto w = static_cast<float>(wy[b] * wx[k]);
+        const float* __restrict t = &m.core[static_cast<std::size_t>((iy + b) * offsets + ix + k) * area];
+        for (std::size_t i = from; i < to; ++i) a[i] += w * t[i];
+      }
+  }
   const double start = static_cast<double>(m.taper_start);
   const double* tx = nullptr;
   if (tapered) {

@@ -1,5 +1,6 @@
 #include "sensor/system_psf.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
@@ -210,6 +211,51 @@ FocalPlaneSamples pixel_integrated_psf(const OpticsModel& optics, double pitch_x
   // Sample ix of integrated_psf is (PSF conv box)(ix step - offset): offset = -centre.
   return integrated_psf(optics, pitch_x_cm, pitch_y_cm, step_x_cm, step_y_cm, size, -centre_x_cm, -centre_y_cm, 1,
                         numerics);
+}
+
+std::vector<double> pixel_integrated_lsf(const OpticsModel& optics, double pitch_cm, double step_cm, std::int64_t half,
+                                         double centre_cm, double period_cm, std::int64_t otf_table_size) {
+  const std::int64_t k = fft_subdivisions(optics, step_cm, 1);
+  const double dx = step_cm / static_cast<double>(k);
+  const double span_cm = static_cast<double>(2 * half + 1) * step_cm;
+  const double period = std::max(period_cm, 2.0 * span_cm);
+  const auto wanted = static_cast<std::int64_t>(std::ceil(period / dx));
+  if (wanted > (std::int64_t{1} << 28))
+    throw Error(Status::out_of_range, "psf window: a line-spread FFT of " + std::to_string(wanted) + " points");
+  const std::int64_t n = 2 * static_cast<std::int64_t>(fftw::good_size(static_cast<int>((wanted + 1) / 2)));
+  const std::int64_t bins = n / 2 + 1;
+  const double cutoff = optics.cutoff_cycles_per_cm();
+  // The radial OTF tabulated on [0, cutoff] as integrated_psf does.
+  std::vector<double> otf_table(static_cast<std::size_t>(otf_table_size + 2), 0.0);
+  for (std::int64_t t = 0; t <= otf_table_size; ++t)
+    otf_table[static_cast<std::size_t>(t)] =
+        optics.system(cutoff * static_cast<double>(t) / static_cast<double>(otf_table_size));
+  const double table_scale = static_cast<double>(otf_table_size) / cutoff;
+  const fftw::ComplexBuffer spectrum = fftw::complex_buffer(static_cast<std::size_t>(bins));
+  // Riemann sum over d xi = 1 / (n dx) of OTF(xi, 0) pitch sinc(xi pitch)
+  // e^(2 pi i xi centre): sample i is the pixel-integrated LSF at i dx + centre.
+  const double scale = pitch_cm / (static_cast<double>(n) * dx);
+  for (std::int64_t b = 0; b < bins; ++b) {
+    const double xi = static_cast<double>(b) / (static_cast<double>(n) * dx);
+    double value = 0;
+    if (xi < cutoff) {
+      const double u = xi * table_scale;
+      const auto t = static_cast<std::size_t>(u);
+      const double frac = u - static_cast<double>(t);
+      value = scale * (otf_table[t] + frac * (otf_table[t + 1] - otf_table[t])) * sinc_pi(xi * pitch_cm);
+    }
+    const double phase = 2.0 * constants::pi * xi * centre_cm;
+    const std::complex<double> v(value * std::cos(phase), value * std::sin(phase));
+    spectrum[static_cast<std::size_t>(b)][0] = v.real();
+    spectrum[static_cast<std::size_t>(b)][1] = v.imag();
+  }
+  // In place: the row holds n reals in 2 (n/2 + 1).
+  fftw_execute_dft_c2r(fftw::row_c2r(static_cast<int>(n)), spectrum.get(), reinterpret_cast<double*>(spectrum.get()));
+  const double* samples = reinterpret_cast<const double*>(spectrum.get());
+  std::vector<double> out(static_cast<std::size_t>(2 * half + 1));
+  for (std::int64_t j = -half; j <= half; ++j)
+    out[static_cast<std::size_t>(j + half)] = samples[static_cast<std::size_t>(((j * k) % n + n) % n)];
+  return out;
 }
 
 double ensquared_energy(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm,

@@ -84,6 +84,16 @@ FocalPlaneSamples pixel_integrated_psf(const OpticsModel& optics, double pitch_x
                                        double step_x_cm, double step_y_cm, std::int64_t size, double centre_x_cm,
                                        double centre_y_cm, const PsfNumerics& numerics);
 
+// (b'') The separable counterpart for pixels far wider than lambda F#: the
+// line-spread function (the PSF integrated across y; its transform is the
+// radial OTF on the xi axis, OTF(xi, 0)) integrated over a pixel of width
+// pitch, sampled at centre + j step, j = -half..half, by one 1-D FFT (a
+// Nyquist-fine spacing step / k <= lambda F# / 2, period at least
+// period_cm and twice the samples' span). Its samples at whole pixels sum
+// to one. otf_table_size as for integrated PSFs.
+std::vector<double> pixel_integrated_lsf(const OpticsModel& optics, double pitch_cm, double step_cm, std::int64_t half,
+                                         double centre_cm, double period_cm, std::int64_t otf_table_size);
+
 // (c) Ensquared energy, eq. 42: EOD of the centre pixel for a point source at
 // its centre.
 double ensquared_energy(const OpticsModel& optics, double pitch_x_cm, double pitch_y_cm, const PsfNumerics& numerics);

@@ -386,6 +386,37 @@ class Engine(_Closing):
     def __contains__(self, name: str) -> bool:
         return any(n == name for n, _ in self.objects())
 
+    # ------------------------------------------------------------ limits
+    _LIMIT_FIELDS = ("max_satellites", "max_vehicles", "max_sites", "max_missiles", "max_sensors")
+
+    def limits(self) -> Dict[str, int]:
+        """The engine's object limits (eoir_engine_get_limits): max_satellites,
+        max_vehicles, max_sites, max_missiles, max_sensors; a new engine has
+        the spec's profile (16, 6, 16, 6, 6)."""
+        out = _lib.eoir_limits()
+        out.struct_size = ctypes.sizeof(out)
+        check(lib.eoir_engine_get_limits(self.handle, byref(out)))
+        return {name: int(getattr(out, name)) for name in self._LIMIT_FIELDS}
+
+    def set_limits(self, **limits: int) -> None:
+        """Raise or lower some object limits (eoir_engine_set_limits; the
+        others keep their values): e.g. set_limits(max_satellites=1000).
+        Raises OutOfRangeError for 0 or a value above its ceiling (the
+        message names the field), NotAllowedError below the objects of that
+        kind the engine holds, ValueError for an unknown name."""
+        unknown = sorted(set(limits) - set(self._LIMIT_FIELDS))
+        if unknown:
+            raise ValueError(f"set_limits: unknown limit {', '.join(unknown)} (known: {', '.join(self._LIMIT_FIELDS)})")
+        values = self.limits()
+        values.update(limits)
+        st = _lib.eoir_limits()
+        st.struct_size = ctypes.sizeof(st)
+        for name, value in values.items():
+            if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value < 2 ** 32:
+                raise errors.OutOfRangeError(f"{name}: must be a whole number in [1, its ceiling], not {value!r}")
+            setattr(st, name, value)
+        check(lib.eoir_engine_set_limits(self.handle, byref(st)))
+
     # ------------------------------------------------------------- state
     def set_state(self, name: str, position, velocity=(0.0, 0.0, 0.0),
                   attitude=(1.0, 0.0, 0.0, 0.0), frame="j2000", time=None,

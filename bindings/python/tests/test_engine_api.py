@@ -177,3 +177,26 @@ def test_every_property_reads(table3):
         expected = {"number": float, "integer": int, "bool": bool, "string": str,
                     "array": np.ndarray}[p["type"]]
         assert isinstance(value, expected), p["name"]
+
+
+def test_limits_default_profile_and_raised():
+    """Object limits (issue 23 item 3): the spec's profile by default, the
+    17th satellite refused naming max_satellites, accepted once raised; bad
+    values refused naming the field, an unknown name a ValueError."""
+    with eoir.Engine() as e:
+        assert e.limits() == {"max_satellites": 16, "max_vehicles": 6, "max_sites": 16, "max_missiles": 6,
+                              "max_sensors": 6}
+        for i in range(16):
+            e.add_object("satellite", f"S{i}")
+        with pytest.raises(eoir.LimitExceededError, match="max_satellites"):
+            e.add_object("satellite", "S16")
+        e.set_limits(max_satellites=1000)
+        assert e.limits()["max_satellites"] == 1000 and e.limits()["max_vehicles"] == 6
+        e.add_object("satellite", "S16")
+        with pytest.raises(eoir.OutOfRangeError, match="max_satellites"):
+            e.set_limits(max_satellites=0)
+        with pytest.raises(eoir.NotAllowedError):
+            e.set_limits(max_satellites=10)  # below the 17 it holds
+        with pytest.raises(ValueError, match="max_planets"):
+            e.set_limits(max_planets=3)
+        assert e.limits()["max_satellites"] == 1000  # refusals change nothing

@@ -9,21 +9,16 @@
 #include <string>
 
 #include "sgp4.hpp"
+#include "tle_lines.hpp"
 
 using eoir::cli::Sgp4;
 
 namespace {
 
-// The ISS (the test scenario of check_sgp4.py); both checksums are right.
-const std::string kLine1 = "1 25544U 98067A   08264.51782528 -.00002182  00000-0 -11606-4 0  2927";
-const std::string kLine2 = "2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.72125391563537";
-
-// Column 69 of the first 68 columns: digits, and 1 for each '-'.
-std::string with_checksum(const std::string& first_68) {
-  int sum = 0;
-  for (char c : first_68) sum += c >= '0' && c <= '9' ? c - '0' : c == '-';
-  return first_68 + std::to_string(sum % 10);
-}
+// The ISS set (the test scenario of check_sgp4.py; tle_lines.hpp).
+const std::string& kLine1 = eoir::test::kIssLine1;
+const std::string& kLine2 = eoir::test::kIssLine2;
+using eoir::test::with_checksum;
 
 // kLine1/kLine2 with `text` at 0-based column `at`, checksum recomputed.
 std::string line1_with(std::size_t at, const std::string& text) {

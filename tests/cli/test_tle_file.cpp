@@ -7,22 +7,18 @@
 #include <string>
 
 #include "tle_file.hpp"
+#include "tle_lines.hpp"
 
 using eoir::cli::parse_tle_file;
 using eoir::cli::Sgp4;
 
 namespace {
 
-// The ISS set of the TLE format's own example (checksums right), and its
-// lines with the satellite number and mean anomaly changed, checksum redone.
-const std::string kLine1 = "1 25544U 98067A   08264.51782528 -.00002182  00000-0 -11606-4 0  2927";
-const std::string kLine2 = "2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.72125391563537";
-
-std::string with_checksum(const std::string& first_68) {
-  int sum = 0;
-  for (char c : first_68) sum += c >= '0' && c <= '9' ? c - '0' : c == '-';
-  return first_68 + std::to_string(sum % 10);
-}
+// The ISS set (tle_lines.hpp), and its lines with the satellite number and
+// mean anomaly changed, checksum redone.
+const std::string& kLine1 = eoir::test::kIssLine1;
+const std::string& kLine2 = eoir::test::kIssLine2;
+using eoir::test::with_checksum;
 std::string line1(const std::string& satnum) { return with_checksum(kLine1.substr(0, 68).replace(2, 5, satnum)); }
 std::string line2(const std::string& satnum, const std::string& field = "", std::size_t at = 0) {
   std::string l = kLine2.substr(0, 68).replace(2, 5, satnum);

@@ -251,10 +251,32 @@ const Frame& Engine::render(const std::string& name) {
   const auto t1 = clock_type::now();
   progress(0.05, "render");
   FrameBuffers& spare = spare_buffers_[name];
-  frame->scene = scene::generate_scene(w, options_.threads, std::move(spare.scene));
-  progress(0.6, "render");
-  frame->sensor =
-      sensor::render_sensor_image(model, frame->scene.image, noise_rng_, options_.threads, std::move(spare.sensor));
+  frame->scene_in_strips =
+      static_cast<double>(sensor::whole_frame_bytes(model)) > model.fidelity().scene_memory_max_mib * 1048576.0;
+  if (frame->scene_in_strips) {
+    // The scene made strip by strip as the convolution asks for its rows.
+    frame->scene = scene::generate_point_sources(w);
+    scene::SceneRows rows;
+    double cast_s = 0;
+    const double grid_rows = static_cast<double>(w.grid().height());
+    const sensor::SceneRowSource source = [&](std::int64_t first, std::int64_t last) -> const double* {
+      const auto start = clock_type::now();
+      rows = scene::generate_scene_rows(w, first, last, options_.threads, std::move(rows));
+      cast_s += seconds_between(start, clock_type::now());
+      frame->scene.rays += rows.rays;
+      progress(0.05 + 0.5 * static_cast<double>(last) / grid_rows, "render");
+      return rows.radiance_W_cm2_sr.data();
+    };
+    frame->sensor = sensor::render_sensor_image(model, frame->scene.image, noise_rng_, options_.threads,
+                                                std::move(spare.sensor), &source);
+    frame->scene.ray_casting_s = cast_s;
+    frame->sensor.convolution_s -= cast_s;
+  } else {
+    frame->scene = scene::generate_scene(w, options_.threads, std::move(spare.scene));
+    progress(0.6, "render");
+    frame->sensor =
+        sensor::render_sensor_image(model, frame->scene.image, noise_rng_, options_.threads, std::move(spare.sensor));
+  }
   progress(0.9, "render");
   const auto t2 = clock_type::now();
   const universe::SensorParameters& p = model.parameters;
@@ -262,8 +284,9 @@ const Frame& Engine::render(const std::string& name) {
   display.agc = p.display_agc;
   display.gain_step = p.display_gain_step;
   display.stretch = p.display_stretch;
-  frame->scene_display =
-      sensor::scene_display(frame->scene.image, display, options_.threads, std::move(spare.scene_display));
+  if (!frame->scene_in_strips)
+    frame->scene_display =
+        sensor::scene_display(frame->scene.image, display, options_.threads, std::move(spare.scene_display));
   display.full_scale = std::isfinite(model.metrics.saturation_electrons) ? model.metrics.saturation_electrons : 1e6;
   display.saturation = model.metrics.saturation_electrons;  // +inf with saturation off
   if (p.detector.enabled) display.full_scale = display.saturation = p.detector.full_well_e;  // sensor/detector.hpp
@@ -437,7 +460,36 @@ scene::Pick Engine::pick(const std::string& sensor, int space, std::int64_t x, s
   // A pixel is picked at its centre sample (index k / 2 of its k).
   const std::int64_t c = (space == 0 ? x : x * k + k / 2) + g.guard_samples();
   const std::int64_t r = (space == 0 ? y : y * k + k / 2) + g.guard_samples();
-  return scene::pick_sample(*f.world, f.scene, c, r);
+  if (f.scene_in_strips) {  // the sample's row made again
+    const scene::SceneRows row = scene::generate_scene_rows(*f.world, r, r + 1, options_.threads);
+    return scene::pick_sample(*f.world, row.radiance_W_cm2_sr[static_cast<std::size_t>(c)],
+                              row.hits[static_cast<std::size_t>(c)], c, r);
+  }
+  const auto i = static_cast<std::size_t>(r * g.width() + c);
+  return scene::pick_sample(*f.world, f.scene.image.radiance_W_cm2_sr[i], f.scene.hits[i], c, r);
+}
+
+void Engine::scene_field_radiance(const std::string& sensor, double* values) const {
+  const Frame& f = frame(sensor);
+  const geometry::SampleGrid& g = f.grid();
+  const std::int64_t w = g.width(), guard = g.guard_samples(), fw = g.field_width(), fh = g.field_height();
+  // Rows [first, last) of the grid from radiance, which holds rows from buffer_first on.
+  const auto copy_rows = [&](const std::vector<double>& radiance, std::int64_t buffer_first, std::int64_t first,
+                             std::int64_t last) {
+    for (std::int64_t r = first; r < last; ++r)
+      std::copy_n(radiance.begin() + (r - buffer_first) * w + guard, fw, values + (r - guard) * fw);
+  };
+  if (!f.scene_in_strips) {
+    copy_rows(f.scene.image.radiance_W_cm2_sr, 0, guard, guard + fh);
+    return;
+  }
+  constexpr std::int64_t kRowsPerStrip = 256;
+  scene::SceneRows rows;
+  for (std::int64_t first = guard; first < guard + fh; first += kRowsPerStrip) {
+    const std::int64_t last = std::min(guard + fh, first + kRowsPerStrip);
+    rows = scene::generate_scene_rows(*f.world, first, last, options_.threads, std::move(rows));
+    copy_rows(rows.radiance_W_cm2_sr, first, first, last);
+  }
 }
 
 }  // namespace eoir

@@ -97,6 +97,10 @@ class Engine {
   // What sample (space 0) or the centre sample of pixel (space 1) (x, y) of
   // the last frame sees.
   scene::Pick pick(const std::string& sensor, int space, std::int64_t x, std::int64_t y) const;
+  // The last frame's effective radiance of the field's samples (row-major,
+  // field_width x field_height) into values; a frame made in strips has it
+  // made again from its world, strip by strip.
+  void scene_field_radiance(const std::string& sensor, double* values) const;
 
   // Worlds built so far (the same world serves a render's image, truth and
   // target metrics).

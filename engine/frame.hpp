@@ -76,6 +76,10 @@ struct Frame {
   std::shared_ptr<const scene::World> world;
   std::shared_ptr<const sensor::SensorModel> sensor_model;
   scene::SceneImage scene;
+  // Made in strips (fidelity scene_memory_max_mib): the scene holds its
+  // point sources but no samples, and there is no scene display; the scene
+  // radiance and picks are made again from the world on request.
+  bool scene_in_strips = false;
   sensor::SensorImage sensor;
   std::vector<std::uint8_t> scene_display;   // samples of the field of view
   std::vector<std::uint8_t> sensor_display;  // pixels

@@ -30,6 +30,13 @@ Extent extent_of(const Frame& f, int32_t kind) {
     default: throw Error(Status::out_of_range, "kind: unknown image kind " + std::to_string(kind));
   }
 }
+// A frame made in strips keeps no scene display.
+void need_scene_display(const Frame& f) {
+  if (f.scene_in_strips)
+    throw Error(Status::no_state,
+                "kind: the frame was made in strips (its buffers exceed the sensor's scene_memory_max_mib): no scene "
+                "display");
+}
 // The frame's ADU image; no_state unless it was rendered with the detector stage.
 const std::vector<std::uint32_t>& adu_of(const Frame& f) {
   if (f.sensor.adu.empty())
@@ -53,6 +60,7 @@ EOIR_API eoir_status eoir_image_info_get(eoir_engine engine, const char* sensor,
     capi::need_size(info->struct_size, v11_size, "info_out");
     const Extent ext = extent_of(f, kind);
     if (kind == EOIR_IMAGE_SENSOR_ADU) adu_of(f);
+    if (kind == EOIR_IMAGE_SCENE_DISPLAY) need_scene_display(f);
     const uint32_t size = info->struct_size;
     eoir_image_info full{};
     full.struct_size = size;
@@ -131,12 +139,7 @@ EOIR_API eoir_status eoir_image_get(eoir_engine engine, const char* sensor, int3
       throw Error(Status::type_mismatch, "kind: display images are bytes; use eoir_image_get_bytes");
     if (capacity < n) throw Error(Status::buffer_too_small, "capacity: " + std::to_string(n) + " values needed");
     if (kind == EOIR_IMAGE_SCENE_RADIANCE) {
-      const geometry::SampleGrid& g = f.grid();
-      const std::int64_t w = g.width(), guard = g.guard_samples();
-      const auto& radiance = f.scene.image.radiance_W_cm2_sr;
-      for (std::int64_t r = 0; r < ext.height; ++r)
-        for (std::int64_t c = 0; c < ext.width; ++c)
-          values[r * ext.width + c] = radiance[static_cast<size_t>((r + guard) * w + c + guard)];
+      e.scene_field_radiance(str(sensor, "sensor"), values);
     } else if (kind == EOIR_IMAGE_SENSOR_ADU) {
       const auto& adu = adu_of(f);
       std::copy(adu.begin(), adu.end(), values);
@@ -156,6 +159,7 @@ EOIR_API eoir_status eoir_image_get_bytes(eoir_engine engine, const char* sensor
     if (kind != EOIR_IMAGE_SCENE_DISPLAY && kind != EOIR_IMAGE_SENSOR_DISPLAY)
       throw Error(Status::type_mismatch, "kind: only display images are bytes; use eoir_image_get");
     const size_t n = static_cast<size_t>(ext.width * ext.height);
+    if (kind == EOIR_IMAGE_SCENE_DISPLAY) need_scene_display(f);
     if (capacity < n) throw Error(Status::buffer_too_small, "capacity: " + std::to_string(n) + " bytes needed");
     const auto& src = kind == EOIR_IMAGE_SCENE_DISPLAY ? f.scene_display : f.sensor_display;
     std::copy(src.begin(), src.end(), bytes);

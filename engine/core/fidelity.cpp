@@ -155,6 +155,12 @@ const std::vector<Spec>& fidelity_properties() {
                                    "Padding of the scene FFT beyond the guard band, in guard bands (the border "
                                    "samples repeated)",
                                    [](F& f) -> auto& { return f.fft_padding; }, Range{0, 16}, true));
+    t.push_back(number_property<F>("scene_memory_max_mib", "MiB",
+                                   "Frames whose whole-frame sample and transform buffers would exceed this are made "
+                                   "in strips of sample rows, the transform's columns through a temporary file in "
+                                   "TMPDIR (memory a few strips; results equal to 1e-9; no scene display, the scene "
+                                   "radiance and picks made again on request); 0: always in strips",
+                                   [](F& f) -> auto& { return f.scene_memory_max_mib; }, Range{0, 16777216}, true));
     t.push_back(number_property<F>("atmosphere_sub_sample_spacing_cm1", "cm^-1",
                                    "The Earth's atmosphere: transmittance sub-samples of each spectral interval at "
                                    "most this far apart in wavenumber (20: the band models' resolution)",

@@ -85,6 +85,10 @@ struct Fidelity {
   double streak_steps_per_pixel = 8.0;
   double streak_steps_per_lambda_f = 1.0;
   double fft_padding = 1.0;  // FFT padding beyond the guard band, in guard bands
+  // Frames whose whole-frame sample and transform buffers
+  // (sensor::whole_frame_bytes) exceed this are made in strips of rows
+  // (sensor/scene_convolution.hpp): 0 always, the whole frame never kept.
+  double scene_memory_max_mib = 1024.0;
   // The Earth's atmosphere (spec 4.3.1.1, eq. 9; issue 20 item 8): its
   // tables, made once per atmosphere and band (the sky's cells per frame).
   // Transmittance sub-samples of each spectral interval at most this far

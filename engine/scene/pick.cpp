@@ -14,17 +14,16 @@ void ra_dec_deg(const Vec3& d, double& ra, double& dec) {
   dec = std::asin(std::clamp(d.z() / d.norm(), -1.0, 1.0)) * constants::deg_per_rad;
 }
 
-Pick pick_sample(const World& world, const SceneImage& scene, std::int64_t c, std::int64_t r) {
-  const geometry::SampleGrid& grid = world.grid();
-  const std::size_t i = static_cast<std::size_t>(r * grid.width() + c);
+Pick pick_sample(const World& world, double effective_radiance_W_cm2_sr, const SampleHit& sample_hit, std::int64_t c,
+                 std::int64_t r) {
   const Vec3 d = world.sample_direction(c, r);
   Pick pick;
-  pick.effective_radiance_W_cm2_sr = scene.image.radiance_W_cm2_sr[i];
+  pick.effective_radiance_W_cm2_sr = effective_radiance_W_cm2_sr;
   ra_dec_deg(d, pick.right_ascension_deg, pick.declination_deg);
   pick.wavelengths_um = world.spectral().sample_wavelengths_um;
   pick.spectral_radiance_W_cm2_sr_um.assign(pick.wavelengths_um.size(), 0.0);
   pick.range_m = geometry::sky_range_m;
-  if (scene.hits[i].object_id < 0) {
+  if (sample_hit.object_id < 0) {
     pick.terms = world.sky_terms(d);
     pick.spectral_radiance_W_cm2_sr_um = pick.terms.at_sensor;
     return pick;

@@ -27,8 +27,10 @@ struct Pick {
   Eq9Terms terms;                                       // the same term by term (its at_sensor is that vector)
 };
 
-// Sample (c, r) of the full grid (guard band included).
-Pick pick_sample(const World& world, const SceneImage& scene, std::int64_t c, std::int64_t r);
+// Sample (c, r) of the full grid (guard band included), whose effective
+// radiance and hit the scene generator gave.
+Pick pick_sample(const World& world, double effective_radiance_W_cm2_sr, const SampleHit& hit, std::int64_t c,
+                 std::int64_t r);
 
 // J2000 right ascension in [0, 360) and declination of a direction (deg).
 void ra_dec_deg(const Vec3& direction, double& ra_deg, double& dec_deg);

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 #include <utility>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/parallel_ranges.hpp"
 #include "scene/apparent_grid.hpp"
 
@@ -30,10 +32,12 @@ namespace {
 // below kSmallBlendSamples samples across drawn toward its point irradiance.
 constexpr double kSmallBlendSamples = 4.0;
 
+// Rows [begin, end) of the grid are written; radiance and hits hold rows
+// [lo, hi) (at least one beyond [begin, end) on each side inside the grid).
 void add_small_objects(const World& world, std::vector<double>& radiance, const std::vector<SampleHit>& hits,
-                       unsigned threads) {
+                       std::int64_t lo, std::int64_t hi, std::int64_t begin, std::int64_t end, unsigned threads) {
   const geometry::SampleGrid& grid = world.grid();
-  const std::int64_t w = grid.width(), h = grid.height();
+  const std::int64_t w = grid.width();
   const double n = static_cast<double>(grid.per_pixel);
   const double sample_sr = (2.0 * std::atan(grid.pitch_x_cm / (2.0 * grid.focal_length_cm)) / n) *
                            (2.0 * std::atan(grid.pitch_y_cm / (2.0 * grid.focal_length_cm)) / n);
@@ -69,8 +73,8 @@ void add_small_objects(const World& world, std::vector<double>& radiance, const 
     const auto reach = static_cast<std::int64_t>(std::ceil(0.5 * across)) + 2;
     const auto ic = static_cast<std::int64_t>(std::lround(cc)), ir = static_cast<std::int64_t>(std::lround(rc));
     const std::int64_t c0 = std::max<std::int64_t>(0, ic - reach), c1 = std::min<std::int64_t>(w, ic + reach + 1);
-    const std::int64_t r0 = std::max<std::int64_t>(0, ir - reach), r1 = std::min<std::int64_t>(h, ir + reach + 1);
-    if (c1 <= c0 || r1 <= r0) continue;
+    const std::int64_t r0 = std::max<std::int64_t>(0, ir - reach), r1 = std::min<std::int64_t>(grid.height(), ir + reach + 1);
+    if (c1 <= c0 || r1 <= r0 || r1 <= begin || r0 >= end) continue;
     const std::int64_t bw = c1 - c0;
     std::vector<double> energy(static_cast<std::size_t>(bw * (r1 - r0)), 0.0), cover(energy.size(), 0.0);
     const auto add = [&](std::int64_t c, std::int64_t r, double weight, double E, double omega) {
@@ -97,16 +101,16 @@ void add_small_objects(const World& world, std::vector<double>& radiance, const 
     // sample's pick gives), a composite (whose parts meet there) takes its
     // window's, with nothing behind.
     const auto on = [&](std::int64_t c, std::int64_t r) {
-      return c >= 0 && c < w && r >= 0 && r < h && hits[static_cast<std::size_t>(r * w + c)].object_id == o->id;
+      return c >= 0 && c < w && r >= lo && r < hi && hits[static_cast<std::size_t>((r - lo) * w + c)].object_id == o->id;
     };
     std::vector<std::size_t> box;
     std::vector<Vec3> directions;
-    for (std::int64_t r = r0; r < r1; ++r)
+    for (std::int64_t r = std::max(r0, begin); r < std::min(r1, end); ++r)
       for (std::int64_t c = c0; c < c1; ++c) {
         const auto i = static_cast<std::size_t>((r - r0) * bw + (c - c0));
         if (on(c, r) && on(c - 1, r) && on(c + 1, r) && on(c, r - 1) && on(c, r + 1)) {
           // (a composite's parts meet inside it: its window there, nothing behind)
-          if (composite) radiance[static_cast<std::size_t>(r * w + c)] = energy[i] / sample_sr;
+          if (composite) radiance[static_cast<std::size_t>((r - lo) * w + c)] = energy[i] / sample_sr;
           continue;
         }
         if (cover[i] > 0 || on(c, r)) {
@@ -127,25 +131,19 @@ void add_small_objects(const World& world, std::vector<double>& radiance, const 
       }
       const std::size_t i = box[k];
       const std::int64_t c = c0 + static_cast<std::int64_t>(i) % bw, r = r0 + static_cast<std::int64_t>(i) / bw;
-      radiance[static_cast<std::size_t>(r * w + c)] =
+      radiance[static_cast<std::size_t>((r - lo) * w + c)] =
           energy[i] / sample_sr + (1.0 - std::min(1.0, cover[i] / sample_sr)) * L_behind;
     }
   }
 }
 
-}  // namespace
-
-SceneImage generate_scene(const World& world, unsigned threads, SceneImage storage) {
-  using clock = std::chrono::steady_clock;
-  const auto seconds = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
-  const auto t0 = clock::now();
-  SceneImage out;
+// The point sources of the field (spec 4.1.6.1): distant area sources at
+// their exact positions (where they appear: scene/apparent_grid.hpp), where
+// they lie inside the field of view and the (geometric) line of sight to them
+// is clear, then the catalogue stars, placed and culled with the world's sky.
+std::vector<radiometry::PointSource> field_point_sources(const World& world) {
+  std::vector<radiometry::PointSource> out;
   const geometry::SampleGrid& grid = world.grid();
-  out.image.grid = grid;
-
-  // Distant area sources (4.1.6.1) at their exact positions (where they
-  // appear: scene/apparent_grid.hpp), where they lie inside the field of view
-  // and the (geometric) line of sight to them is clear.
   const ApparentGrid apparent(world);
   for (const auto& o : world.objects) {
     if (o->imaging != Imaging::point_source) continue;
@@ -153,26 +151,35 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
     if (!apparent.object(*o, p) || !grid.in_field(p.column, p.row, 1e-4)) continue;
     const geometry::RayQuery others{geometry::ray_mask_all, o->id};
     if (world.caster.occluded(o->seen.position_m / o->range_m, o->range_m, others)) continue;
-    out.image.point_sources.push_back(radiometry::PointSource{o->id, -1, p.column, p.row, o->point_irradiance_W_cm2(),
-                                                              p.streak_columns, p.streak_rows});
+    out.push_back(radiometry::PointSource{o->id, -1, p.column, p.row, o->point_irradiance_W_cm2(), p.streak_columns,
+                                          p.streak_rows});
   }
-  // Catalogue stars (spec 4.1.6.1), placed and culled with the world's sky.
   for (std::size_t k = 0; k < world.sky.stars.size(); ++k) {
     const WorldStar& s = world.sky.stars[k];
-    out.image.point_sources.push_back(radiometry::PointSource{-1, static_cast<std::int32_t>(k), s.column, s.row,
-                                                              s.irradiance_W_cm2, s.streak_columns, s.streak_rows});
+    out.push_back(radiometry::PointSource{-1, static_cast<std::int32_t>(k), s.column, s.row, s.irradiance_W_cm2,
+                                          s.streak_columns, s.streak_rows});
   }
-  const auto t1 = clock::now();
+  return out;
+}
 
+// Rows [begin, end) of the grid, ray-cast, shaded, their silhouette edges
+// refined and small objects drawn, into radiance and hits, which hold rows
+// [lo, hi): begin - 1 and end too where the grid has them (the neighbours an
+// edge and a small object are found with). Returns the rays cast. Every
+// value is the one the whole grid's generation gives (rows of the sky's
+// coarse grid and the ray caster's tiles are the grid's own).
+std::size_t shade_rows(const World& world, std::int64_t lo, std::int64_t hi, std::int64_t begin, std::int64_t end,
+                       std::vector<double>& radiance, std::vector<SampleHit>& hits, unsigned threads) {
+  const geometry::SampleGrid& grid = world.grid();
   // Ray-cast the sample grid (spec 4.1.3) against the objects imaged as
   // extended sources and shade only what is hit (WorldObject::radiance_at).
   const std::int64_t w = grid.width(), h = grid.height();
-  const std::size_t count = static_cast<std::size_t>(w * h);
-  out.hits = std::move(storage.hits);
-  out.image.radiance_W_cm2_sr = std::move(storage.image.radiance_W_cm2_sr);
-  out.hits.resize(count);  // cast_grid emits every sample once
-  out.image.radiance_W_cm2_sr.resize(count);
+  const std::size_t count = static_cast<std::size_t>(w * (hi - lo));
+  hits.resize(count);  // cast_grid emits every sample once
+  radiance.resize(count);
+  // (r: the grid's row; cast_grid's rows count from lo)
   const auto direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r); };
+  const auto local_direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r + lo); };
   const bool sky_varies = world.atmosphere.sky != nullptr;  // under the atmosphere, with the line of sight
   const double background = world.sky.background_radiance_W_cm2_sr;
   // The sky under the atmosphere on a coarse grid (every kSkyStep-th
@@ -182,26 +189,27 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
   // lookup (the limb's haze, the horizon).
   constexpr std::int64_t kSkyStep = 8;
   constexpr double kSkyAgreement = 1e-3;
-  const std::int64_t gw = (w + kSkyStep - 1) / kSkyStep + 1, gh = (h + kSkyStep - 1) / kSkyStep + 1;
+  // The coarse grid's rows j0 .. j0 + gh - 1 about rows [lo, hi).
+  const std::int64_t gw = (w + kSkyStep - 1) / kSkyStep + 1, j0 = lo / kSkyStep, gh = (hi - 1) / kSkyStep + 2 - j0;
   std::vector<double> sky_grid;
   if (sky_varies) {
     sky_grid.resize(static_cast<std::size_t>(gw * gh));
     parallel_ranges(
         gh, threads,
-        [&](std::int64_t j0, std::int64_t j1) {
-          for (std::int64_t j = j0; j < j1; ++j)
+        [&](std::int64_t a, std::int64_t b) {
+          for (std::int64_t j = a; j < b; ++j)
             for (std::int64_t i = 0; i < gw; ++i)
-              sky_grid[static_cast<std::size_t>(j * gw + i)] =
-                  world.sky_radiance(direction(std::min(i * kSkyStep, w - 1), std::min(j * kSkyStep, h - 1)));
+              sky_grid[static_cast<std::size_t>(j * gw + i)] = world.sky_radiance(
+                  direction(std::min(i * kSkyStep, w - 1), std::min((j0 + j) * kSkyStep, h - 1)));
         },
         4);
   }
   const auto sky_at = [&](std::int64_t c, std::int64_t r, const Vec3& d) {
     const std::int64_t i = c / kSkyStep, j = r / kSkyStep;
-    const double* g0 = &sky_grid[static_cast<std::size_t>(j * gw + i)];
+    const double* g0 = &sky_grid[static_cast<std::size_t>((j - j0) * gw + i)];
     const double* g1 = g0 + gw;
-    const double lo = std::min({g0[0], g0[1], g1[0], g1[1]}), hi = std::max({g0[0], g0[1], g1[0], g1[1]});
-    if (hi - lo > kSkyAgreement * hi) return world.sky_radiance(d.squaredNorm() > 0 ? d : direction(c, r));
+    const double least = std::min({g0[0], g0[1], g1[0], g1[1]}), most = std::max({g0[0], g0[1], g1[0], g1[1]});
+    if (most - least > kSkyAgreement * most) return world.sky_radiance(d.squaredNorm() > 0 ? d : direction(c, r));
     // (the last cell of a row or column may be narrower)
     const double cw = static_cast<double>(std::min((i + 1) * kSkyStep, w - 1) - i * kSkyStep);
     const double ch = static_cast<double>(std::min((j + 1) * kSkyStep, h - 1) - j * kSkyStep);
@@ -211,26 +219,26 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
   };
   const geometry::RayQuery extended{geometry::ray_mask_extended, -1};
   world.caster.cast_grid(
-      w, h, direction,
+      w, hi - lo, local_direction,
       [&](std::int64_t c, std::int64_t r, std::int32_t object, std::int32_t part, std::int32_t facet, double range_m,
           const Vec3& d, const Vec3& normal_frame) {
         const auto i = static_cast<std::size_t>(r * w + c);
-        out.hits[i] = SampleHit{object, part};
+        hits[i] = SampleHit{object, part};
         if (object < 0) {
           // the background light (spec 4.1.4), or the sky's
-          out.image.radiance_W_cm2_sr[i] = sky_varies ? sky_at(c, r, d) : background;
+          radiance[i] = sky_varies ? sky_at(c, r + lo, d) : background;
           return;
         }
         const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];
         if (o.plain()) {  // no surface point needed
-          out.image.radiance_W_cm2_sr[i] = o.plain_radiance(part);
+          radiance[i] = o.plain_radiance(part);
           return;
         }
         const Vec3 point_body = o.seen.body_to_frame.transpose() * (range_m * d - o.seen.position_m);
-        out.image.radiance_W_cm2_sr[i] = o.radiance_at(part, point_body, o.direction_to_body(normal_frame), facet);
+        radiance[i] = o.radiance_at(part, point_body, o.direction_to_body(normal_frame), facet);
       },
       threads, extended);
-  out.rays = count;
+  std::size_t rays = count;
 
   // Silhouette edges: a sample whose hit differs from a 4-neighbour's takes
   // the mean of s x s sub-samples over its footprint. A straight edge that
@@ -240,16 +248,16 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
   const std::int64_t s = world.fidelity().edge_supersampling;
   if (s > 1) {
     const auto differs = [&](std::size_t a, std::size_t b) {
-      return out.hits[a].object_id != out.hits[b].object_id || out.hits[a].part != out.hits[b].part;
+      return hits[a].object_id != hits[b].object_id || hits[a].part != hits[b].part;
     };
     // The edge samples in grid order, found row block by row block.
     constexpr std::int64_t rows_per_thread = 64;
-    std::vector<std::vector<std::size_t>> found(parallel_range_count(h, threads, rows_per_thread));
-    parallel_indexed_ranges(h, threads, [&](unsigned t, std::int64_t r0, std::int64_t r1) {
+    std::vector<std::vector<std::size_t>> found(parallel_range_count(end - begin, threads, rows_per_thread));
+    parallel_indexed_ranges(end - begin, threads, [&](unsigned t, std::int64_t r0, std::int64_t r1) {
       std::vector<std::size_t>& mine = found[t];
-      for (std::int64_t r = r0; r < r1; ++r)
+      for (std::int64_t r = begin + r0; r < begin + r1; ++r)
         for (std::int64_t c = 0; c < w; ++c) {
-          const auto i = static_cast<std::size_t>(r * w + c);
+          const auto i = static_cast<std::size_t>((r - lo) * w + c);
           if ((c > 0 && differs(i, i - 1)) || (c + 1 < w && differs(i, i + 1)) ||
               (r > 0 && differs(i, i - static_cast<std::size_t>(w))) ||
               (r + 1 < h && differs(i, i + static_cast<std::size_t>(w))))
@@ -267,7 +275,7 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
       directions.clear();
       for (std::size_t k = first; k < last; ++k) {
         const auto c = static_cast<double>(static_cast<std::int64_t>(edges[k]) % w);
-        const auto r = static_cast<double>(static_cast<std::int64_t>(edges[k]) / w);
+        const auto r = static_cast<double>(static_cast<std::int64_t>(edges[k]) / w + lo);
         for (std::int64_t j = 0; j < s; ++j)
           for (std::int64_t i = 0; i < s; ++i)
             directions.push_back(world.sample_direction(c + (static_cast<double>(i) + 0.5) / static_cast<double>(s) - 0.5,
@@ -276,8 +284,8 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
       world.caster.cast(directions, sub_hits, threads, extended);
       parallel_ranges(
           static_cast<std::int64_t>(last - first), threads,
-          [&](std::int64_t begin, std::int64_t end) {
-            for (std::int64_t k = begin; k < end; ++k) {
+          [&](std::int64_t k0, std::int64_t k1) {
+            for (std::int64_t k = k0; k < k1; ++k) {
               double sum = 0;
               for (std::size_t m = 0; m < sub; ++m) {
                 const geometry::Hit& hit = sub_hits[static_cast<std::size_t>(k) * sub + m];
@@ -288,16 +296,64 @@ SceneImage generate_scene(const World& world, unsigned threads, SceneImage stora
                 const WorldObject& o = *world.objects[static_cast<std::size_t>(hit.object_id)];
                 sum += o.radiance_at(hit.part, hit.point_body_m, o.direction_to_body(hit.normal_frame), hit.facet);
               }
-              out.image.radiance_W_cm2_sr[edges[first + static_cast<std::size_t>(k)]] = sum / static_cast<double>(sub);
+              radiance[edges[first + static_cast<std::size_t>(k)]] = sum / static_cast<double>(sub);
             }
           },
           64);
     }
-    out.rays += edges.size() * sub;
+    rays += edges.size() * sub;
   }
-  add_small_objects(world, out.image.radiance_W_cm2_sr, out.hits, threads);
+  add_small_objects(world, radiance, hits, lo, hi, begin, end, threads);
+  return rays;
+}
+
+}  // namespace
+
+SceneImage generate_scene(const World& world, unsigned threads, SceneImage storage) {
+  using clock = std::chrono::steady_clock;
+  const auto seconds = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+  const auto t0 = clock::now();
+  SceneImage out;
+  out.image.grid = world.grid();
+  out.image.point_sources = field_point_sources(world);
+  const auto t1 = clock::now();
+  // Ray-cast the sample grid (spec 4.1.3), every row at once.
+  out.hits = std::move(storage.hits);
+  out.image.radiance_W_cm2_sr = std::move(storage.image.radiance_W_cm2_sr);
+  const std::int64_t h = world.grid().height();
+  out.rays = shade_rows(world, 0, h, 0, h, out.image.radiance_W_cm2_sr, out.hits, threads);
   out.point_sources_s = seconds(t0, t1);
   out.ray_casting_s = seconds(t1, clock::now());
+  return out;
+}
+
+SceneImage generate_point_sources(const World& world) {
+  SceneImage out;
+  out.image.grid = world.grid();
+  out.image.point_sources = field_point_sources(world);
+  return out;
+}
+
+SceneRows generate_scene_rows(const World& world, std::int64_t begin, std::int64_t end, unsigned threads,
+                              SceneRows storage) {
+  const geometry::SampleGrid& grid = world.grid();
+  const std::int64_t w = grid.width(), h = grid.height();
+  if (begin < 0 || end > h || begin >= end)
+    throw Error(Status::out_of_range, "scene rows: [" + std::to_string(begin) + ", " + std::to_string(end) +
+                                          ") not within the grid's " + std::to_string(h));
+  SceneRows out = std::move(storage);
+  out.first_row = begin;
+  const std::int64_t lo = std::max<std::int64_t>(0, begin - 1), hi = std::min(h, end + 1);
+  out.rays = shade_rows(world, lo, hi, begin, end, out.radiance_W_cm2_sr, out.hits, threads);
+  // Only rows [begin, end) are kept.
+  const auto skip = static_cast<std::ptrdiff_t>((begin - lo) * w), keep = static_cast<std::ptrdiff_t>((end - begin) * w);
+  if (skip > 0) {
+    std::move(out.radiance_W_cm2_sr.begin() + skip, out.radiance_W_cm2_sr.begin() + skip + keep,
+              out.radiance_W_cm2_sr.begin());
+    std::move(out.hits.begin() + skip, out.hits.begin() + skip + keep, out.hits.begin());
+  }
+  out.radiance_W_cm2_sr.resize(static_cast<std::size_t>(keep));
+  out.hits.resize(static_cast<std::size_t>(keep));
   return out;
 }
 

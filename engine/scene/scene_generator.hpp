@@ -33,4 +33,21 @@ struct SceneImage {
 // memory (DESIGN.md 4).
 SceneImage generate_scene(const World& world, unsigned threads, SceneImage storage = {});
 
+// A frame made in strips (sensor/scene_convolution.hpp): its point sources
+// alone, without sample buffers; then its sample rows strip by strip.
+SceneImage generate_point_sources(const World& world);
+
+// Rows [first_row, first_row + radiance.size() / grid width) of the full grid.
+struct SceneRows {
+  std::int64_t first_row = 0;
+  std::vector<double> radiance_W_cm2_sr;
+  std::vector<SampleHit> hits;
+  std::size_t rays = 0;
+};
+// Rows [begin, end) of the full grid, each sample equal to generate_scene's
+// (a strip reads its neighbour rows for silhouette edges and small objects).
+// Throws Error(out_of_range) for rows outside the grid.
+SceneRows generate_scene_rows(const World& world, std::int64_t begin, std::int64_t end, unsigned threads,
+                              SceneRows storage = {});
+
 }  // namespace eoir::scene

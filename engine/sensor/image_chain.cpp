@@ -29,7 +29,8 @@ std::vector<PointSourceSignal> point_source_signals(const SensorModel& model, co
 }
 
 SensorImage render_sensor_image(const SensorModel& model, const radiometry::RadianceImage& scene,
-                                std::mt19937_64& rng, unsigned threads, SensorImage storage) {
+                                std::mt19937_64& rng, unsigned threads, SensorImage storage,
+                                const SceneRowSource* scene_rows) {
   using clock = std::chrono::steady_clock;
   const auto seconds = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
   const auto t0 = clock::now();
@@ -40,7 +41,9 @@ SensorImage render_sensor_image(const SensorModel& model, const radiometry::Radi
   SensorImage out;
   out.electrons = std::move(storage.electrons);
   // Extended sources: r_L = R_peak,L * (L conv PSF) averaged over the pixel (eq. 49).
-  std::vector<double> mean = pixel_radiance(model, scene, threads, std::move(storage.mean_electrons));
+  std::vector<double> mean =
+      scene_rows ? pixel_radiance_in_strips(model, g, *scene_rows, threads, std::move(storage.mean_electrons))
+                 : pixel_radiance(model, scene, threads, std::move(storage.mean_electrons));
   const auto t1 = clock::now();
   for (double& v : mean) v *= m.peak_radiance_responsivity;
   // Point sources: r_E = R_peak,E E^ps EOD / ENSQ (eqs. 50-51), EOD from the

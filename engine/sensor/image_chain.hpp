@@ -30,8 +30,11 @@ struct SensorImage {
 // threads (0 = all cores) share the convolution, whose result does not
 // depend on them beyond rounding. `storage`: a previous image whose buffers
 // the new one reuses (a frame's fresh pages cost more than its FFTs here).
+// `scene_rows`: a frame made in strips (pixel_radiance_in_strips), whose
+// scene holds its point sources but no samples; its rows come from there.
 SensorImage render_sensor_image(const SensorModel& model, const radiometry::RadianceImage& scene,
-                                std::mt19937_64& rng, unsigned threads = 0, SensorImage storage = {});
+                                std::mt19937_64& rng, unsigned threads = 0, SensorImage storage = {},
+                                const SceneRowSource* scene_rows = nullptr);
 
 // The scene's point sources in pixel coordinates, streaks in pixels, with
 // R_peak,E E^ps / ENSQ electrons each (eq. 50).

@@ -32,6 +32,7 @@
 #include <cstddef>
 #include <complex>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <vector>
 
@@ -43,7 +44,7 @@ namespace eoir::sensor {
 struct SensorModel;
 
 struct SceneConvolutionCache {
-  std::once_flag built;
+  std::once_flag shape_built, built, strips_built;
   std::int64_t grid_cols = 0, grid_rows = 0;  // the sample grid it was made for
   int fft_cols = 0, fft_rows = 0;  // transform size: k times an FFTW-friendly size
   int pad = 0;                      // samples of padding on each side of the grid
@@ -60,6 +61,11 @@ struct SceneConvolutionCache {
   fftw::ComplexBuffer buffer;
   // The field's pixel rows, each's half spectrum (cols / 2 + 1) after step 2.
   fftw::ComplexBuffer folded;
+  // Strips (pixel_radiance_in_strips): the OTF against |f| (cycles/cm) at
+  // nodes (i - 1) otf_node_step, a cubic between them, and the passband.
+  std::vector<double> otf_radial;
+  double otf_node_step = 0, otf_cutoff_cycles_per_cm = 0;
+  int strip_passband_cols = 0;
 };
 
 // Eq. 49 without the responsivity: pixel-mean radiance of the convolved scene (W cm^-2 sr^-1, pixels_x x
@@ -70,5 +76,25 @@ struct SceneConvolutionCache {
 // `storage`: a buffer the result reuses.
 std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::RadianceImage& scene,
                                    unsigned threads, std::vector<double> storage = {});
+
+// The memory (bytes) pixel_radiance and the whole frame's scene hold: the
+// sample buffers and the transform's.
+std::int64_t whole_frame_bytes(const SensorModel& model);
+
+// Rows [first, last) of the sample grid (radiance, row-major), valid until
+// the next call; called with increasing rows.
+using SceneRowSource = std::function<const double*(std::int64_t first, std::int64_t last)>;
+
+// The same pixel means with the scene in strips of rows, for frames too
+// large for memory (fidelity scene_memory_max_mib): each strip's rows are
+// transformed as step 1 does and written, by groups of passband columns, to
+// a temporary file (core/scratch_file.hpp); each group is read back for
+// step 2 and its folded pixel rows written back; step 3 reads strips of
+// pixel rows. Memory is a few strips, the OTF's cubic in |f| (kStripOtfNodes
+// nodes to the cutoff, within 1e-12 of eq. 39) and the result; equal to
+// pixel_radiance to 1e-9 relative (rounding and the cubic).
+std::vector<double> pixel_radiance_in_strips(const SensorModel& model, const geometry::SampleGrid& grid,
+                                             const SceneRowSource& scene_rows, unsigned threads,
+                                             std::vector<double> storage = {});
 
 }  // namespace eoir::sensor

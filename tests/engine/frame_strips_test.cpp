@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "../bench/bench_scene.hpp"
@@ -30,6 +31,16 @@ double max_relative_difference(const std::vector<double>& a, const std::vector<d
   return worst;
 }
 
+// The GEO full-disc scene of the benchmarks, noise off, on two threads.
+std::unique_ptr<eoir::Engine> geo_scene(std::int64_t pixels, const char* scene_mode = "coarse") {
+  eoir::bench::SensorSetup s;
+  s.pixels = pixels;
+  s.fov_deg = 18.0;
+  s.noise = false;
+  s.scene_mode = scene_mode;
+  return eoir::bench::make_geo_scene(s, 1, 2);
+}
+
 struct Optics {
   const char* name;
   double jitter_mrad, defocus_mm, wavefront_waves;
@@ -38,12 +49,7 @@ struct Optics {
 class FrameStrips : public ::testing::TestWithParam<Optics> {};
 
 TEST_P(FrameStrips, EqualTheWholeFrameTo1e9) {
-  eoir::bench::SensorSetup s;
-  s.pixels = 96;
-  s.fov_deg = 18.0;
-  s.noise = false;
-  s.scene_mode = "smooth";
-  auto e = eoir::bench::make_geo_scene(s, 1, 2);
+  auto e = geo_scene(96, "smooth");
   const Optics o = GetParam();
   e->set_property("Sensor", "jitter_mrad", Value(o.jitter_mrad));
   e->set_property("Sensor", "defocus_mm", Value(o.defocus_mm));
@@ -79,11 +85,7 @@ INSTANTIATE_TEST_SUITE_P(Optics, FrameStrips,
 // (silhouette edges, small objects and the sky's coarse grid read rows
 // beyond a strip).
 TEST(SceneRows, StripsOfAnyHeightEqualTheWholeGrid) {
-  eoir::bench::SensorSetup s;
-  s.pixels = 64;
-  s.fov_deg = 18.0;
-  s.noise = false;
-  auto e = eoir::bench::make_geo_scene(s, 1, 2);
+  auto e = geo_scene(64);
   const eoir::Frame& f = e->render("Sensor");
   const auto& radiance = f.scene.image.radiance_W_cm2_sr;
   const std::int64_t w = f.grid().width(), h = f.grid().height();
@@ -107,11 +109,7 @@ TEST(SceneRows, StripsOfAnyHeightEqualTheWholeGrid) {
 
 // A frame made in strips gives the whole frame's scene radiance and picks.
 TEST(FrameStrips, SceneRadianceAndPicksAreMadeAgain) {
-  eoir::bench::SensorSetup s;
-  s.pixels = 48;
-  s.fov_deg = 18.0;
-  s.noise = false;
-  auto e = eoir::bench::make_geo_scene(s, 1, 2);
+  auto e = geo_scene(48);
   const eoir::Frame& whole = e->render("Sensor");
   const std::int64_t fw = whole.grid().field_width(), fh = whole.grid().field_height();
   std::vector<double> a(static_cast<std::size_t>(fw * fh)), b(a.size());

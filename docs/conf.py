@@ -15,7 +15,7 @@ source_suffix = {".md": "markdown"}
 root_doc = "index"
 # docs/pending holds notes other branches drop for merging into these pages;
 # tutorials/out holds what the tutorials write when run by hand.
-exclude_patterns = ["_build", "pending", "tutorials/out", "README.md"]
+exclude_patterns = ["_build", "pending", "tutorials/out", "tools"]
 nitpicky = True
 html_theme = "alabaster"
 html_theme_options = {"description": "headless EO/IR scene generator and sensor model", "fixed_sidebar": True}

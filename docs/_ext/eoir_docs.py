@@ -8,6 +8,8 @@
     <!-- eoir:statuses -->          the EOIR_OK / EOIR_ERR_* block of eoir.h
     <!-- eoir:exit-codes -->        the "exit status" line of `eoir --help`
     <!-- eoir:schema FILE -->       schemas/FILE, property by property
+    <!-- eoir:validation-scenarios --> scenarios/validation/*.json, name and description
+    <!-- eoir:validation-figures -->   scenarios/validation/results/*.png
 - Turns every citation of the spec ("spec 4.1.4", "eq. 7", "eqs. 49-55",
   "ERRATA 4.1.5.3", the section column of a table headed "spec") into a link
   to the page that summarises that section (spec.md); a citation of a
@@ -95,7 +97,7 @@ def providers_tables():
 def statuses_table():
     header = open(os.path.join(ROOT, "capi", "include", "eoir", "eoir.h")).read()
     out = ["| status | value | meaning |", "|---|---|---|"]
-    for name, value, comment in re.findall(r"#define (EOIR_(?:OK|ERR_\w+))\s+(-?\d+)\s*(?:/\*(.*?)\*/)?", header):
+    for name, value, comment in re.findall(r"#define (EOIR_(?:OK|ERR_\w+))[ \t]+(-?\d+)[ \t]*(?:/\*(.*?)\*/)?", header):
         out.append(f"| `{name}` | {value} | {cell((comment or '').strip() or 'success')} |")
     return "\n".join(out) + "\n"
 
@@ -177,11 +179,33 @@ def schema_page(file_name):
     return "\n".join(out) + "\n"
 
 
+def validation_scenarios():
+    folder = os.path.join(ROOT, "scenarios", "validation")
+    out = ["| scenario | name | what it sets up |", "|---|---|---|"]
+    for name in sorted(f for f in os.listdir(folder) if f.endswith(".json")):
+        doc = json.load(open(os.path.join(folder, name)))
+        out.append(f"| `{name}` | {cell(doc.get('name', ''))} | {cell(doc.get('description', ''))} |")
+    return "\n".join(out) + "\n"
+
+
+def validation_figures(docname):
+    folder = os.path.join(ROOT, "scenarios", "validation", "results")
+    rel = os.path.relpath(folder, os.path.join(ROOT, "docs", os.path.dirname(docname)))
+    out = []
+    for name in sorted(f for f in os.listdir(folder) if f.endswith(".png")):
+        out += [f"`scenarios/validation/results/{name}`:", "", f"![{name}]({rel}/{name})", ""]
+    return "\n".join(out) + "\n"
+
+
 MARKER = re.compile(r"<!-- eoir:([a-z-]+)(?: ([\w.]+))? -->")
 
 
-def expand(match):
+def expand(match, docname=""):
     what, arg = match.group(1), match.group(2)
+    if what == "validation-scenarios":
+        return validation_scenarios()
+    if what == "validation-figures":
+        return validation_figures(docname)
     if what == "properties":
         return properties_table(arg)
     if what == "providers":
@@ -264,7 +288,7 @@ def link_citations(source):
 
 
 def source_read(app, docname, source):
-    text = MARKER.sub(expand, source[0])
+    text = MARKER.sub(lambda m: expand(m, docname), source[0])
     if docname != "spec":
         text = link_citations(text)
     source[0] = text

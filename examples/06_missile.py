@@ -30,7 +30,7 @@ with eoir.Scenario.load(scenario, seed=1) as sc:
         sc.engine.render("Stare")
         missile = [t for t in sc.engine.truth("Stare") if t["object"] == "Missile1"]
         png = folder / f"missile_{i:02d}.png"
-        out.write_png(png, out.stretch(sc.engine.image("Stare", "sensor_mean")))
+        out.write_png(png, out.stretch(sc.engine.image("Stare", "sensor_mean"), 50.0, 100.0, 1000.0))
         if missile:
             m = missile[0]
             rows.append({"time": time, **m})

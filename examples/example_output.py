@@ -11,7 +11,6 @@ EOIR_LIBRARY, as CTest does).
 """
 
 import csv
-import os
 import struct
 import sys
 import zlib

@@ -692,7 +692,10 @@ class Engine(_Closing):
     def provider_series(self, group: str, element: str, sensor: str, times: Iterable[Time], target: Optional[str] = None) -> np.ndarray:
         """A scalar element at each of `times` (each an ISO-8601 UTC string,
         a datetime or (jd1, jd2[, scale]), as set_time takes it) in one
-        engine call (eoir_provider_series); the engine time is left at the last."""
+        engine call (eoir_provider_series); the engine time is left at the last.
+        Within the call sensors keep the attitude they have, turning at its
+        angular velocity: a :meth:`track` is not re-pointed at each time (loop
+        over set_time and :meth:`provider` for that)."""
         times = list(times)
         ts = (_lib.eoir_time * len(times))()
         for i, t in enumerate(times):
@@ -717,7 +720,11 @@ class Engine(_Closing):
         the engine time is set to it first and objects move from their last
         pushed states (constant velocity). 0 while the target is outside the
         field or hidden. Raises UnknownNameError for an unknown sensor or
-        target and NotAllowedError for a target equal to the sensor's parent."""
+        target and NotAllowedError for a target equal to the sensor's parent.
+        Tracking sensors (:meth:`track`) are pointed at the new time first."""
+        if time is not None and self._tracks():
+            self.set_time(time)  # the same engine time, then the tracks
+            time = None
         t = None if time is None else byref(_to_c_time(time))
         v = c_double()
         check(lib.eoir_snr_constraint(self.handle, encode(sensor, "sensor"), encode(target, "target"), t,

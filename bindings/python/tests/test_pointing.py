@@ -97,6 +97,19 @@ def test_track_keeps_the_target_at_the_centre_as_time_steps(engine):
     assert centre_offset(row) == pytest.approx(19.75, abs=0.5)
 
 
+def test_snr_at_a_time_follows_a_track(engine):
+    # The SNR is 0 outside the field: pointed once, the target has left it
+    # 60 s later (the sensor turned on at the first rate, 10 mrad/s: 0.6 rad
+    # - atan(0.6) = 3.4 deg off in a 0.5 deg field); tracked, it is in the
+    # middle.
+    build(engine, target_velocity=(0.0, 0.0, 1000.0))
+    engine.point_at("Cam", "Tgt")
+    assert engine.snr("Cam", "Tgt", time="2010-08-25T18:01:00Z") == 0.0
+    engine.set_time(T0)
+    engine.track("Cam", "Tgt")
+    assert engine.snr("Cam", "Tgt", time="2010-08-25T18:01:00Z") > 0.0
+
+
 def test_track_follows_states_the_host_pushes(engine):
     # The host pushes the target's state after set_time (a state that the
     # velocity would not give): the render points at the pushed state.

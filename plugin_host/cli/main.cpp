@@ -41,6 +41,9 @@
 #ifndef EOIR_CLI_VERSION
 #define EOIR_CLI_VERSION "0.0.0"
 #endif
+#ifndef EOIR_SONAME
+#define EOIR_SONAME "libeoir.so"
+#endif
 #ifndef EOIR_SCENARIO_DIR_DEFAULT
 #define EOIR_SCENARIO_DIR_DEFAULT "scenarios"
 #endif
@@ -74,7 +77,8 @@ const char* const kUsage =
     "  load-state FILE        restore a .scd file; print its time, objects and sensor metrics\n"
     "  groups                 list the data-provider groups and their elements\n"
     "  help [COMMAND]         this help, or a command's\n"
-    "  --version              program and engine versions\n"
+    "  --version              the versions: program, C ABI, soname, data, Python package,\n"
+    "                         and the engine library loaded\n"
     "\n"
     "`eoir COMMAND --help` describes a command. Options take their value as\n"
     "`--name value` or `--name=value`.\n"
@@ -1026,8 +1030,15 @@ int cmd_load_state(const std::vector<std::string>& args, const Global& g) {
   return 0;
 }
 
+// Every version of the build, all from project(eoir VERSION ...) in
+// CMakeLists.txt; the engine's line is the library actually loaded.
 int cmd_version(const Global& g) {
-  std::cout << "eoir " << EOIR_CLI_VERSION << " (C ABI " << EOIR_VERSION_MAJOR << "." << EOIR_VERSION_MINOR << ")\n";
+  std::cout << "eoir " << EOIR_CLI_VERSION << "\n"
+            << "C ABI " << EOIR_VERSION_MAJOR << "." << EOIR_VERSION_MINOR << " (this program's eoir.h "
+            << EOIR_VERSION_STRING << ")\n"
+            << "soname " << EOIR_SONAME << "\n"
+            << "data " << EOIR_CLI_VERSION << " (built with the engine; no version of its own)\n"
+            << "python package eoir " << EOIR_CLI_VERSION << " (bindings/python)\n";
   try {
     const EngineChoice choice = engine_choice(Options{}, g);
     Engine engine(config_of(choice));

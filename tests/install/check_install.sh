@@ -16,7 +16,7 @@ fail() { echo "check_install: FAIL: $*" >&2; exit 1; }
 cmake --install "$build" --prefix "$prefix" >"$work/install.log" 2>&1 || { cat "$work/install.log"; fail "cmake --install"; }
 libdir=$(sed -n 's/^libdir=\${prefix}\///p' "$build/eoir.pc")
 [ -n "$libdir" ] || fail "no libdir in $build/eoir.pc"
-for f in bin/eoir "$libdir/libeoir.so.1" "$libdir/libeoir.so" include/eoir/eoir.h \
+for f in bin/eoir "$libdir/libeoir.so.1" "$libdir/libeoir.so" include/eoir/eoir.h include/eoir/eoir_version.h \
          "$libdir/cmake/eoir/eoirConfig.cmake" "$libdir/cmake/eoir/eoirConfigVersion.cmake" \
          "$libdir/cmake/eoir/eoirTargets.cmake" "$libdir/pkgconfig/eoir.pc" \
          share/eoir/schemas/scenario.schema.json share/eoir/scenarios/demo/default.json \

@@ -10,16 +10,18 @@ import math
 import numbers
 import os
 from ctypes import byref, c_char_p, c_double, c_int32, c_int64, c_size_t
-from typing import Any, Callable, Dict, Iterable, List, Optional, Tuple
+from typing import Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple, TypeVar, Union
 
 import numpy as np
 
 from . import _lib
 from . import errors
+from .constants import Frame, ImageKind, Kind, TimeScale
 from ._lib import check, decode, encode, encode_path, lib
 
 __all__ = [
     "Engine",
+    "TRUTH_FIELDS",
     "KINDS",
     "FRAMES",
     "TIME_SCALES",
@@ -35,32 +37,15 @@ __all__ = [
     "time_to_iso",
 ]
 
-KINDS = {
-    "central_body": _lib.EOIR_KIND_CENTRAL_BODY,
-    "star_field": _lib.EOIR_KIND_STAR_FIELD,
-    "satellite": _lib.EOIR_KIND_SATELLITE,
-    "aircraft": _lib.EOIR_KIND_AIRCRAFT,
-    "ground_vehicle": _lib.EOIR_KIND_GROUND_VEHICLE,
-    "missile": _lib.EOIR_KIND_MISSILE,
-    "sensor": _lib.EOIR_KIND_SENSOR,
-    "site": _lib.EOIR_KIND_SITE,
-}
+# Names accepted wherever a kind, frame, time scale or image kind is taken
+# (the lower-case names of eoir.constants' enums).
+KINDS: Dict[str, int] = {m.name.lower(): int(m) for m in Kind}
 _KIND_NAMES = {v: k for k, v in KINDS.items()}
 
-FRAMES = {
-    "j2000": _lib.EOIR_FRAME_J2000,
-    "earth_fixed": _lib.EOIR_FRAME_EARTH_FIXED,
-    "geodetic": _lib.EOIR_FRAME_GEODETIC,
-    "geodetic_ned": _lib.EOIR_FRAME_GEODETIC_NED,
-}
+FRAMES: Dict[str, int] = {m.name.lower(): int(m) for m in Frame}
 _FRAME_NAMES = {v: k for k, v in FRAMES.items()}
 
-TIME_SCALES = {
-    "utc": _lib.EOIR_TIME_UTC,
-    "tai": _lib.EOIR_TIME_TAI,
-    "tt": _lib.EOIR_TIME_TT,
-    "tdb": _lib.EOIR_TIME_TDB,
-}
+TIME_SCALES: Dict[str, int] = {m.name.lower(): int(m) for m in TimeScale}
 _SCALE_NAMES = {v: k for k, v in TIME_SCALES.items()}
 
 TYPES = {
@@ -73,25 +58,32 @@ TYPES = {
 }
 _TYPE_NAMES = {v: k for k, v in TYPES.items()}
 
-IMAGE_KINDS = {
-    "scene_radiance": _lib.EOIR_IMAGE_SCENE_RADIANCE,
-    "scene_display": _lib.EOIR_IMAGE_SCENE_DISPLAY,
-    "sensor_electrons": _lib.EOIR_IMAGE_SENSOR_ELECTRONS,
-    "sensor_mean": _lib.EOIR_IMAGE_SENSOR_MEAN,
-    "sensor_display": _lib.EOIR_IMAGE_SENSOR_DISPLAY,
-    "sensor_adu": _lib.EOIR_IMAGE_SENSOR_ADU,
-}
+IMAGE_KINDS: Dict[str, int] = {m.name.lower(): int(m) for m in ImageKind}
 _IMAGE_KIND_NAMES = {v: k for k, v in IMAGE_KINDS.items()}
 _DISPLAY_KINDS = (_lib.EOIR_IMAGE_SCENE_DISPLAY, _lib.EOIR_IMAGE_SENSOR_DISPLAY)
 _PICK_SPACES = {"sample": 0, "pixel": 1}
 # Eq. 9's terms of a pick (C ABI 1.6, eoir_pick_term), in the order of the enum.
 PICK_TERMS = ("surface", "downwelling", "transmittance", "path_thermal", "path_scatter", "at_sensor")
 
+# The keys of every row of Engine.truth(): every field of
+# schemas/truth.schema.json (Scenario.truth(), `eoir run`'s _truth.json), plus
+# start and end in 0-based pixels.
+TRUTH_FIELDS = (
+    "object", "kind", "pixel_x", "pixel_y", "x_fits", "y_fits", "start", "end", "start_fits", "end_fits",
+    "time", "start_time", "end_time", "ra_deg", "dec_deg", "start_ra_deg", "start_dec_deg", "end_ra_deg",
+    "end_dec_deg", "apparent_ra_deg", "apparent_dec_deg", "geometric_ra_deg", "geometric_dec_deg", "range_m",
+    "point_source", "visible", "effective_irradiance", "effective_radiance", "snr", "v_mag", "b_v_mag",
+    "azimuth_deg", "elevation_deg", "air_mass",
+)
+
+Time = Union[str, _dt.datetime, Tuple[float, float], Tuple[float, float, str]]
+"""A time the engine takes: ISO-8601 UTC, a datetime, (jd1, jd2) UTC or (jd1, jd2, scale)."""
+
 _INITIAL_STRING_CAPACITY = 256
 _INITIAL_ARRAY_CAPACITY = 64
 
 
-def _lookup(table: Dict[str, int], value, what: str) -> int:
+def _lookup(table: Dict[str, int], value: Union[str, int], what: str) -> int:
     if isinstance(value, str):
         try:
             return table[value.lower()]
@@ -169,7 +161,7 @@ def provider_elements(group: str) -> List[Dict[str, str]]:
             for n, t, u, xu in _elements(group)]
 
 
-def _element(group: str, element: str):
+def _element(group: str, element: str) -> Optional[Tuple[str, int, str, str]]:
     for info in _elements(group):
         if info[0] == element:
             return info
@@ -195,12 +187,12 @@ def _iso_of(t: "_lib.eoir_time") -> str:
         return decode(buf.value)
 
 
-def time_to_iso(time) -> str:
+def time_to_iso(time: Time) -> str:
     """A time (ISO string, (jd1, jd2, scale) or datetime) as ISO-8601 UTC."""
     return _iso_of(_to_c_time(time))
 
 
-def _to_c_time(value) -> "_lib.eoir_time":
+def _to_c_time(value: Time) -> "_lib.eoir_time":
     t = _lib.eoir_time()
     if isinstance(value, _lib.eoir_time):
         return value
@@ -257,17 +249,20 @@ def _vector(value, n: int, what: str) -> List[float]:
 
 
 # -------------------------------------------------------------------- engine
+_C = TypeVar("_C", bound="_Closing")
+
+
 class _Closing:
     """with-statement and garbage-collection support for a class whose close()
     releases a C handle and is idempotent."""
 
-    def __enter__(self):
+    def __enter__(self: _C) -> _C:
         return self
 
     def __exit__(self, *exc) -> None:
         self.close()
 
-    def __del__(self):
+    def __del__(self) -> None:
         try:
             self.close()
         except Exception:
@@ -283,7 +278,7 @@ class Engine(_Closing):
     ...     engine.provider("EOIR Sensor Optics", "Ensquared Energy", "Sensor")
     """
 
-    def __init__(self, threads: int = 0, seed: int = 1):
+    def __init__(self, threads: int = 0, seed: int = 1) -> None:
         desc = _lib.eoir_engine_desc()
         desc.struct_size = ctypes.sizeof(desc)
         desc.threads = _lib.threads_argument(threads)
@@ -319,7 +314,7 @@ class Engine(_Closing):
         return self._handle is None
 
     @property
-    def handle(self):
+    def handle(self) -> ctypes.c_void_p:
         """The raw eoir_engine handle (ctypes.c_void_p)."""
         if self._handle is None:
             raise ValueError("the engine is closed")
@@ -331,13 +326,15 @@ class Engine(_Closing):
         return f"<eoir.Engine {len(self.objects())} objects at {self.time_iso()}>"
 
     # -------------------------------------------------------------- time
-    def set_time(self, time) -> None:
+    def set_time(self, time: Time) -> None:
         """Set the engine time: an ISO-8601 UTC string, a datetime, or
-        (jd1, jd2, scale) with scale "utc", "tai", "tt" or "tdb"."""
+        (jd1, jd2, scale) with scale "utc", "tai", "tt" or "tdb". Sensors
+        under :meth:`track` are pointed again at their targets."""
         t = _to_c_time(time)
         check(lib.eoir_engine_set_time(self.handle, byref(t)))
+        self._retrack(strict=False)
 
-    def get_time(self, scale="tt") -> Tuple[float, float, str]:
+    def get_time(self, scale: Union[str, int] = "tt") -> Tuple[float, float, str]:
         """The engine time as (jd1, jd2, scale)."""
         t = _lib.eoir_time()
         code = _lookup(TIME_SCALES, scale, "time scale")
@@ -351,10 +348,10 @@ class Engine(_Closing):
         return _iso_of(t)
 
     # ----------------------------------------------------------- objects
-    def add_object(self, kind, name: str) -> None:
+    def add_object(self, kind: Union[str, int], name: str) -> None:
         """Add an object; kind is "central_body", "star_field", "satellite",
         "aircraft", "ground_vehicle", "missile" or "site" (or its
-        eoir_object_kind). A site stays on the Earth at its properties
+        eoir_object_kind, e.g. eoir.Kind.SATELLITE). A site stays on the Earth at its properties
         latitude_deg, longitude_deg and height_m (WGS84), carries sensors,
         images nothing and takes no state."""
         code = _lookup(KINDS, kind, "object kind")
@@ -365,8 +362,12 @@ class Engine(_Closing):
         check(lib.eoir_sensor_add(self.handle, encode(name, "name"), encode(parent, "parent")))
 
     def remove(self, name: str) -> None:
-        """Remove an object (its sensors go with it)."""
+        """Remove an object (its sensors go with it, and any track of it)."""
         check(lib.eoir_object_remove(self.handle, encode(name, "name")))
+        tracks = self._tracks()
+        for sensor, target in list(tracks.items()):
+            if name in (sensor, target) or sensor not in self:
+                del tracks[sensor]
 
     def object_count(self) -> int:
         n = c_size_t()
@@ -418,9 +419,9 @@ class Engine(_Closing):
         check(lib.eoir_engine_set_limits(self.handle, byref(st)))
 
     # ------------------------------------------------------------- state
-    def set_state(self, name: str, position, velocity=(0.0, 0.0, 0.0),
-                  attitude=(1.0, 0.0, 0.0, 0.0), frame="j2000", time=None,
-                  angular_velocity=(0.0, 0.0, 0.0)) -> None:
+    def set_state(self, name: str, position: Sequence[float], velocity: Sequence[float] = (0.0, 0.0, 0.0),
+                  attitude: Sequence[float] = (1.0, 0.0, 0.0, 0.0), frame: Union[str, int] = "j2000",
+                  time: Optional[Time] = None, angular_velocity: Sequence[float] = (0.0, 0.0, 0.0)) -> None:
         """Push a state: position in metres (or lat deg, lon deg, height m for
         "geodetic" and "geodetic_ned"), velocity in m/s, attitude quaternion
         (w, x, y, z) body to frame, angular velocity in rad/s about the
@@ -428,7 +429,9 @@ class Engine(_Closing):
         means the engine time. "geodetic_ned": velocity, attitude and angular
         velocity in the local north-east-down axes at that place (attitude
         from heading_pitch_roll_quaternion); height 0 m is the WGS84
-        ellipsoid's surface (no terrain)."""
+        ellipsoid's surface (no terrain). A state set on a sensor under
+        :meth:`track` ends the track; sensors tracking from or toward the
+        object are pointed again."""
         st = _lib.eoir_state()
         st.struct_size = ctypes.sizeof(st)
         st.frame = _lookup(FRAMES, frame, "frame")
@@ -438,8 +441,10 @@ class Engine(_Closing):
         st.angular_velocity[:] = _vector(angular_velocity, 3, "angular_velocity")
         t = None if time is None else byref(_to_c_time(time))
         check(lib.eoir_object_set_state(self.handle, encode(name, "name"), t, byref(st)))
+        self._tracks().pop(name, None)
+        self._retrack(strict=False)
 
-    def get_state(self, name: str, frame="j2000") -> Dict[str, Any]:
+    def get_state(self, name: str, frame: Union[str, int] = "j2000") -> Dict[str, Any]:
         """The state at the engine time as a dict with numpy arrays position,
         velocity, attitude, angular_velocity (rad/s) and the frame name."""
         st = _lib.eoir_state()
@@ -474,7 +479,10 @@ class Engine(_Closing):
         Raises OutOfRangeError naming azimuth_deg or elevation_deg (NaN
         included), NotAllowedError for the star field, the sensor's parent or
         a target at the sensor's place, NoStateError if the parent has no
-        state, ValueError if neither or both ways are given."""
+        state, ValueError if neither or both ways are given. Ends a
+        :meth:`track` of sensor.
+        """
+        self._tracks().pop(sensor, None)
         if target is not None:
             if azimuth_deg is not None or elevation_deg is not None:
                 raise ValueError("point_at: give target or azimuth_deg and elevation_deg, not both")
@@ -484,6 +492,42 @@ class Engine(_Closing):
             raise ValueError("point_at: give target, or both azimuth_deg and elevation_deg")
         check(lib.eoir_sensor_point_azel(self.handle, encode(sensor, "sensor"), float(azimuth_deg),
                                          float(elevation_deg)))
+
+    def track(self, sensor: str, target: Optional[str]) -> None:
+        """Keep sensor pointed at target as time steps: :meth:`point_at` now
+        (errors raised here), then again after every :meth:`set_time` and
+        :meth:`set_state` (and :meth:`eoir.Scenario.set_time`, after the
+        scenario's own pointing) and before every :meth:`render`, so each
+        frame has target at its centre (truth pixel_x, pixel_y = (width - 1)
+        / 2, (height - 1) / 2) with the angular velocity that holds it there
+        during the integration. track(sensor, None) ends it, as do
+        point_at(sensor, ...), set_state(sensor, ...) and removing either
+        object."""
+        tracks = self._tracks()
+        if target is None:
+            tracks.pop(sensor, None)
+            return
+        self.point_at(sensor, target)
+        tracks[sensor] = target
+
+    def tracks(self) -> Dict[str, str]:
+        """The sensors under :meth:`track` and their targets."""
+        return dict(self._tracks())
+
+    def _tracks(self) -> Dict[str, str]:
+        return self.__dict__.setdefault("_track_targets", {})
+
+    def _retrack(self, strict: bool) -> None:
+        """Point every tracking sensor at its target. Not strict (after a
+        time or a state changes): a target or parent without a state yet is
+        skipped, since the host may push it next; strict (before a render):
+        every error is raised."""
+        for sensor, target in self._tracks().items():
+            try:
+                check(lib.eoir_sensor_point_at(self.handle, encode(sensor, "sensor"), encode(target, "target")))
+            except errors.NoStateError:
+                if strict:
+                    raise
 
     # -------------------------------------------------------- properties
     def properties(self, obj: str) -> List[Dict[str, object]]:
@@ -538,7 +582,7 @@ class Engine(_Closing):
             return _lib.EOIR_TYPE_STRING
         return _lib.EOIR_TYPE_ARRAY
 
-    def set(self, obj: str, prop: str, value) -> None:
+    def set(self, obj: str, prop: str, value: Any) -> None:
         """Set a property, converting value to the property's type (numbers,
         integers, bools, strings; arrays from lists or numpy arrays, flattened)."""
         h, o, p = self.handle, encode(obj, "obj"), encode(prop, "prop")
@@ -563,7 +607,7 @@ class Engine(_Closing):
             raise errors.TypeMismatchError(_lib.EOIR_ERR_TYPE_MISMATCH, "EOIR_ERR_TYPE_MISMATCH",
                                            f"{prop}: properties of type {_type_name(t)} cannot be set")
 
-    def get(self, obj: str, prop: str):
+    def get(self, obj: str, prop: str) -> Any:
         """A property's value: float, int, bool, str or a numpy float64 array."""
         h, o, p = self.handle, encode(obj, "obj"), encode(prop, "prop")
         t = self._type_code(obj, prop)
@@ -607,7 +651,7 @@ class Engine(_Closing):
                                        f"{prop}: unsupported property type {_type_name(t)}")
 
     # ---------------------------------------------------- data providers
-    def provider(self, group: str, element: str, sensor: str, target: Optional[str] = None):
+    def provider(self, group: str, element: str, sensor: str, target: Optional[str] = None) -> Any:
         """One data-provider element at the engine time: a float for numbers,
         an int for integers, a bool for bools, and (x, y) numpy float64 arrays
         for curves."""
@@ -645,10 +689,13 @@ class Engine(_Closing):
             return x[:m].copy(), y[:m].copy()
         check(status)
 
-    def provider_series(self, group: str, element: str, sensor: str, times, target: Optional[str] = None) -> np.ndarray:
+    def provider_series(self, group: str, element: str, sensor: str, times: Iterable[Time], target: Optional[str] = None) -> np.ndarray:
         """A scalar element at each of `times` (each an ISO-8601 UTC string,
         a datetime or (jd1, jd2[, scale]), as set_time takes it) in one
-        engine call (eoir_provider_series); the engine time is left at the last."""
+        engine call (eoir_provider_series); the engine time is left at the last.
+        Within the call sensors keep the attitude they have, turning at its
+        angular velocity: a :meth:`track` is not re-pointed at each time (loop
+        over set_time and :meth:`provider` for that)."""
         times = list(times)
         ts = (_lib.eoir_time * len(times))()
         for i, t in enumerate(times):
@@ -667,13 +714,17 @@ class Engine(_Closing):
                 for name, _, unit, _ in _elements(group)}
 
     # ------------------------------------------------- targets and truth
-    def snr(self, sensor: str, target: str, time=None) -> float:
+    def snr(self, sensor: str, target: str, time: Optional[Time] = None) -> float:
         """The SNR access constraint (spec 7.8, eoir_snr_constraint): the SNR
         of target seen by sensor. time None means the engine time; otherwise
         the engine time is set to it first and objects move from their last
         pushed states (constant velocity). 0 while the target is outside the
         field or hidden. Raises UnknownNameError for an unknown sensor or
-        target and NotAllowedError for a target equal to the sensor's parent."""
+        target and NotAllowedError for a target equal to the sensor's parent.
+        Tracking sensors (:meth:`track`) are pointed at the new time first."""
+        if time is not None and self._tracks():
+            self.set_time(time)  # the same engine time, then the tracks
+            time = None
         t = None if time is None else byref(_to_c_time(time))
         v = c_double()
         check(lib.eoir_snr_constraint(self.handle, encode(sensor, "sensor"), encode(target, "target"), t,
@@ -685,10 +736,15 @@ class Engine(_Closing):
         (eoir_truth_count / eoir_truth_get): one dict per object or catalogue
         star in the field with keys kind ("object" or "star"), object (name
         or catalogue id), pixel_x, pixel_y (sub-pixel, 0 = centre of pixel 0,
-        rows from the top), range_m (0 for stars), point_source (bool),
+        rows from the top), x_fits, y_fits (the same in FITS pixels: 1-based,
+        row 1 at the bottom, as `eoir run` and :meth:`eoir.Scenario.truth`
+        give them), range_m (0 for stars), point_source (bool),
         visible (bool), effective_irradiance (W/cm^2), effective_radiance
         (W/(cm^2 sr)), snr, v_mag, b_v_mag (stars), start and end (pixel_x,
-        pixel_y) at the start and the end of the integration (a streak), and
+        pixel_y) at the start and the end of the integration (a streak),
+        start_fits and end_fits the same in FITS pixels, time, start_time and
+        end_time (ISO-8601 UTC: the middle, start and end of the
+        integration), and
         three directions from the sensor, in degrees:
 
         - ra_deg, dec_deg: astrometric (ICRS), what the frame's astrometric
@@ -711,27 +767,50 @@ class Engine(_Closing):
         for a star, in sea-level vertical columns (1 straight up from sea
         level; 0 while the Earth's atmosphere is off). From inside the
         atmosphere the pixel positions of stars and of point sources beyond
-        it are raised by the refraction, as in the image. Raises NoStateError
-        if no frame was rendered."""
+        it are raised by the refraction, as in the image. Rows have the keys
+        of TRUTH_FIELDS: every field of :meth:`eoir.Scenario.truth` with the
+        same values (None where the file leaves a field out: v_mag and
+        b_v_mag of objects, azimuth_deg and elevation_deg away from the
+        Earth). Raises NoStateError if no frame was rendered."""
         s = encode(sensor, "sensor")
         n = c_size_t()
         check(lib.eoir_truth_count(self.handle, s, byref(n)))
+        info = self._image_info(sensor, _lib.EOIR_IMAGE_SENSOR_ELECTRONS)
+        height = float(info.height)
+        times = []
+        for jd in (info.time_jd_utc, info.start_jd_utc, info.end_jd_utc):
+            tm = _lib.eoir_time()
+            tm.scale = _lib.EOIR_TIME_UTC
+            tm.jd1, tm.jd2 = jd[0], jd[1]
+            times.append(_iso_of(tm))
+
+        def fits(x: float, y: float) -> Tuple[float, float]:
+            # FITS pixels: 1-based, row 1 at the bottom (plugin_host/cli/run.cpp)
+            return (float(x) + 1.0, height - float(y))
+
         out = []
         for i in range(int(n.value)):
             t = _lib.eoir_truth()
             t.struct_size = ctypes.sizeof(t)
             check(lib.eoir_truth_get(self.handle, s, i, byref(t)))
+            star = t.kind == _lib.EOIR_TRUTH_STAR
+            x_fits, y_fits = fits(t.pixel_x, t.pixel_y)
             out.append({
                 "object": decode(t.object),
                 "pixel_x": float(t.pixel_x),
                 "pixel_y": float(t.pixel_y),
+                "x_fits": x_fits,
+                "y_fits": y_fits,
+                "time": times[0],
+                "start_time": times[1],
+                "end_time": times[2],
                 "range_m": float(t.range_m),
                 "point_source": bool(t.point_source),
                 "visible": bool(t.visible),
                 "effective_irradiance": float(t.effective_irradiance),
                 "effective_radiance": float(t.effective_radiance),
                 "snr": float(t.snr),
-                "kind": "star" if t.kind == _lib.EOIR_TRUTH_STAR else "object",
+                "kind": "star" if star else "object",
                 "ra_deg": float(t.astrometric_ra_deg),
                 "dec_deg": float(t.astrometric_dec_deg),
                 "start_ra_deg": float(t.start_astrometric_ra_deg),
@@ -742,10 +821,12 @@ class Engine(_Closing):
                 "apparent_dec_deg": float(t.declination_deg),
                 "geometric_ra_deg": float(t.geometric_ra_deg),
                 "geometric_dec_deg": float(t.geometric_dec_deg),
-                "v_mag": float(t.v_mag),
-                "b_v_mag": float(t.b_v_mag),
+                "v_mag": float(t.v_mag) if star else None,
+                "b_v_mag": float(t.b_v_mag) if star else None,
                 "start": (float(t.start_pixel_x), float(t.start_pixel_y)),
                 "end": (float(t.end_pixel_x), float(t.end_pixel_y)),
+                "start_fits": fits(t.start_pixel_x, t.start_pixel_y),
+                "end_fits": fits(t.end_pixel_x, t.end_pixel_y),
                 "azimuth_deg": float(t.azimuth_deg) if t.topocentric else None,
                 "elevation_deg": float(t.elevation_deg) if t.topocentric else None,
                 "air_mass": float(t.air_mass),
@@ -773,25 +854,29 @@ class Engine(_Closing):
         return rows
 
     # -------------------------------------------------------- save, load
-    def save(self, path) -> None:
+    def save(self, path: Union[str, "os.PathLike[str]"]) -> None:
         """Save the whole engine state as a .scd file."""
         check(lib.eoir_state_save(self.handle, encode_path(path)))
 
-    def load(self, path) -> None:
-        """Replace the engine state by a .scd file (unchanged on error)."""
+    def load(self, path: Union[str, "os.PathLike[str]"]) -> None:
+        """Replace the engine state by a .scd file (unchanged on error; ends
+        every :meth:`track`)."""
         check(lib.eoir_state_load(self.handle, encode_path(path)))
+        self._tracks().clear()
 
-    def save_sensor(self, sensor: str, path) -> None:
+    def save_sensor(self, sensor: str, path: Union[str, "os.PathLike[str]"]) -> None:
         """Save one sensor's parameters."""
         check(lib.eoir_sensor_save(self.handle, encode(sensor, "sensor"), encode_path(path)))
 
-    def load_sensor(self, sensor: str, path) -> None:
+    def load_sensor(self, sensor: str, path: Union[str, "os.PathLike[str]"]) -> None:
         """Replace an existing sensor's parameters from a sensor file."""
         check(lib.eoir_sensor_load(self.handle, encode(sensor, "sensor"), encode_path(path)))
 
     # ------------------------------------------------------------ images
     def render(self, sensor: str) -> None:
-        """Render the frame of a sensor at the engine time (eoir_render)."""
+        """Render the frame of a sensor at the engine time (eoir_render),
+        tracking sensors (:meth:`track`) pointed at their targets first."""
+        self._retrack(strict=True)
         check(lib.eoir_render(self.handle, encode(sensor, "sensor")))
 
     def frame_fidelity(self, sensor: str) -> Dict[str, Any]:
@@ -811,7 +896,7 @@ class Engine(_Closing):
         check(lib.eoir_image_info_get(self.handle, encode(sensor, "sensor"), code, byref(info)))
         return info
 
-    def image_info(self, sensor: str, kind) -> Dict[str, Any]:
+    def image_info(self, sensor: str, kind: Union[str, int]) -> Dict[str, Any]:
         """Size, unit, times, pointing and sky coordinates of the last frame's
         image of a kind ("scene_radiance", "scene_display",
         "sensor_electrons", "sensor_mean", "sensor_display"): a dict with
@@ -871,7 +956,7 @@ class Engine(_Closing):
             "adc_max_adu": float(info.adc_max_adu),
         }
 
-    def image(self, sensor: str, kind) -> np.ndarray:
+    def image(self, sensor: str, kind: Union[str, int]) -> np.ndarray:
         """The last frame's image of a kind as a (height, width) array, row 0
         at the top as seen on the sky: float64 for "scene_radiance"
         (W/(cm^2 sr)), "sensor_electrons" and "sensor_mean" (electrons);

@@ -20,16 +20,18 @@ import ctypes
 import json
 import os
 from ctypes import byref, c_double, c_void_p
-from typing import Any, Dict, List, Optional
+from typing import Any, Dict, List, Optional, Union
 
 import numpy as np
 
 from . import _host, _lib
 from ._lib import encode, encode_path
-from .engine import IMAGE_KINDS, Engine, _Closing, _lookup, _to_c_time
+from .engine import IMAGE_KINDS, Engine, Time, _Closing, _lookup, _to_c_time
+
+Path = Union[str, "os.PathLike[str]"]
 
 
-def _iso(time) -> str:
+def _iso(time: Time) -> str:
     """An ISO-8601 UTC string for any time the Engine accepts."""
     if isinstance(time, str):
         return time
@@ -42,11 +44,11 @@ def _iso(time) -> str:
 class Scenario(_Closing):
     """A scenario file loaded into an engine (see the module's docstring)."""
 
-    def __init__(self):
+    def __init__(self) -> None:
         raise TypeError("use eoir.Scenario.load(path)")
 
     @classmethod
-    def load(cls, path, seed: int = 1, threads: int = 0, allow_paths_outside: bool = False) -> "Scenario":
+    def load(cls, path: Path, seed: int = 1, threads: int = 0, allow_paths_outside: bool = False) -> "Scenario":
         """Reads and checks the scenario file (as `eoir validate` does),
         creates an engine with `seed` and `threads`, registers every body,
         object, sensor and property, and sets the scenario's start time.
@@ -86,7 +88,7 @@ class Scenario(_Closing):
             self._close(session)
 
     @property
-    def session(self):
+    def session(self) -> c_void_p:
         if self._session is None:
             raise ValueError("the scenario is closed")
         return self._session
@@ -95,7 +97,7 @@ class Scenario(_Closing):
         return f"<eoir.Scenario {self.name!r}: {len(self.objects)} objects, {len(self.sensors)} sensors>"
 
     # -------------------------------------------------------------- time
-    def times(self, start=None, stop=None, step_s: Optional[float] = None) -> List[str]:
+    def times(self, start: Optional[Time] = None, stop: Optional[Time] = None, step_s: Optional[float] = None) -> List[str]:
         """The times of `eoir run`: start (default: the scenario's) to stop
         (default: the scenario's), every step_s (default: the scenario's),
         stop included, as ISO-8601 UTC strings."""
@@ -105,10 +107,12 @@ class Scenario(_Closing):
         return json.loads(_host.json_out(h.eoir_host_session_times, self.session, a, b,
                                          float(step_s) if step_s is not None else 0.0))
 
-    def set_time(self, time) -> None:
+    def set_time(self, time: Time) -> None:
         """Sets the engine time and pushes every object's state and attitude
-        (the scenario's motion and pointing models)."""
+        (the scenario's motion and pointing models); then sensors under
+        ``engine.track`` are pointed at their targets."""
         _host.check(_host.host().eoir_host_session_set_time(self.session, encode(_iso(time), "time")))
+        self.engine._retrack(strict=False)
 
     # ------------------------------------------------- truth and FITS files
     def truth(self, sensor: str) -> List[Dict[str, Any]]:
@@ -117,11 +121,14 @@ class Scenario(_Closing):
         astrometric ICRS ra_deg/dec_deg (what the FITS WCS gives at the
         pixel, as a plate solution does) at the middle of the integration
         (time) and at its start and end (start_time, start_ra_deg, ...),
-        apparent_ra_deg/dec_deg and geometric_ra_deg/dec_deg, range, SNR."""
+        apparent_ra_deg/dec_deg and geometric_ra_deg/dec_deg, range, SNR.
+        The same fields as Engine.truth() (which adds start and end in
+        0-based pixels and None for the fields the file leaves out); the rows
+        equal the `_truth.json` file of `eoir run`."""
         return json.loads(_host.json_out(_host.host().eoir_host_session_truth, self.session,
                                          encode(sensor, "sensor")))
 
-    def fits_header(self, sensor: str, kind="sensor_electrons", frame: int = 0):
+    def fits_header(self, sensor: str, kind: Union[str, int] = "sensor_electrons", frame: int = 0) -> Any:
         """The astropy.io.fits.Header `eoir run` writes for the last frame of
         sensor: the integration's DATE-OBS (its start) = DATE-BEG, DATE-AVG,
         DATE-END and MJD cards (UTC), EXPTIME, the observer (OBSGEO-X/Y/Z in
@@ -142,7 +149,7 @@ class Scenario(_Closing):
                 header.append(fits.Card(key, value, comment))
         return header
 
-    def fits_hdu(self, sensor: str, kind="sensor_electrons", frame: int = 0):
+    def fits_hdu(self, sensor: str, kind: Union[str, int] = "sensor_electrons", frame: int = 0) -> Any:
         """The last frame of sensor as an astropy PrimaryHDU: float32 pixels in
         FITS order (row 1 at the bottom, as ds9 shows the PNG) with the
         header of fits_header()."""
@@ -150,7 +157,7 @@ class Scenario(_Closing):
         image = self.engine.image(sensor, kind)
         return fits.PrimaryHDU(np.flipud(image).astype(np.float32), header=self.fits_header(sensor, kind, frame))
 
-    def write_fits(self, sensor: str, kind, path, frame: int = 0, overwrite: bool = True) -> None:
+    def write_fits(self, sensor: str, kind: Union[str, int], path: Path, frame: int = 0, overwrite: bool = True) -> None:
         """Writes fits_hdu() to path with astropy (checksums included),
         through a temporary file renamed into place."""
         hdu = self.fits_hdu(sensor, kind, frame)
@@ -166,7 +173,7 @@ class Scenario(_Closing):
                 os.unlink(tmp)
 
 
-def tle_state(line1: str, line2: str, time) -> Dict[str, np.ndarray]:
+def tle_state(line1: str, line2: str, time: Time) -> Dict[str, np.ndarray]:
     """SGP4 from two-line elements at a UTC time, by the host's propagator
     (plugin_host/cli/sgp4.cpp, the "tle" motion of scenarios): TEME position
     (km) and velocity (km/s) as SGP4 gives them, and J2000 position (m) and

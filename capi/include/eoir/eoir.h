@@ -44,9 +44,12 @@ extern "C" {
 #endif
 
 /* ------------------------------------------------------------------ version */
-#define EOIR_VERSION_MAJOR 1
-#define EOIR_VERSION_MINOR 7
-#define EOIR_VERSION_PATCH 0
+/* EOIR_VERSION_MAJOR, EOIR_VERSION_MINOR, EOIR_VERSION_PATCH and
+ * EOIR_VERSION_STRING: the engine's one version (the CMake project's), which
+ * is also this ABI's: MAJOR is the soname (libeoir.so.MAJOR), MINOR counts
+ * additions to the ABI (the "1.5" of the comments below), PATCH fixes.
+ * eoir_version.h is generated beside this header (build tree and install). */
+#include "eoir_version.h"
 
 /* Returns EOIR_VERSION_MAJOR*10000 + MINOR*100 + PATCH of the loaded library. */
 EOIR_API uint32_t eoir_version(void);

@@ -1,5 +1,6 @@
 # Sphinx configuration of the EOIR engine's manual (docs/README.md says how to build it).
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "_ext"))
@@ -7,6 +8,10 @@ sys.path.insert(0, os.path.join(os.path.dirname(__file__), "_ext"))
 project = "EOIR engine"
 author = "the EOIR engine's authors"
 copyright = "the EOIR engine's authors, Apache License 2.0"
+# The one version: the CMake project's (tests/version/check_versions.py).
+with open(os.path.join(os.path.dirname(__file__), "..", "CMakeLists.txt")) as cmake_lists:
+    release = re.search(r"^project\(eoir VERSION ([0-9.]+)", cmake_lists.read(), re.M).group(1)
+version = release
 
 extensions = ["myst_parser", "breathe", "eoir_docs"]
 myst_enable_extensions = ["colon_fence"]

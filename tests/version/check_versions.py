@@ -84,6 +84,10 @@ check(out.returncode == 0 and lines[:5] == expected, "eoir --version: program, C
 check(len(lines) == 6 and lines[5].startswith(f"engine {v} (") and f"libeoir.so.{major}" in lines[5],
       f"eoir --version: the engine loaded: {lines[5:]}")
 
+conf = read(a.source, "docs", "conf.py")
+check('re.search(r"^project\\(eoir VERSION ([0-9.]+)", cmake_lists.read(), re.M)' in conf and "version = release" in conf,
+      "docs/conf.py takes the manual's release from project(eoir VERSION)")
+
 changelog = read(a.source, "CHANGELOG.md")
 check(changelog.startswith("# Changelog\n") and "https://keepachangelog.com/en/1.1.0/" in changelog
       and "## [Unreleased]" in changelog, "CHANGELOG.md: Keep a Changelog's header and Unreleased section")

@@ -456,12 +456,18 @@ void check_cube_space(const std::string& dir, const std::string& sensor, std::in
       4.0 * static_cast<double>(width) * static_cast<double>(height) * static_cast<double>(planes);
   const double free_bytes = static_cast<double>(fs_info.f_bavail) * static_cast<double>(fs_info.f_frsize);
   if (need_bytes > free_bytes) {
+    const auto size_text = [](double bytes) {
+      char t[32];
+      if (bytes >= 1073741824.0) std::snprintf(t, sizeof t, "%.3g GiB", bytes / 1073741824.0);
+      else std::snprintf(t, sizeof t, "%.3g MiB", bytes / 1048576.0);
+      return std::string(t);
+    };
     char text[512];
     std::snprintf(text, sizeof text,
-                  "--cube: the data cube of %s (%zu planes of %lld x %lld float32) needs %.3g GiB, but the file "
-                  "system of --out '%s' has %.3g GiB free; free space, use fewer time steps or run without --cube",
+                  "--cube: the data cube of %s (%zu planes of %lld x %lld float32) needs %s, but the file system of "
+                  "--out '%s' has %s free; free space, use fewer time steps or run without --cube",
                   sensor.c_str(), planes, static_cast<long long>(width), static_cast<long long>(height),
-                  need_bytes / 1073741824.0, dir.c_str(), free_bytes / 1073741824.0);
+                  size_text(need_bytes).c_str(), dir.c_str(), size_text(free_bytes).c_str());
     throw std::runtime_error(text);
   }
 }

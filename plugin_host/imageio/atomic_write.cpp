@@ -90,9 +90,15 @@ AtomicReplacement::~AtomicReplacement() {
   if (!committed_) ::unlink(temporary_.c_str());
 }
 
-void AtomicReplacement::commit() {
-  if (committed_) throw ImageIoError("file " + target_ + " is already in place");
-  const int fd = ::open(temporary_.c_str(), O_RDONLY | O_CLOEXEC);
+void AtomicReplacement::commit(int fd) {
+  if (committed_) {
+    if (fd >= 0) ::close(fd);
+    throw ImageIoError("file " + target_ + " is already in place");
+  }
+  // The writer's descriptor, or the temporary opened again (read-only, or
+  // write-only when the umask left the owner no read permission).
+  if (fd < 0) fd = ::open(temporary_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fd = ::open(temporary_.c_str(), O_WRONLY | O_CLOEXEC);
   if (fd < 0) throw ImageIoError("cannot open " + temporary_ + ": " + errno_text(errno));
   const auto fail = [&](const std::string& what) {
     const int err = errno;
@@ -132,8 +138,7 @@ void write_file_atomically(const std::string& path, const void* data, std::size_
     p += n;
     left -= static_cast<std::size_t>(n);
   }
-  if (::close(fd) != 0) throw ImageIoError("cannot close " + tmp + ": " + errno_text(errno));
-  file.commit();
+  file.commit(fd);
 }
 
 }  // namespace eoir::imageio

@@ -30,7 +30,9 @@ void write_file_atomically(const std::string& path, const void* data, std::size_
 // non-regular target, removes stale temporaries and names a unique
 // temporary beside the target (not yet created: the caller creates it,
 // exclusively); commit() gives it the target's permission bits, fsyncs it,
-// renames it over the target and fsyncs the directory. Until commit()
+// renames it over the target and fsyncs the directory (commit(fd) uses and
+// closes the caller's open descriptor of the temporary; without one, the
+// temporary, already closed, is opened again). Until commit()
 // succeeds the target is untouched, and the destructor (or a failed
 // commit) removes the temporary. Throws ImageIoError.
 class AtomicReplacement {
@@ -42,7 +44,7 @@ class AtomicReplacement {
 
   const std::string& target() const { return target_; }
   const std::string& temporary() const { return temporary_; }
-  void commit();
+  void commit(int fd = -1);
 
  private:
   std::string target_, temporary_;

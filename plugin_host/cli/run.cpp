@@ -12,6 +12,7 @@
 #include <array>
 #include <system_error>
 
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -433,14 +434,43 @@ std::string region_text(const ojson& truth, const std::string& sensor, const std
   return out;
 }
 
-// Frames of one sensor kept for the data cube.
-struct CubeFrames {
-  const SensorSpec* sensor = nullptr;
-  eoir_image_info first{};
-  std::vector<std::vector<double>> planes;
+// The data cube of one sensor, streamed (never held whole): its FITS file
+// (a temporary beside the target) is opened at the sensor's first frame with
+// NAXIS3 = the run's time steps, each frame's electrons are written as their
+// plane when rendered, and the TIMES table, the checksums and the rename
+// follow the last frame. A run that fails before then leaves no cube.
+struct CubeStream {
+  io::FitsCubeWriter writer;
+  std::int64_t width = 0, height = 0;
   std::vector<std::string> starts, middles;  // DATE-OBS (the start) and DATE-AVG of each plane
   std::vector<double> mjd_starts, mjd_middles, boresight_ra, boresight_dec, up_ra, up_dec;
 };
+
+// --cube's disk-space check: the cube's float32 pixels against the space
+// free for an unprivileged user on the file system of --out.
+void check_cube_space(const std::string& dir, const std::string& sensor, std::int64_t width, std::int64_t height,
+                      std::size_t planes) {
+  struct statvfs fs_info {};
+  if (::statvfs(dir.c_str(), &fs_info) != 0) return;  // unknown: let the write report it
+  const double need_bytes =
+      4.0 * static_cast<double>(width) * static_cast<double>(height) * static_cast<double>(planes);
+  const double free_bytes = static_cast<double>(fs_info.f_bavail) * static_cast<double>(fs_info.f_frsize);
+  if (need_bytes > free_bytes) {
+    const auto size_text = [](double bytes) {
+      char t[32];
+      if (bytes >= 1073741824.0) std::snprintf(t, sizeof t, "%.3g GiB", bytes / 1073741824.0);
+      else std::snprintf(t, sizeof t, "%.3g MiB", bytes / 1048576.0);
+      return std::string(t);
+    };
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "--cube: the data cube of %s (%zu planes of %lld x %lld float32) needs %s, but the file system of "
+                  "--out '%s' has %s free; free space, use fewer time steps or run without --cube",
+                  sensor.c_str(), planes, static_cast<long long>(width), static_cast<long long>(height),
+                  size_text(need_bytes).c_str(), dir.c_str(), size_text(free_bytes).c_str());
+    throw std::runtime_error(text);
+  }
+}
 
 // The fraction of the sensor pixels at the saturation level (0 with
 // saturation off).
@@ -524,9 +554,8 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
       engine.check(engine.api().set_string(engine.handle(), s->name.c_str(), "display_stretch", opt.stretch.c_str()),
                    "--stretch " + opt.stretch + " (sensor " + s->name + ")");
 
-  std::map<std::string, CubeFrames> cubes;
-  std::size_t cube_bytes = 0;
-  constexpr std::size_t kMaxCubeBytes = std::size_t{2} << 30;
+  std::map<std::string, CubeStream> cubes;
+  const double cube_step_s = opt.times.size() > 1 ? opt.times[1] - opt.times[0] : 1.0;
 
   for (std::size_t i = 0; i < opt.times.size(); ++i) {
     session.set_time(opt.times[i]);
@@ -584,16 +613,33 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
       }
 
       if (opt.cube) {
-        CubeFrames& c = cubes[s->name];
-        if (c.planes.empty()) {
-          c.sensor = s;
-          c.first = in_el;
+        CubeStream& c = cubes[s->name];
+        const std::string cube_name = file_stem(s->name) + "_electrons_cube.fits";
+        try {
+          if (!c.writer.is_open()) {
+            // The header is the first frame's (its pointing, times and fidelity).
+            check_cube_space(opt.out_dir, s->name, in_el.width, in_el.height, opt.times.size());
+            io::FitsHeader h = ctx.header(*s, 0, in_el, "sensor_electrons_cube", kBunitElectrons,
+                                          cube_step_s > 0 ? cube_step_s : 1.0);
+            h.set_integer("NFRAMES", static_cast<long long>(opt.times.size()), "frames in the cube (NAXIS3)");
+            h.add_comment(
+                "Plane k (1-based) is time step k-1 of the run; its time and pointing are in the TIMES table.");
+            h.add_comment("The celestial WCS is the first plane's.");
+            io::FitsWriteOptions o;
+            o.pixel_type = io::FitsPixelType::Float32;
+            c.width = in_el.width;
+            c.height = in_el.height;
+            c.writer.open((dir / cube_name).string(), c.width, c.height, static_cast<std::int64_t>(opt.times.size()),
+                          h, o);
+          }
+          if (in_el.width != c.width || in_el.height != c.height)
+            throw io::ImageIoError("frame " + std::string(index_text) + " is " + std::to_string(in_el.width) +
+                                   " x " + std::to_string(in_el.height) + " pixels, the cube's planes " +
+                                   std::to_string(c.width) + " x " + std::to_string(c.height));
+          c.writer.write_plane(static_cast<std::int64_t>(i), el.data());
+        } catch (const io::ImageIoError& e) {
+          throw std::runtime_error("cannot write the data cube of " + s->name + ": " + e.what());
         }
-        cube_bytes += el.size() * sizeof(double);
-        if (cube_bytes > kMaxCubeBytes)
-          throw std::runtime_error("--cube: the data cubes would exceed " + std::to_string(kMaxCubeBytes >> 30) +
-                                   " GiB of memory; use fewer time steps or sensors");
-        c.planes.push_back(el);
         c.starts.push_back(RunContext::fits_time(ctx.iso_of(in_el.start_jd_utc)));
         c.middles.push_back(RunContext::fits_time(ctx.iso_of(in_el)));
         c.mjd_starts.push_back(RunContext::mjd_of(in_el.start_jd_utc));
@@ -646,32 +692,22 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
   ojson cube_files = ojson::object();
   for (const SensorSpec* s : sensors) {
     if (!opt.cube) break;
-    const CubeFrames& c = cubes.at(s->name);
-    const double step = opt.times.size() > 1 ? opt.times[1] - opt.times[0] : 1.0;
-    io::FitsHeader h = ctx.header(*s, 0, c.first, "sensor_electrons_cube", kBunitElectrons, step > 0 ? step : 1.0);
-    h.set_integer("NFRAMES", static_cast<long long>(c.planes.size()), "frames in the cube (NAXIS3)");
-    h.add_comment("Plane k (1-based) is time step k-1 of the run; its time and pointing are in the TIMES table.");
-    h.add_comment("The celestial WCS is the first plane's.");
+    CubeStream& c = cubes.at(s->name);
     io::FitsTable table;
     table.extname = "TIMES";
     std::vector<double> frame_index;
-    for (std::size_t k = 0; k < c.planes.size(); ++k) frame_index.push_back(static_cast<double>(k));
+    for (std::size_t k = 0; k < c.starts.size(); ++k) frame_index.push_back(static_cast<double>(k));
     table.columns = {{"FRAME", "", frame_index, {}},          {"DATE-OBS", "", {}, c.starts},
                      {"DATE-AVG", "", {}, c.middles},         {"MJD-OBS", "d", c.mjd_starts, {}},
                      {"MJD-AVG", "d", c.mjd_middles, {}},     {"BORE_RA", "deg", c.boresight_ra, {}},
                      {"BORE_DEC", "deg", c.boresight_dec, {}}, {"UP_RA", "deg", c.up_ra, {}},
                      {"UP_DEC", "deg", c.up_dec, {}}};
-    std::vector<const double*> planes;
-    for (const auto& p : c.planes) planes.push_back(p.data());
-    const std::string name = file_stem(s->name) + "_electrons_cube.fits";
-    io::FitsWriteOptions o;
-    o.pixel_type = io::FitsPixelType::Float32;
     try {
-      io::write_fits_cube((dir / name).string(), planes, c.first.width, c.first.height, h, table, o);
+      c.writer.finish(table);
     } catch (const io::ImageIoError& e) {
       throw std::runtime_error("cannot write the data cube of " + s->name + ": " + e.what());
     }
-    cube_files[s->name] = name;
+    cube_files[s->name] = file_stem(s->name) + "_electrons_cube.fits";
   }
 
   ojson sensors_json = ojson::array();

@@ -63,15 +63,15 @@ void remove_stale_temporaries(const std::string& target) {
 }
 }  // namespace
 
-void write_file_atomically(const std::string& path_in, const void* data, std::size_t size) {
+AtomicReplacement::AtomicReplacement(const std::string& path_in) {
   static std::atomic<unsigned> counter{0};
   if (path_in.empty()) throw ImageIoError("image output path is empty");
-  const std::string path = resolve_links(path_in);
+  target_ = resolve_links(path_in);
   struct stat existing {};
-  const bool exists = ::stat(path.c_str(), &existing) == 0;
+  target_exists_ = ::stat(target_.c_str(), &existing) == 0;
   // A device or FIFO at the target is not replaced by a file.
-  if (exists && !S_ISREG(existing.st_mode))
-    throw ImageIoError("cannot replace " + path + ": not a regular file (" +
+  if (target_exists_ && !S_ISREG(existing.st_mode))
+    throw ImageIoError("cannot replace " + target_ + ": not a regular file (" +
                        (S_ISDIR(existing.st_mode)    ? "a directory"
                         : S_ISFIFO(existing.st_mode) ? "a FIFO"
                         : S_ISCHR(existing.st_mode)  ? "a character device"
@@ -79,48 +79,66 @@ void write_file_atomically(const std::string& path_in, const void* data, std::si
                         : S_ISSOCK(existing.st_mode) ? "a socket"
                                                      : "a special file") +
                        ")");
-  remove_stale_temporaries(path);
-  // Unique per process and call; O_EXCL guards against collisions.
-  const std::string tmp =
-      path + ".tmp." + std::to_string(static_cast<long>(::getpid())) + "." + std::to_string(counter.fetch_add(1));
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) throw ImageIoError("cannot create " + tmp + ": " + errno_text(errno));
+  target_mode_ = static_cast<unsigned>(existing.st_mode & 07777);
+  remove_stale_temporaries(target_);
+  // Unique per process and object; the creator opens it exclusively.
+  temporary_ = target_ + ".tmp." + std::to_string(static_cast<long>(::getpid())) + "." +
+               std::to_string(counter.fetch_add(1));
+}
+
+AtomicReplacement::~AtomicReplacement() {
+  if (!committed_) ::unlink(temporary_.c_str());
+}
+
+void AtomicReplacement::commit(int fd) {
+  if (committed_) {
+    if (fd >= 0) ::close(fd);
+    throw ImageIoError("file " + target_ + " is already in place");
+  }
+  // The writer's descriptor, or the temporary opened again (read-only, or
+  // write-only when the umask left the owner no read permission).
+  if (fd < 0) fd = ::open(temporary_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fd = ::open(temporary_.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) throw ImageIoError("cannot open " + temporary_ + ": " + errno_text(errno));
   const auto fail = [&](const std::string& what) {
     const int err = errno;
     ::close(fd);
-    ::unlink(tmp.c_str());
-    throw ImageIoError(what + " " + tmp + ": " + errno_text(err));
+    throw ImageIoError(what + " " + temporary_ + ": " + errno_text(err));
   };
+  if (target_exists_ && ::fchmod(fd, static_cast<mode_t>(target_mode_)) != 0) fail("cannot set the mode of");
+  if (::fsync(fd) != 0) fail("cannot fsync");
+  if (::close(fd) != 0) throw ImageIoError("cannot close " + temporary_ + ": " + errno_text(errno));
+  if (std::rename(temporary_.c_str(), target_.c_str()) != 0)
+    throw ImageIoError("cannot rename " + temporary_ + " to " + target_ + ": " + errno_text(errno));
+  committed_ = true;
+  // Make the rename itself durable (best effort: not all file systems allow
+  // it).
+  const int dfd = ::open(directory_of(target_).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dfd >= 0) {
+    (void)::fsync(dfd);
+    ::close(dfd);
+  }
+}
+
+void write_file_atomically(const std::string& path, const void* data, std::size_t size) {
+  AtomicReplacement file(path);
+  const std::string& tmp = file.temporary();
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) throw ImageIoError("cannot create " + tmp + ": " + errno_text(errno));
   const char* p = static_cast<const char*>(data);
   std::size_t left = size;
   while (left > 0) {
     const ssize_t n = ::write(fd, p, left);
     if (n < 0) {
       if (errno == EINTR) continue;
-      fail("cannot write");
+      const int err = errno;
+      ::close(fd);
+      throw ImageIoError("cannot write " + tmp + ": " + errno_text(err));
     }
     p += n;
     left -= static_cast<std::size_t>(n);
   }
-  if (exists && ::fchmod(fd, existing.st_mode & 07777) != 0) fail("cannot set the mode of");
-  if (::fsync(fd) != 0) fail("cannot fsync");
-  if (::close(fd) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    throw ImageIoError("cannot close " + tmp + ": " + errno_text(err));
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    throw ImageIoError("cannot rename " + tmp + " to " + path + ": " + errno_text(err));
-  }
-  // Make the rename itself durable (best effort: not all file systems allow
-  // it).
-  const int dfd = ::open(directory_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dfd >= 0) {
-    (void)::fsync(dfd);
-    ::close(dfd);
-  }
+  file.commit(fd);
 }
 
 }  // namespace eoir::imageio

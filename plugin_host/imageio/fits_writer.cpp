@@ -47,29 +47,20 @@ int shortest_digits(double v) {
   return 17;
 }
 
-// Owns the in-memory FITS file; closes it on every path.
-struct MemFits {
-  fitsfile* f = nullptr;
-  void* buffer = nullptr;
-  size_t size = 0;
-  ~MemFits() {
-    if (f != nullptr) {
-      int st = 0;
-      fits_close_file(f, &st);
-    }
-    std::free(buffer);
-  }
-};
-
-// Placeholder cards with fixed comments first: cfitsio then updates the
-// values and keeps the comments, instead of stamping the current time into
-// them, so identical inputs give byte-identical files.
-void write_checksums(fitsfile* f, const std::string& path, int& st) {
+// Placeholder cards with fixed comments, written before the data unit (the
+// header then has its final length and the data never move): cfitsio then
+// updates the values and keeps the comments, instead of stamping the current
+// time into them, so identical inputs give byte-identical files.
+void write_checksum_placeholders(fitsfile* f, const std::string& path, int& st) {
   fits_write_key_str(f, "CHECKSUM", "0000000000000000", "HDU checksum (FITS 4.0 standard)", &st);
   fits_write_key_str(f, "DATASUM", "0", "data unit checksum", &st);
+  if (st) throw_fits(st, "FITS " + path + ": checksum cards");
+}
+
+void write_checksum_values(fitsfile* f, const std::string& path, int& st) {
   // Flush first: the data unit's fill bytes are only written (as zeros)
   // on a flush, and a checksum taken before it would sum whatever the
-  // memory driver's fresh buffer held (then cfitsio restamps the comment).
+  // driver's fresh buffer held (then cfitsio restamps the comment).
   fits_flush_file(f, &st);
   unsigned long datasum = 0, hdusum = 0;
   fits_get_chksum(f, &datasum, &hdusum, &st);
@@ -115,110 +106,10 @@ void write_table(fitsfile* f, const std::string& path, const FitsTable& table, s
     }
     if (st) throw_fits(st, "FITS " + path + ": table column " + c.name);
   }
-  if (options.checksum) write_checksums(f, path, st);
-}
-
-template <typename In>
-void write_image(const std::string& path, const std::vector<const In*>& planes, std::int64_t width,
-                 std::int64_t height, const FitsHeader& header, const FitsWriteOptions& options, bool cube,
-                 const FitsTable& table = {}) {
-  if (planes.empty()) throw ImageIoError("FITS " + path + ": no image planes");
-  for (const In* p : planes)
-    if (p == nullptr) throw ImageIoError("FITS " + path + ": pixel buffer is null");
-  if (width < 1 || height < 1)
-    throw ImageIoError("FITS " + path + ": image size " + std::to_string(width) + " x " + std::to_string(height) +
-                       " must be at least 1 x 1");
-  const bool f64 = options.pixel_type == FitsPixelType::Float64;
-  const bool u16 = options.pixel_type == FitsPixelType::UInt16;
-  const bool u32 = options.pixel_type == FitsPixelType::UInt32;
-  const int image_type = f64 ? DOUBLE_IMG : u16 ? USHORT_IMG : u32 ? ULONG_IMG : FLOAT_IMG;
-
-  MemFits m;
-  m.size = 2880 * 4;
-  m.buffer = std::malloc(m.size);
-  if (m.buffer == nullptr) throw ImageIoError("FITS " + path + ": out of memory");
-  int st = 0;
-  fits_create_memfile(&m.f, &m.buffer, &m.size, 2880 * 16, std::realloc, &st);
-  if (st) throw_fits(st, "FITS " + path + ": create in memory");
-
-  LONGLONG naxes[3] = {width, height, static_cast<LONGLONG>(planes.size())};
-  fits_create_imgll(m.f, image_type, cube ? 3 : 2, naxes, &st);
-  if (st) throw_fits(st, "FITS " + path + ": create image");
-
-  for (const auto& c : header.cards()) {
-    char* key = const_cast<char*>(c.key.c_str());
-    char* com = c.comment.empty() ? nullptr : const_cast<char*>(c.comment.c_str());
-    switch (c.kind) {
-      case FitsCard::Kind::String:
-        if (c.text.size() > 68) fits_write_key_longwarn(m.f, &st);
-        fits_write_key_longstr(m.f, key, c.text.c_str(), com, &st);
-        break;
-      case FitsCard::Kind::Double:
-        fits_write_key_dbl(m.f, key, c.number, -shortest_digits(c.number), com, &st);
-        break;
-      case FitsCard::Kind::Integer:
-        fits_write_key_lng(m.f, key, c.integer, com, &st);
-        break;
-      case FitsCard::Kind::Logical:
-        fits_write_key_log(m.f, key, c.logical ? 1 : 0, com, &st);
-        break;
-      case FitsCard::Kind::Comment:
-        fits_write_comment(m.f, c.text.c_str(), &st);
-        break;
-      case FitsCard::Kind::History:
-        fits_write_history(m.f, c.text.c_str(), &st);
-        break;
-    }
-    if (st) throw_fits(st, "FITS " + path + ": header card " + c.key);
+  if (options.checksum) {
+    write_checksum_placeholders(f, path, st);
+    write_checksum_values(f, path, st);
   }
-
-  // Rows bottom-up: FITS row j (1-based) = caller row height - j.
-  const auto w = static_cast<std::size_t>(width);
-  std::vector<float> row32(f64 || u16 || u32 ? 0 : w);
-  std::vector<double> row64(f64 ? w : 0);
-  std::vector<unsigned short> row_u16(u16 ? w : 0);
-  std::vector<unsigned int> row_u32(u32 ? w : 0);
-  for (std::size_t plane = 0; plane < planes.size(); ++plane)
-  for (std::int64_t j = 1; j <= height; ++j) {
-    const In* src = planes[plane] + static_cast<std::size_t>(height - j) * w;
-    LONGLONG first[3] = {1, j, static_cast<LONGLONG>(plane + 1)};
-    if (u16 || u32) {
-      // Unsigned integers: BITPIX 16 or 32 with BZERO 2^15 or 2^31 (FITS 4.0 section 5.2.5).
-      const double top = u16 ? 65535.0 : 4294967295.0;
-      for (std::size_t i = 0; i < w; ++i) {
-        const double v = static_cast<double>(src[i]);
-        if (!(v >= 0.0 && v <= top && v == std::floor(v)))
-          throw ImageIoError("FITS " + path + ": pixel value " + std::to_string(v) + " is not an unsigned " +
-                             (u16 ? "16" : "32") + "-bit integer");
-        if (u16) row_u16[i] = static_cast<unsigned short>(v);
-        else row_u32[i] = static_cast<unsigned int>(v);
-      }
-      if (u16) fits_write_pixll(m.f, TUSHORT, first, static_cast<LONGLONG>(w), row_u16.data(), &st);
-      else fits_write_pixll(m.f, TUINT, first, static_cast<LONGLONG>(w), row_u32.data(), &st);
-    } else if (f64) {
-      for (std::size_t i = 0; i < w; ++i) row64[i] = static_cast<double>(src[i]);
-      fits_write_pixll(m.f, TDOUBLE, first, static_cast<LONGLONG>(w), row64.data(), &st);
-    } else {
-      for (std::size_t i = 0; i < w; ++i) row32[i] = static_cast<float>(src[i]);
-      fits_write_pixll(m.f, TFLOAT, first, static_cast<LONGLONG>(w), row32.data(), &st);
-    }
-    if (st) throw_fits(st, "FITS " + path + ": write pixels");
-  }
-  if (options.checksum) write_checksums(m.f, path, st);
-  if (!table.extname.empty()) write_table(m.f, path, table, planes.size(), options, st);
-  fits_flush_file(m.f, &st);
-  LONGLONG head = 0, data = 0, end = 0;
-  fits_get_hduaddrll(m.f, &head, &data, &end, &st);
-  if (st) throw_fits(st, "FITS " + path + ": finish");
-  fits_close_file(m.f, &st);
-  m.f = nullptr;
-  if (st) throw_fits(st, "FITS " + path + ": close");
-  // The memory driver reports its allocation; the file is the HDU's extent
-  // (a multiple of 2880 bytes).
-  const auto file_size = static_cast<std::size_t>(end);
-  if (file_size == 0 || file_size % 2880 != 0 || file_size > m.size)
-    throw ImageIoError("FITS " + path + ": unexpected in-memory file size " + std::to_string(file_size));
-  write_file_atomically(path, m.buffer, file_size);
 }
 
 }  // namespace
@@ -317,25 +208,209 @@ void add_tan_pointing(FitsHeader& h, const FitsPointing& p) {
   }
 }
 
+struct FitsCubeWriter::State {
+  std::string path;  // as the caller named it, for messages
+  AtomicReplacement file;
+  fitsfile* f = nullptr;
+  std::int64_t width = 0, height = 0;
+  FitsWriteOptions options;
+  std::vector<bool> written;  // per plane
+  bool failed = false;        // an error left the file incomplete
+  explicit State(const std::string& p) : path(p), file(p) {}
+  ~State() {
+    if (f != nullptr) {
+      int st = 0;
+      fits_close_file(f, &st);
+    }
+  }  // then `file` removes the temporary
+};
+
+FitsCubeWriter::FitsCubeWriter() = default;
+FitsCubeWriter::~FitsCubeWriter() = default;
+FitsCubeWriter::FitsCubeWriter(FitsCubeWriter&&) noexcept = default;
+FitsCubeWriter& FitsCubeWriter::operator=(FitsCubeWriter&&) noexcept = default;
+
+void FitsCubeWriter::open(const std::string& path, std::int64_t width, std::int64_t height, std::int64_t planes,
+                          const FitsHeader& header, const FitsWriteOptions& options) {
+  start(path, width, height, planes, true, header, options);
+}
+
+void FitsCubeWriter::open_image(const std::string& path, std::int64_t width, std::int64_t height,
+                                const FitsHeader& header, const FitsWriteOptions& options) {
+  start(path, width, height, 1, false, header, options);
+}
+
+void FitsCubeWriter::start(const std::string& path, std::int64_t width, std::int64_t height, std::int64_t planes,
+                           bool cube, const FitsHeader& header, const FitsWriteOptions& options) {
+  if (state_ != nullptr) throw ImageIoError("FITS " + path + ": the writer is already open for " + state_->path);
+  if (planes < 1) throw ImageIoError("FITS " + path + ": no image planes");
+  if (width < 1 || height < 1)
+    throw ImageIoError("FITS " + path + ": image size " + std::to_string(width) + " x " + std::to_string(height) +
+                       " must be at least 1 x 1");
+  const bool f64 = options.pixel_type == FitsPixelType::Float64;
+  const bool u16 = options.pixel_type == FitsPixelType::UInt16;
+  const bool u32 = options.pixel_type == FitsPixelType::UInt32;
+  const int image_type = f64 ? DOUBLE_IMG : u16 ? USHORT_IMG : u32 ? ULONG_IMG : FLOAT_IMG;
+
+  auto s = std::make_unique<State>(path);
+  s->width = width;
+  s->height = height;
+  s->options = options;
+  s->written.assign(static_cast<std::size_t>(planes), false);
+  int st = 0;
+  // The disk driver without extended file-name syntax; it refuses an
+  // existing file, so the temporary is created exclusively.
+  fits_create_diskfile(&s->f, s->file.temporary().c_str(), &st);
+  if (st) {
+    s->f = nullptr;
+    throw_fits(st, "FITS " + path + ": create " + s->file.temporary());
+  }
+  fitsfile* f = s->f;
+  LONGLONG naxes[3] = {width, height, static_cast<LONGLONG>(planes)};
+  fits_create_imgll(f, image_type, cube ? 3 : 2, naxes, &st);
+  if (st) throw_fits(st, "FITS " + path + ": create image");
+
+  for (const auto& c : header.cards()) {
+    char* key = const_cast<char*>(c.key.c_str());
+    char* com = c.comment.empty() ? nullptr : const_cast<char*>(c.comment.c_str());
+    switch (c.kind) {
+      case FitsCard::Kind::String:
+        if (c.text.size() > 68) fits_write_key_longwarn(f, &st);
+        fits_write_key_longstr(f, key, c.text.c_str(), com, &st);
+        break;
+      case FitsCard::Kind::Double:
+        fits_write_key_dbl(f, key, c.number, -shortest_digits(c.number), com, &st);
+        break;
+      case FitsCard::Kind::Integer:
+        fits_write_key_lng(f, key, c.integer, com, &st);
+        break;
+      case FitsCard::Kind::Logical:
+        fits_write_key_log(f, key, c.logical ? 1 : 0, com, &st);
+        break;
+      case FitsCard::Kind::Comment:
+        fits_write_comment(f, c.text.c_str(), &st);
+        break;
+      case FitsCard::Kind::History:
+        fits_write_history(f, c.text.c_str(), &st);
+        break;
+    }
+    if (st) throw_fits(st, "FITS " + path + ": header card " + c.key);
+  }
+  if (options.checksum) write_checksum_placeholders(f, path, st);
+  state_ = std::move(s);
+}
+
+template <typename In>
+void FitsCubeWriter::write_plane_of(std::int64_t k, const In* pixels) {
+  if (state_ == nullptr) throw ImageIoError("FITS: write_plane before open");
+  State& s = *state_;
+  const std::string& path = s.path;
+  if (s.failed) throw ImageIoError("FITS " + path + ": an earlier error left the file incomplete");
+  if (pixels == nullptr) throw ImageIoError("FITS " + path + ": pixel buffer is null");
+  if (k < 0 || k >= static_cast<std::int64_t>(s.written.size()))
+    throw ImageIoError("FITS " + path + ": plane " + std::to_string(k) + " is outside 0.." +
+                       std::to_string(s.written.size() - 1));
+  const bool f64 = s.options.pixel_type == FitsPixelType::Float64;
+  const bool u16 = s.options.pixel_type == FitsPixelType::UInt16;
+  const bool u32 = s.options.pixel_type == FitsPixelType::UInt32;
+  s.failed = true;  // until the plane is complete
+  int st = 0;
+  // Rows bottom-up: FITS row j (1-based) = caller row height - j.
+  const auto w = static_cast<std::size_t>(s.width);
+  std::vector<float> row32(f64 || u16 || u32 ? 0 : w);
+  std::vector<double> row64(f64 ? w : 0);
+  std::vector<unsigned short> row_u16(u16 ? w : 0);
+  std::vector<unsigned int> row_u32(u32 ? w : 0);
+  for (std::int64_t j = 1; j <= s.height; ++j) {
+    const In* src = pixels + static_cast<std::size_t>(s.height - j) * w;
+    LONGLONG first[3] = {1, j, static_cast<LONGLONG>(k + 1)};
+    if (u16 || u32) {
+      // Unsigned integers: BITPIX 16 or 32 with BZERO 2^15 or 2^31 (FITS 4.0 section 5.2.5).
+      const double top = u16 ? 65535.0 : 4294967295.0;
+      for (std::size_t i = 0; i < w; ++i) {
+        const double v = static_cast<double>(src[i]);
+        if (!(v >= 0.0 && v <= top && v == std::floor(v)))
+          throw ImageIoError("FITS " + path + ": pixel value " + std::to_string(v) + " is not an unsigned " +
+                             (u16 ? "16" : "32") + "-bit integer");
+        if (u16) row_u16[i] = static_cast<unsigned short>(v);
+        else row_u32[i] = static_cast<unsigned int>(v);
+      }
+      if (u16) fits_write_pixll(s.f, TUSHORT, first, static_cast<LONGLONG>(w), row_u16.data(), &st);
+      else fits_write_pixll(s.f, TUINT, first, static_cast<LONGLONG>(w), row_u32.data(), &st);
+    } else if (f64) {
+      for (std::size_t i = 0; i < w; ++i) row64[i] = static_cast<double>(src[i]);
+      fits_write_pixll(s.f, TDOUBLE, first, static_cast<LONGLONG>(w), row64.data(), &st);
+    } else {
+      for (std::size_t i = 0; i < w; ++i) row32[i] = static_cast<float>(src[i]);
+      fits_write_pixll(s.f, TFLOAT, first, static_cast<LONGLONG>(w), row32.data(), &st);
+    }
+    if (st) throw_fits(st, "FITS " + path + ": write pixels");
+  }
+  s.written[static_cast<std::size_t>(k)] = true;
+  s.failed = false;
+}
+
+void FitsCubeWriter::write_plane(std::int64_t k, const double* pixels) { write_plane_of(k, pixels); }
+void FitsCubeWriter::write_plane(std::int64_t k, const float* pixels) { write_plane_of(k, pixels); }
+void FitsCubeWriter::write_plane(std::int64_t k, const std::uint32_t* pixels) { write_plane_of(k, pixels); }
+
+void FitsCubeWriter::finish(const FitsTable& table) {
+  if (state_ == nullptr) throw ImageIoError("FITS: finish before open");
+  // Whatever happens below, the writer is closed afterwards (the temporary
+  // removed unless the file is in place).
+  const std::unique_ptr<State> s = std::move(state_);
+  const std::string& path = s->path;
+  if (s->failed) throw ImageIoError("FITS " + path + ": an earlier error left the file incomplete");
+  for (std::size_t k = 0; k < s->written.size(); ++k)
+    if (!s->written[k])
+      throw ImageIoError("FITS " + path + ": plane " + std::to_string(k) + " of " +
+                         std::to_string(s->written.size()) + " was not written");
+  int st = 0;
+  if (s->options.checksum) write_checksum_values(s->f, path, st);
+  if (!table.extname.empty()) write_table(s->f, path, table, s->written.size(), s->options, st);
+  fits_close_file(s->f, &st);
+  s->f = nullptr;
+  if (st) throw_fits(st, "FITS " + path + ": close");
+  s->file.commit();
+}
+
+namespace {
+template <typename In>
+void write_image(const std::string& path, const In* pixels, std::int64_t width, std::int64_t height,
+                 const FitsHeader& header, const FitsWriteOptions& options) {
+  if (pixels == nullptr) throw ImageIoError("FITS " + path + ": pixel buffer is null");
+  FitsCubeWriter w;
+  w.open_image(path, width, height, header, options);
+  w.write_plane(0, pixels);
+  w.finish();
+}
+}  // namespace
+
 void write_fits_image(const std::string& path, const float* pixels, std::int64_t width, std::int64_t height,
                       const FitsHeader& header, const FitsWriteOptions& options) {
-  write_image(path, std::vector<const float*>{pixels}, width, height, header, options, false);
+  write_image(path, pixels, width, height, header, options);
 }
 
 void write_fits_image(const std::string& path, const double* pixels, std::int64_t width, std::int64_t height,
                       const FitsHeader& header, const FitsWriteOptions& options) {
-  write_image(path, std::vector<const double*>{pixels}, width, height, header, options, false);
+  write_image(path, pixels, width, height, header, options);
 }
 
 void write_fits_image(const std::string& path, const std::uint32_t* pixels, std::int64_t width, std::int64_t height,
                       const FitsHeader& header, const FitsWriteOptions& options) {
-  write_image(path, std::vector<const std::uint32_t*>{pixels}, width, height, header, options, false);
+  write_image(path, pixels, width, height, header, options);
 }
 
 void write_fits_cube(const std::string& path, const std::vector<const double*>& planes, std::int64_t width,
                      std::int64_t height, const FitsHeader& header, const FitsTable& table,
                      const FitsWriteOptions& options) {
-  write_image(path, planes, width, height, header, options, true, table);
+  if (planes.empty()) throw ImageIoError("FITS " + path + ": no image planes");
+  for (const double* p : planes)
+    if (p == nullptr) throw ImageIoError("FITS " + path + ": pixel buffer is null");
+  FitsCubeWriter w;
+  w.open(path, width, height, static_cast<std::int64_t>(planes.size()), header, options);
+  for (std::size_t k = 0; k < planes.size(); ++k) w.write_plane(static_cast<std::int64_t>(k), planes[k]);
+  w.finish(table);
 }
 
 }  // namespace eoir::imageio

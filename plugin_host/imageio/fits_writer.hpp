@@ -1,11 +1,14 @@
 // FITS image writer (host side, no engine dependency), built on cfitsio.
 //
 // Writes one 2-D primary image, BITPIX -32 (IEEE float32, the default) or
-// -64 (float64), with caller-supplied header cards, and CHECKSUM/DATASUM.
-// The file is assembled in memory and written atomically (temporary file
-// beside the target, fsync, rename), so readers never see a partial file and
-// a failed write leaves an existing target untouched. The path is used as a
-// plain file name (cfitsio's extended file-name syntax does not apply).
+// -64 (float64), with caller-supplied header cards, and CHECKSUM/DATASUM,
+// or a data cube of such images (FitsCubeWriter, one plane at a time).
+// Pixels stream to a temporary file beside the target, a row at a time
+// through cfitsio's buffers (memory does not grow with the image), and the
+// finished file replaces the target atomically (AtomicReplacement: fsync,
+// rename), so readers never see a partial file and a failed write leaves an
+// existing target untouched and no temporary. The path is used as a plain
+// file name (cfitsio's extended file-name syntax does not apply).
 //
 // Pixel order. The caller passes a row-major buffer, pixels[row * width +
 // col], with row 0 = the TOP row of the image as displayed and col 0 = the
@@ -17,6 +20,7 @@
 // the image centre is ((width + 1) / 2, (height + 1) / 2).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -121,5 +125,43 @@ struct FitsTable {
 void write_fits_cube(const std::string& path, const std::vector<const double*>& planes, std::int64_t width,
                      std::int64_t height, const FitsHeader& header, const FitsTable& table = {},
                      const FitsWriteOptions& options = {});
+
+// The streaming writer behind write_fits_image and write_fits_cube (one
+// code path, the same bytes): open() creates the temporary file with the
+// header and NAXIS3 = planes (open_image: a 2-D image, its one plane k = 0);
+// write_plane(k, pixels) writes plane k (0-based, any order, width * height
+// values, row 0 = top); finish(table) requires every plane, appends the
+// table extension (one row per plane), writes the checksums and puts the
+// file in place. Destroyed without a successful finish() (an exception, a
+// failed run), the writer closes and removes the temporary file and leaves
+// the target as it was. Memory: cfitsio's buffers and one row, whatever the
+// cube's size. Every error throws ImageIoError naming the path.
+class FitsCubeWriter {
+ public:
+  FitsCubeWriter();
+  ~FitsCubeWriter();
+  FitsCubeWriter(FitsCubeWriter&&) noexcept;
+  FitsCubeWriter& operator=(FitsCubeWriter&&) noexcept;
+  FitsCubeWriter(const FitsCubeWriter&) = delete;
+  FitsCubeWriter& operator=(const FitsCubeWriter&) = delete;
+
+  void open(const std::string& path, std::int64_t width, std::int64_t height, std::int64_t planes,
+            const FitsHeader& header, const FitsWriteOptions& options = {});
+  void open_image(const std::string& path, std::int64_t width, std::int64_t height, const FitsHeader& header,
+                  const FitsWriteOptions& options = {});
+  void write_plane(std::int64_t k, const double* pixels);
+  void write_plane(std::int64_t k, const float* pixels);
+  void write_plane(std::int64_t k, const std::uint32_t* pixels);
+  void finish(const FitsTable& table = {});
+  bool is_open() const { return state_ != nullptr; }
+
+ private:
+  struct State;
+  template <typename In>
+  void write_plane_of(std::int64_t k, const In* pixels);
+  void start(const std::string& path, std::int64_t width, std::int64_t height, std::int64_t planes, bool cube,
+             const FitsHeader& header, const FitsWriteOptions& options);
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace eoir::imageio

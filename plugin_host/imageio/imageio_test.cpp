@@ -19,6 +19,7 @@
 #include <tuple>
 #include <vector>
 
+#include "fits_test_cases.hpp"
 #include "fits_writer.hpp"
 #include "png_writer.hpp"
 
@@ -84,6 +85,29 @@ struct FitsReader {
 
 // 5 x 3 test image, row 0 = top: value = 10 * row + col (+ 0.25 to test
 // fractions), one NaN.
+std::string slurp(const std::string& p) {
+  std::ifstream f(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+// FNV-1a, 64 bits, of a file's bytes.
+std::uint64_t fnv1a64(const std::string& bytes) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (const char c : bytes) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 0x100000001b3ULL;
+  }
+  return h;
+}
+
+// Names in the directory that are not `keep` (temporaries left behind).
+std::vector<std::string> others(const std::string& dir, const std::string& keep = "") {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename() != keep) out.push_back(e.path().filename().string());
+  return out;
+}
+
 std::vector<double> test_image(int w, int h) {
   std::vector<double> v(static_cast<std::size_t>(w * h));
   for (int r = 0; r < h; ++r)
@@ -406,4 +430,173 @@ TEST(PngWriter, ScaleToGray8) {
   const auto flat = scale_to_gray8(v, 7, 0.5, 0.5);
   EXPECT_EQ(flat[1], 0);
   EXPECT_EQ(flat[2], 255);
+}
+
+// Issue 23 item 2: the streamed writer gives the bytes the previous writer
+// (the whole file assembled in a cfitsio memory file, then written) gave for
+// the same calls. Expected: size and FNV-1a hash of each file of
+// fits_test_cases.hpp as written by that writer (commit b983174, cfitsio
+// 4.2.0); the cases cover float32/float64/uint16/uint32, long strings,
+// HIERARCH, no checksums, CHECKSUM cards on both sides of a header block's
+// end (the old writer moved the data to make room), cubes with the TIMES
+// table and a cube larger than cfitsio's buffers.
+//
+// One exception, a bug of the previous writer fixed: for most header sizes
+// its cube files held a spurious first TIMES extension (the table's header,
+// rows of zeros, failing its checksum) before the real one, e.g. cube_4
+// (20160 bytes: blocks 3-4 spurious); readers that take the first TIMES
+// (astropy's hdul["TIMES"]) read zeros. Its expected value is the previous
+// writer's file without those two blocks. cube_0 and cube_large are cases
+// the previous writer wrote right.
+TEST(FitsStreamWriter, BytesEqualThePreviousInMemoryWriter) {
+  struct Expected {
+    const char* name;
+    std::uintmax_t size;
+    std::uint64_t fnv;
+  };
+  static const Expected kPrevious[] = {
+      {"cube_0.fits", 14400, 0x096ee239dea7f6deULL},
+      {"cube_4.fits", 14400, 0x5f86547c9924c4c0ULL},  // blocks 0-2 and 5-6 of 0x76a77317434aa8dd
+      {"cube_large.fits", 607680, 0xa7ea8722a1da8e38ULL},
+      {"image_cards_10.fits", 8640, 0xf4c0cf5f27eea694ULL},
+      {"image_cards_11.fits", 8640, 0x102ca19ebd6bb6dcULL},
+      {"image_cards_12.fits", 8640, 0x96a7782e11e1df98ULL},
+      {"image_cards_7.fits", 5760, 0xe8878d460c908fb7ULL},
+      {"image_cards_8.fits", 5760, 0x90b889d45e80fe67ULL},
+      {"image_cards_9.fits", 5760, 0x9299b9089033d3b2ULL},
+      {"image_f32.fits", 8640, 0x20aa20ed21975cdbULL},
+      {"image_f32_from_float.fits", 5760, 0x624b81ac7f57ec3aULL},
+      {"image_f64.fits", 5760, 0x4bf3d57239718105ULL},
+      {"image_no_checksum.fits", 5760, 0x06008cc498f1c969ULL},
+      {"image_u16.fits", 5760, 0xbe49ed41459c6c10ULL},
+      {"image_u32.fits", 5760, 0x7366e916e4381b61ULL},
+  };
+  TempDir dir;
+  const auto cases = eoir::imageio::test_cases::cases();
+  ASSERT_EQ(cases.size(), std::size(kPrevious));
+  for (const auto& c : cases) {
+    const std::string path = dir.file(c.first);
+    c.second(path);
+    const Expected* e = nullptr;
+    for (const auto& x : kPrevious)
+      if (c.first == x.name) e = &x;
+    ASSERT_NE(e, nullptr) << c.first;
+    const std::string bytes = slurp(path);
+    EXPECT_EQ(bytes.size(), e->size) << c.first;
+    EXPECT_EQ(fnv1a64(bytes), e->fnv) << c.first;
+    FitsReader rd(path);
+    int data_ok = 0, hdu_ok = 0;
+    fits_verify_chksum(rd.f, &data_ok, &hdu_ok, &rd.st);
+    EXPECT_EQ(rd.st, 0) << c.first;
+    if (c.first != "image_no_checksum.fits") {
+      EXPECT_TRUE(data_ok == 1 && hdu_ok == 1) << c.first;
+    }
+    int hdus = 0;
+    fits_get_num_hdus(rd.f, &hdus, &rd.st);
+    EXPECT_EQ(hdus, c.first == "cube_0.fits" || c.first == "cube_4.fits" ? 2 : 1) << c.first;
+  }
+  EXPECT_EQ(others(dir.file("")).size(), cases.size());  // no temporaries
+}
+
+// A cube written plane by plane, in any order, is write_fits_cube's file.
+TEST(FitsStreamWriter, PlaneByPlaneEqualsWriteFitsCube) {
+  TempDir dir;
+  const std::int64_t w = 37, h = 23;  // rows cross cfitsio's buffer boundaries
+  const int n = 4;
+  std::vector<std::vector<double>> planes;
+  std::vector<const double*> ptrs;
+  for (int k = 0; k < n; ++k) planes.push_back(eoir::imageio::test_cases::pixels(w, h, k));
+  for (const auto& p : planes) ptrs.push_back(p.data());
+  FitsHeader header = eoir::imageio::test_cases::header_with(3);
+  const FitsTable table = eoir::imageio::test_cases::times_table(n);
+  write_fits_cube(dir.file("whole.fits"), ptrs, w, h, header, table);
+  FitsCubeWriter writer;
+  writer.open(dir.file("streamed.fits"), w, h, n, header);
+  EXPECT_TRUE(writer.is_open());
+  for (const int k : {2, 0, 3, 1}) {
+    writer.write_plane(k, planes[static_cast<std::size_t>(k)].data());
+    EXPECT_FALSE(fs::exists(dir.file("streamed.fits")));  // readers never see a partial file
+  }
+  writer.write_plane(1, planes[1].data());  // rewriting a plane is allowed
+  writer.finish(table);
+  EXPECT_FALSE(writer.is_open());
+  EXPECT_EQ(slurp(dir.file("streamed.fits")), slurp(dir.file("whole.fits")));
+  // The pixels read back: plane k, FITS row 1 = the caller's bottom row.
+  FitsReader rd(dir.file("streamed.fits"));
+  for (int k = 0; k < n; ++k) {
+    std::vector<float> v(static_cast<std::size_t>(w));
+    float nul = 0;
+    int any = 0;
+    fits_read_img(rd.f, TFLOAT, 1 + static_cast<LONGLONG>(k) * w * h, w, &nul, v.data(), &any, &rd.st);
+    for (std::int64_t i = 0; i < w; ++i)
+      EXPECT_EQ(v[static_cast<std::size_t>(i)],
+                static_cast<float>(planes[static_cast<std::size_t>(k)][static_cast<std::size_t>((h - 1) * w + i)]));
+  }
+  EXPECT_EQ(rd.st, 0);
+}
+
+// A writer destroyed before finish() (an exception, a failed run) leaves no
+// file and no temporary, and an existing target as it was; so do a failed
+// finish() and a bad pixel midway through a plane.
+TEST(FitsStreamWriter, FailureMidwayLeavesNoFile) {
+  TempDir dir;
+  const std::int64_t w = 8, h = 5;
+  const std::vector<double> p = eoir::imageio::test_cases::pixels(w, h, 0);
+  const std::string fresh = dir.file("fresh.fits");
+  {
+    FitsCubeWriter writer;
+    writer.open(fresh, w, h, 3, FitsHeader{});
+    writer.write_plane(0, p.data());
+    const auto tmp = others(dir.file(""));
+    ASSERT_EQ(tmp.size(), 1u);
+    EXPECT_EQ(tmp[0].rfind("fresh.fits.tmp." + std::to_string(::getpid()) + ".", 0), 0u) << tmp[0];
+  }
+  EXPECT_TRUE(others(dir.file("")).empty());
+
+  const std::string old = dir.file("old.fits");
+  write_fits_image(old, p.data(), w, h, FitsHeader{});
+  const std::string before = slurp(old);
+  {
+    FitsCubeWriter writer;
+    writer.open(old, w, h, 2, FitsHeader{});
+    writer.write_plane(1, p.data());
+    try {
+      writer.finish();  // plane 0 missing
+      ADD_FAILURE() << "finish() with a missing plane succeeded";
+    } catch (const ImageIoError& e) {
+      EXPECT_NE(std::string(e.what()).find("plane 0 of 2 was not written"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(writer.is_open());
+  }
+  EXPECT_EQ(slurp(old), before);
+  EXPECT_EQ(others(dir.file(""), "old.fits").size(), 0u);
+
+  // A pixel an unsigned 16-bit image cannot hold, in the last row written.
+  std::vector<std::uint32_t> adu(static_cast<std::size_t>(w * h), 7);
+  adu[0] = 70000;
+  FitsWriteOptions o;
+  o.pixel_type = FitsPixelType::UInt16;
+  EXPECT_THROW(write_fits_image(old, adu.data(), w, h, FitsHeader{}, o), ImageIoError);
+  EXPECT_EQ(slurp(old), before);
+  EXPECT_EQ(others(dir.file(""), "old.fits").size(), 0u);
+  {
+    FitsCubeWriter writer;
+    writer.open(old, w, h, 2, FitsHeader{}, o);
+    EXPECT_THROW(writer.write_plane(0, adu.data()), ImageIoError);
+    EXPECT_THROW(writer.write_plane(1, p.data()), ImageIoError);  // the file is incomplete
+    EXPECT_THROW(writer.finish(), ImageIoError);
+  }
+  EXPECT_EQ(slurp(old), before);
+  EXPECT_EQ(others(dir.file(""), "old.fits").size(), 0u);
+
+  // Misuse names the problem.
+  FitsCubeWriter writer;
+  EXPECT_THROW(writer.write_plane(0, p.data()), ImageIoError);
+  EXPECT_THROW(writer.finish(), ImageIoError);
+  EXPECT_THROW(writer.open(fresh, w, h, 0, FitsHeader{}), ImageIoError);
+  writer.open(fresh, w, h, 2, FitsHeader{});
+  EXPECT_THROW(writer.open(fresh, w, h, 2, FitsHeader{}), ImageIoError);
+  EXPECT_THROW(writer.write_plane(2, p.data()), ImageIoError);
+  EXPECT_THROW(writer.write_plane(-1, p.data()), ImageIoError);
+  EXPECT_THROW(writer.write_plane(0, static_cast<const double*>(nullptr)), ImageIoError);
 }

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <set>
 #include <array>
 #include <system_error>
 
@@ -109,6 +110,17 @@ class RunContext {
                   sensor + ".fidelity");
     text.resize(length);
     return nlohmann::ordered_json::parse(text);
+  }
+
+  // Whether the last frame kept its scene images (a frame made in strips
+  // does not: its scene display is EOIR_ERR_NO_STATE).
+  bool has_scene_images(const std::string& sensor, const std::string& where) const {
+    eoir_image_info in{};
+    in.struct_size = sizeof in;
+    const eoir_status st = engine_.api().image_info_get(engine_.handle(), sensor.c_str(), EOIR_IMAGE_SCENE_DISPLAY, &in);
+    if (st == EOIR_ERR_NO_STATE) return false;
+    engine_.check(st, where + ": scene display");
+    return true;
   }
 
   eoir_image_info info(const std::string& sensor, int32_t kind, const std::string& where) const {
@@ -488,7 +500,7 @@ ojson frame_warnings(const ojson& truth, const std::vector<double>& radiance, co
                      const eoir_image_info& in) {
   ojson out = ojson::array();
   const Stats r = stats_of(radiance);
-  if (truth.empty() && r.non_finite == 0 && r.max - r.min <= 1e-9 * std::fabs(r.max)) {
+  if (!radiance.empty() && truth.empty() && r.non_finite == 0 && r.max - r.min <= 1e-9 * std::fabs(r.max)) {
     char text[256];
     std::snprintf(text, sizeof text,
                   "nothing in the field: no object or star, and a uniform scene (radiance %.6g W cm-2 sr-1)", r.max);
@@ -555,6 +567,7 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
                    "--stretch " + opt.stretch + " (sensor " + s->name + ")");
 
   std::map<std::string, CubeStream> cubes;
+  std::set<std::string> strips_noted;  // sensors whose frames are made in strips, said once
   const double cube_step_s = opt.times.size() > 1 ? opt.times[1] - opt.times[0] : 1.0;
 
   for (std::size_t i = 0; i < opt.times.size(); ++i) {
@@ -574,12 +587,26 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
       const eoir_image_info in_rad = ctx.info(s->name, EOIR_IMAGE_SCENE_RADIANCE, where + ": scene radiance");
       const eoir_image_info in_el = ctx.info(s->name, EOIR_IMAGE_SENSOR_ELECTRONS, where + ": sensor electrons");
       const eoir_image_info in_mean = ctx.info(s->name, EOIR_IMAGE_SENSOR_MEAN, where + ": sensor mean");
-      const eoir_image_info in_sd = ctx.info(s->name, EOIR_IMAGE_SCENE_DISPLAY, where + ": scene display");
       const eoir_image_info in_pd = ctx.info(s->name, EOIR_IMAGE_SENSOR_DISPLAY, where + ": sensor display");
-      const std::vector<double> rad = ctx.values(s->name, EOIR_IMAGE_SCENE_RADIANCE, in_rad, where + ": scene radiance");
+      // A frame made in strips (the sensor's scene_memory_max_mib) keeps no
+      // scene images: its scene radiance FITS and PNG are not written.
+      const bool scene_images = ctx.has_scene_images(s->name, where);
+      if (!scene_images && strips_noted.insert(s->name).second && !opt.quiet)
+        std::fprintf(stderr,
+                     "%seoir run: note: %s's frames are made in strips (their buffers exceed its "
+                     "scene_memory_max_mib): no scene radiance FITS and no scene PNG\n",
+                     tty ? "\r\033[K" : "", s->name.c_str());
+      const std::vector<double> rad =
+          scene_images ? ctx.values(s->name, EOIR_IMAGE_SCENE_RADIANCE, in_rad, where + ": scene radiance")
+                       : std::vector<double>{};
       const std::vector<double> el = ctx.values(s->name, EOIR_IMAGE_SENSOR_ELECTRONS, in_el, where + ": electrons");
       const std::vector<double> mean = ctx.values(s->name, EOIR_IMAGE_SENSOR_MEAN, in_mean, where + ": mean");
-      const std::vector<std::uint8_t> sd = ctx.bytes(s->name, EOIR_IMAGE_SCENE_DISPLAY, in_sd, where + ": display");
+      eoir_image_info in_sd{};
+      std::vector<std::uint8_t> sd;
+      if (scene_images) {
+        in_sd = ctx.info(s->name, EOIR_IMAGE_SCENE_DISPLAY, where + ": scene display");
+        sd = ctx.bytes(s->name, EOIR_IMAGE_SCENE_DISPLAY, in_sd, where + ": display");
+      }
       const std::vector<std::uint8_t> pd = ctx.bytes(s->name, EOIR_IMAGE_SENSOR_DISPLAY, in_pd, where + ": display");
 
       const bool with_adu = ctx.has_adu(in_el);
@@ -589,8 +616,9 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
         std::fprintf(stderr, "%seoir run: warning: %s frame %zu (%s): %s\n", tty ? "\r\033[K" : "", s->name.c_str(), i,
                      ctx.iso_of(in_el).c_str(), w.get<std::string>().c_str());
       try {
-        ctx.write_fits((dir / f_rad).string(), rad, in_rad,
-                       ctx.header(*s, i, in_rad, "scene_radiance", kBunitRadiance));
+        if (scene_images)
+          ctx.write_fits((dir / f_rad).string(), rad, in_rad,
+                         ctx.header(*s, i, in_rad, "scene_radiance", kBunitRadiance));
         ctx.write_fits((dir / f_el).string(), el, in_el,
                        ctx.header(*s, i, in_el, "sensor_electrons", kBunitElectrons));
         ctx.write_fits((dir / f_mean).string(), mean, in_mean,
@@ -600,7 +628,7 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
           ctx.write_fits((dir / f_adu).string(), ctx.adu(s->name, in_adu, where + ": ADU"), in_adu,
                          ctx.header(*s, i, in_adu, "sensor_adu", kBunitAdu));
         }
-        io::write_png_gray8((dir / f_scene).string(), sd.data(), in_sd.width, in_sd.height);
+        if (scene_images) io::write_png_gray8((dir / f_scene).string(), sd.data(), in_sd.width, in_sd.height);
         io::write_png_gray8((dir / f_sensor).string(), pd.data(), in_pd.width, in_pd.height);
         const std::string truth_text = truth.dump(2) + "\n";
         io::write_file_atomically((dir / f_truth).string(), truth_text.data(), truth_text.size());
@@ -660,6 +688,10 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
                      {"scene_png", f_scene}, {"sensor_png", f_sensor}, {"truth", f_truth},
                      {"regions", f_region}};
       if (with_adu) fr["files"]["adu"] = f_adu;
+      if (!scene_images) {
+        fr["files"].erase("radiance");
+        fr["files"].erase("scene_png");
+      }
       fr["scene_size"] = {{"width", in_rad.width}, {"height", in_rad.height}};
       fr["sensor_size"] = {{"width", in_el.width}, {"height", in_el.height}};
       fr["boresight_ra_deg"] = in_el.boresight_ra_deg;
@@ -668,7 +700,7 @@ std::size_t write_frames(Engine& engine, const Scenario& sc, const RunOptions& o
       fr["up_dec_deg"] = in_el.up_dec_deg;
       fr["electrons"] = stats_json(stats_of(el));
       fr["mean_electrons"] = stats_json(stats_of(mean));
-      fr["radiance"] = stats_json(stats_of(rad));
+      if (scene_images) fr["radiance"] = stats_json(stats_of(rad));
       fr["saturated_fraction"] = saturated_fraction(el, in_el);
       fr["warnings"] = warnings;
       frames.push_back(std::move(fr));

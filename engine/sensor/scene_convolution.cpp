@@ -438,8 +438,8 @@ std::vector<double> pixel_radiance_in_strips(const SensorModel& model, const geo
   const int pixel_half = pixel_cols / 2 + 1;
   const fftw_plan backward = fftw::row_c2r(pixel_cols);
   const std::size_t spectrum_stride = static_cast<std::size_t>(groups) * kGroup;
-  const int strip_pixel_rows =
-      static_cast<int>(std::clamp<std::uint64_t>(kStripBytes / (spectrum_stride * cell), 4, static_cast<std::uint64_t>(ny)));
+  const int strip_pixel_rows = static_cast<int>(
+      std::min<std::uint64_t>(static_cast<std::uint64_t>(ny), std::max<std::uint64_t>(4, kStripBytes / (spectrum_stride * cell))));
   fftw::ComplexBuffer strip = fftw::complex_buffer(static_cast<std::size_t>(strip_pixel_rows) * spectrum_stride);
   fftw::ComplexBuffer gather = fftw::complex_buffer(static_cast<std::size_t>(strip_pixel_rows) * kGroup);
   std::vector<fftw::ComplexBuffer> row_buffers(parallel_range_count(ny, threads, pixel_row_chunk));

@@ -24,7 +24,7 @@ python="${PYTHON:-/usr/bin/python3}"
 for exe in tests/bench/bench_static_metrics tests/bench/bench_frame tests/bench/bench_state \
            tests/bench/bench_band tests/bench/bench_targets tests/bench/bench_point_sources tests/bench/bench_detector \
            tests/geometry/bench_ray_caster tests/bench/bench_eclipse tests/bench/bench_brdf \
-           tests/bench/bench_many_objects; do
+           tests/bench/bench_many_objects tests/bench/bench_frame_size; do
   [ -x "$build/$exe" ] || { echo "missing $build/$exe: build first" >&2; exit 1; }
 done
 mkdir -p "$results"
@@ -72,6 +72,12 @@ run bench_frame_mesh tests/bench/bench_frame --benchmark_filter='^BM_FrameMeshTa
 run bench_eclipse tests/bench/bench_eclipse --benchmark_min_time=0.1
 run bench_brdf tests/bench/bench_brdf --benchmark_min_time=0.1
 run bench_many_objects tests/bench/bench_many_objects
+# Frame size: each size in its own process (its peak RSS alone), then the
+# 1024^2 and 4096^2 frames in one process for the time-per-pixel ratio.
+for px in 256 512 1024 2048 4096 8192; do
+  run "bench_frame_size_${px}" tests/bench/bench_frame_size --benchmark_filter="^BM_FrameSize/${px}/0/"
+done
+run bench_frame_size_ratio tests/bench/bench_frame_size --benchmark_filter='^BM_FrameSize/(1024/[01]|4096/0)/'
 
 echo "uptime_after=$(uptime)" >> "$results/machine.txt"
 "$python" "$here/summarise.py" "$results"

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <utility>
 #include <string>
 
 #include "../bench/bench_scene.hpp"
@@ -80,6 +81,20 @@ INSTANTIATE_TEST_SUITE_P(Optics, FrameStrips,
                          ::testing::Values(Optics{"diffraction", 0, 0, 0}, Optics{"jitter", 0.05, 0, 0},
                                            Optics{"defocus", 0, 0.05, 0}, Optics{"wavefront", 0.02, 0, 0.07}),
                          [](const auto& optics) { return std::string(optics.param.name); });
+
+// Frames of a few pixels and oblong ones, in strips as whole.
+TEST(FrameStrips, TinyAndOblongFramesEqualTheWholeFrame) {
+  for (const auto& size : {std::pair<std::int64_t, std::int64_t>{1, 1}, {3, 2}, {40, 7}}) {
+    auto e = geo_scene(8);
+    e->set_property("Sensor", "horizontal_pixels", Value(size.first));
+    e->set_property("Sensor", "vertical_pixels", Value(size.second));
+    const std::vector<double> whole = e->render("Sensor").sensor.mean_electrons;
+    e->set_property("Sensor", "scene_memory_max_mib", Value(0.0));
+    const eoir::Frame& strips = e->render("Sensor");
+    ASSERT_TRUE(strips.scene_in_strips);
+    EXPECT_LT(max_relative_difference(whole, strips.sensor.mean_electrons), 1e-9) << size.first << " x " << size.second;
+  }
+}
 
 // Rows made in strips of any height equal the whole grid's, bit for bit
 // (silhouette edges, small objects and the sky's coarse grid read rows

@@ -226,7 +226,12 @@ double DiskPhotometry::geometric_albedo_per_srf() const { return law_ == DiskPha
 double DiskPhotometry::phase(double cos_psi) const {
   if (law_ == DiskPhaseLaw::lambertian_sphere) return lambertian_sphere_phase(cos_psi);
   const double psi = std::acos(std::clamp(cos_psi, -1.0, 1.0));
-  if (law_ == DiskPhaseLaw::moon) return lommel_seeliger_sphere_phase(psi) * lunar_surface_phase(psi);
+  if (law_ == DiskPhaseLaw::moon) {
+    // Phi_LS(psi) f(psi) = 10^(-0.4 Delta V(psi)) up to Allen's limit (f is
+    // that over Phi_LS): the same value to rounding, without the two Phi_LS.
+    if (psi >= 1e-9 && psi <= kLunarLawLimitDeg * kDeg) return std::pow(10.0, -0.4 * lunar_phase_magnitude(psi / kDeg));
+    return lommel_seeliger_sphere_phase(psi) * lunar_surface_phase(psi);
+  }
   const double limit_deg = mallama_hilton_upper_limit_deg(law_);
   const double v0 = mallama_hilton_v_1_alpha(law_, 0.0);
   const double a = std::min(psi / kDeg, limit_deg);

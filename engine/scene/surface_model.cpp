@@ -126,6 +126,7 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
   // The cloud top: its own temperature (a blend lies between its layers).
   if (const SurfaceSpectrum* cloud = geography_.cloud_spectrum; cloud && geography_.clouds) {
     const double L = cloud->emission_radiance(geography_.cloud_temperature_K);
+    cloud_emission_ = L;
     emission_bound_ = std::max(emission_bound_, L);
     emission_floor_ = std::min(emission_floor_, L);
     srf_bound_ = std::max(srf_bound_, cloud->max_srf());
@@ -204,7 +205,7 @@ double SurfaceModel::emission_radiance(const SurfacePoint& point) const {
     const double T = temperature_K(point);
     L = (1.0 - f) * ((1.0 - s) * view_->gray_body_radiance(T, 0.0) + s * point.spectrum->emission_radiance(T));
   }
-  if (f > 0.0) L += f * geography_.cloud_spectrum->emission_radiance(geography_.cloud_temperature_K);
+  if (f > 0.0) L += f * cloud_emission_;
   return L;
 }
 

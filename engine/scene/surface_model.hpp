@@ -152,6 +152,7 @@ class SurfaceModel {
   std::vector<double> part_radiance_;
   double table_T0_ = 0, table_dT_ = 0;
   double emission_bound_ = 0, emission_floor_ = 0, reflection_bound_per_sr_ = 0, srf_bound_ = 0;
+  double cloud_emission_ = 0;  // the cloud top's band radiance at its (one) temperature
   std::vector<std::vector<double>> table_;  // per part, L at T0 + k dT
 };
 

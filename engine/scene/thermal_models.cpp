@@ -31,7 +31,12 @@ inline void require_range(double value, double lo, double hi, std::string_view f
 
 // x wrapped into [0, period).
 double wrap(double x, double period) {
-  double r = std::fmod(x, period);
+  // (fmod is exact: within one period either side it is x or x - period,
+  // which are exact there too, Sterbenz)
+  double r = x >= 0.0 && x < period           ? x
+             : x >= period && x < 2.0 * period ? x - period
+             : x < 0.0 && x > -period          ? x
+                                               : std::fmod(x, period);
   if (r < 0.0) r += period;
   return r >= period ? 0.0 : r;
 }

@@ -18,6 +18,13 @@ namespace eoir::universe {
 namespace {
 using nlohmann::json;
 
+// floor(x) as an index, for |x| within the int64 range (std::floor is a
+// library call per lookup on the baseline x86-64 target).
+std::int64_t floor_index(double x) {
+  const auto i = static_cast<std::int64_t>(x);  // toward zero
+  return static_cast<double>(i) > x ? i - 1 : i;
+}
+
 [[noreturn]] void corrupt(const std::string& where, const std::string& what) {
   throw Error(Status::corrupt_file, where + ": " + what);
 }
@@ -80,9 +87,8 @@ std::unique_ptr<RasterLevel> RasterLevel::load(const std::string& sidecar) {
   return r;
 }
 
-const std::uint8_t* RasterLevel::row(std::int64_t i) const {
+const std::uint8_t* RasterLevel::decode_row(std::int64_t i) const {
   std::atomic<const std::uint8_t*>& slot = rows_[static_cast<std::size_t>(i)];
-  if (const std::uint8_t* cached = slot.load(std::memory_order_acquire)) return cached;
   const auto width = static_cast<std::size_t>(width_);
   std::unique_ptr<std::uint8_t[]> decoded(new std::uint8_t[width]());
   std::ifstream f(data_path_, std::ios::binary);
@@ -109,12 +115,12 @@ const std::uint8_t* RasterLevel::row(std::int64_t i) const {
 std::uint8_t RasterLevel::at(double latitude_deg, double longitude_deg) const {
   // Integer cells per degree where the map has them (exact registration).
   const double per_degree = cells_per_degree_ > 0 ? static_cast<double>(cells_per_degree_) : 1.0 / cell_deg_;
-  auto i = static_cast<std::int64_t>(std::floor((lat_north_deg_ - latitude_deg) * per_degree));
+  auto i = floor_index((lat_north_deg_ - latitude_deg) * per_degree);
   i = std::clamp<std::int64_t>(i, 0, height_ - 1);
   double lon = longitude_deg - lon_west_deg_;  // wrapped into [0, 360): fmod only off [-360, 360)
   if (lon < -360.0 || lon >= 360.0) lon = std::fmod(lon, 360.0);
   if (lon < 0) lon += 360.0;
-  auto j = static_cast<std::int64_t>(std::floor(lon * per_degree));
+  auto j = floor_index(lon * per_degree);
   j = std::clamp<std::int64_t>(j, 0, width_ - 1);
   return row(i)[j];
 }
@@ -129,7 +135,7 @@ double RasterLevel::interpolated(double latitude_deg, double longitude_deg) cons
   if (lon < 0) lon += 360.0;
   const double x = lon * per_degree - 0.5;
   const auto i0 = std::min(static_cast<std::int64_t>(y), height_ - 1), i1 = std::min(i0 + 1, height_ - 1);
-  const auto j = static_cast<std::int64_t>(std::floor(x));
+  const auto j = floor_index(x);
   const bool global = std::fabs(static_cast<double>(width_) / per_degree - 360.0) < 1e-9;
   const auto column = [&](std::int64_t k) {
     if (global) return ((k % width_) + width_) % width_;

@@ -32,7 +32,12 @@ class RasterLevel {
 
  private:
   RasterLevel() = default;
-  const std::uint8_t* row(std::int64_t i) const;  // width_ cells
+  // width_ cells: the decoded row, decoding it on first use.
+  const std::uint8_t* row(std::int64_t i) const {
+    if (const std::uint8_t* cached = rows_[static_cast<std::size_t>(i)].load(std::memory_order_acquire)) return cached;
+    return decode_row(i);
+  }
+  const std::uint8_t* decode_row(std::int64_t i) const;
   std::string data_path_;
   bool rle_ = false;
   std::int64_t width_ = 0, height_ = 0, cells_per_degree_ = 0;

@@ -15,7 +15,8 @@
 // images as a point source is one in every sub-step (its streak carries its
 // light), and any other that a sub-step's world would image as a point
 // source is imaged there as small_extended (its window drawn to its point
-// irradiance below a sample), so no light is counted twice or lost.
+// irradiance below a sample), so no light is counted twice or lost. The
+// scene is made whole (a frame in strips takes one sub-step).
 #pragma once
 #include <cstdint>
 

@@ -2,7 +2,8 @@
  * beyond spec 5.1 assumption 6), C99: 1 by default; 1..64 accepted, other
  * values refused naming the property and leaving it unchanged; saved and
  * restored with the state; with nothing moving, a frame of 4 sub-steps is
- * the frame of 1 (the mean of four equal scenes) to 1e-9. */
+ * the frame of 1 (the mean of four equal scenes) to 1e-9; sub-steps make
+ * the whole frame's scene even where scene_memory_max_mib asks for strips. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -14,11 +15,12 @@
 
 int main(void) {
   eoir_engine e = NULL, e2 = NULL;
-  static double one[N], four[N];
+  static double one[N], four[N], strips[N];
+  eoir_image_info info;
   char dir[] = "/tmp/eoir_substeps_XXXXXX", path[256];
   int64_t n = 0;
   double total = 0, largest = 0;
-  int i, close = 1;
+  int i, close = 1, same = 1;
 
   OK(eoir_engine_create(NULL, &e));
   add_host_target_sensor(e, "Cam");
@@ -54,6 +56,17 @@ int main(void) {
   CHECK(total > 0);
   for (i = 0; i < N; ++i) close = close && isfinite(four[i]) && fabs(four[i] - one[i]) <= 1e-9 * largest;
   CHECK(close);
+
+  /* Sub-steps make the whole frame's scene, whatever scene_memory_max_mib
+   * (frames in strips take one sub-step): the same frame, with its scene display. */
+  OK(eoir_set_number(e, "Cam", "scene_memory_max_mib", 0));
+  OK(eoir_render(e, "Cam"));
+  OK(eoir_image_get(e, "Cam", EOIR_IMAGE_SENSOR_ELECTRONS, strips, N));
+  for (i = 0; i < N; ++i) same = same && fabs(strips[i] - four[i]) <= 1e-9 * largest;
+  CHECK(same);
+  memset(&info, 0, sizeof info);
+  info.struct_size = sizeof info;
+  OK(eoir_image_info_get(e, "Cam", EOIR_IMAGE_SCENE_DISPLAY, &info));
 
   /* Saved and restored with the state. */
   CHECK(mkdtemp(dir) != NULL);

@@ -12,6 +12,7 @@
 #include "metrics/atmospheric_path.hpp"
 #include "scene/apparent_grid.hpp"
 #include "scene/astrometric_frame.hpp"
+#include "scene/motion_substeps.hpp"
 #include "scene/pick.hpp"
 #include "universe/composite.hpp"
 #include "sensor/display.hpp"
@@ -251,7 +252,9 @@ const Frame& Engine::render(const std::string& name) {
   const auto t1 = clock_type::now();
   progress(0.05, "render");
   FrameBuffers& spare = spare_buffers_[name];
+  // (motion sub-steps make the whole frame's scene: scene/motion_substeps.hpp)
   frame->scene_in_strips =
+      model.parameters.motion_substeps == 1 &&
       static_cast<double>(sensor::whole_frame_bytes(model)) > model.fidelity().scene_memory_max_mib * 1048576.0;
   if (frame->scene_in_strips) {
     // The scene made strip by strip as the convolution asks for its rows.
@@ -272,7 +275,9 @@ const Frame& Engine::render(const std::string& name) {
     frame->scene.ray_casting_s = cast_s;
     frame->sensor.convolution_s -= cast_s;
   } else {
-    frame->scene = scene::generate_scene(w, options_.threads, std::move(spare.scene));
+    frame->scene = scene::generate_moving_scene(w, universe_, library(), universe_.sensor(name),
+                                                model.parameters.motion_substeps, world_cache_.get(),
+                                                options_.threads, std::move(spare.scene));
     progress(0.6, "render");
     frame->sensor =
         sensor::render_sensor_image(model, frame->scene.image, noise_rng_, options_.threads, std::move(spare.sensor));

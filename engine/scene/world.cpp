@@ -1087,7 +1087,8 @@ bool small_object(const WorldObject& w, double sample_angle_rad) {
 
 std::shared_ptr<const World> build_world(const universe::Universe& universe, const universe::Library& library,
                                          const EngineTime& t, const universe::Object& sensor,
-                                         const ViewDefinition& view, WorldCache* cache) {
+                                         const ViewDefinition& view, WorldCache* cache,
+                                         const std::set<std::string>* frame_point_sources) {
   auto world = std::make_shared<World>();
   world->time = t;
   world->sensor_name = sensor.name;
@@ -1191,6 +1192,13 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
       w->imaging = Imaging::small_extended;  // its parts may be thinner than a sample
     else
       w->imaging = Imaging::extended;
+    if (frame_point_sources && w->imaging != Imaging::outside) {
+      // A motion sub-step (scene/motion_substeps.hpp): the frame time's class decides point or not.
+      if (frame_point_sources->count(w->name))
+        w->imaging = Imaging::point_source;
+      else if (w->imaging == Imaging::point_source)
+        w->imaging = Imaging::small_extended;
+    }
     w->placed.ray_mask = w->imaging == Imaging::extended || w->imaging == Imaging::small_extended
                              ? geometry::ray_mask_extended
                              : geometry::ray_mask_other;

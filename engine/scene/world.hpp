@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -408,7 +409,7 @@ class WorldObject {
   friend class World;
   friend std::shared_ptr<const World> build_world(const universe::Universe&, const universe::Library&,
                                                   const EngineTime&, const universe::Object&, const ViewDefinition&,
-                                                  WorldCache*);
+                                                  WorldCache*, const std::set<std::string>*);
   struct AreaSourcePatch {
     Vec3 direction;              // from the receiver toward the patch, observer frame
     double solid_angle_sr = 0;   // projected solid angle at the receiver
@@ -501,9 +502,14 @@ class World {
 
 // Builds the world of `sensor` at t with the library's materials and spectra.
 // Throws eoir::Error (no_state for a sensor whose parent has no state,
-// unknown_name for an unknown material or spectrum).
+// unknown_name for an unknown material or spectrum). frame_point_sources:
+// given only for the world of a motion sub-step (scene/motion_substeps.hpp),
+// the names of the objects the frame time's world images as point sources;
+// this world images those as point sources and every other object it would
+// image as a point source as small_extended instead.
 std::shared_ptr<const World> build_world(const universe::Universe& universe, const universe::Library& library,
                                          const EngineTime& t, const universe::Object& sensor,
-                                         const ViewDefinition& view, WorldCache* cache = nullptr);
+                                         const ViewDefinition& view, WorldCache* cache = nullptr,
+                                         const std::set<std::string>* frame_point_sources = nullptr);
 
 }  // namespace eoir::scene

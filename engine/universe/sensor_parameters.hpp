@@ -41,6 +41,7 @@ constexpr double max_diffraction_wavelength_um = 1000.0;
 // Integration times (and reference-pair times): 1 ns to 10^4 s.
 constexpr double min_integration_time_ms = 1.0e-6;
 constexpr double max_integration_time_ms = 1.0e7;
+constexpr std::int64_t max_motion_substeps = 64;
 // NEI/SEI (W/cm^2) and NER/SER (W/(cm^2 sr)) of reference pairs: 1e-40 to
 // 1e10, decades beyond any detector (the Sun gives 0.14 W/cm^2 and
 // 2e3 W/(cm^2 sr)) yet squares (noise variances) stay finite.
@@ -112,6 +113,9 @@ struct SensorParameters {
   double jitter_mrad = 0.0;                   // sigma of eq. 38
   // Radiometry (spec 5.4, 5.9-5.11).
   double integration_time_ms = 10.0;
+  // Time sub-steps of the scene over the integration for resolved objects
+  // (scene/motion_substeps.hpp; beyond spec 5.1 assumption 6, which 1 keeps).
+  std::int64_t motion_substeps = 1;
   ApertureQuantity sensitivity_quantity = ApertureQuantity::irradiance;
   std::vector<ReferencePair> sensitivity_pairs{{10.0, 1.0e-18}};
   ApertureQuantity saturation_quantity = ApertureQuantity::irradiance;

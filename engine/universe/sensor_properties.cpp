@@ -177,6 +177,14 @@ const std::vector<Spec>& sensor_properties() {
                                     "Detector: seed of the fixed pattern (PRNU, DSNU, hot and dead pixels)",
                                     [](P& p) -> auto& { return p.detector.pattern_seed; },
                                     Range{0, 9007199254740992.0}));
+    // Resolved objects moving during the integration (scene/motion_substeps.hpp).
+    t.push_back(integer_property<P>(
+        "motion_substeps", "count",
+        "Time sub-steps over the integration for objects imaged as extended sources: the scene is the mean of this "
+        "many scenes at the sub-step times, so a resolved object that moves smears; 1 keeps spec 5.1 assumption 6 "
+        "(the scene at the frame time)",
+        [](P& p) -> auto& { return p.motion_substeps; },
+        Range{1, static_cast<double>(sensor_bounds::max_motion_substeps)}));
     // The fidelity knobs, as properties of the sensor whose pair they tune.
     for (const PropertySpec<Fidelity>& k : fidelity_properties()) {
       const auto get = k.get;

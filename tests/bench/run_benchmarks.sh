@@ -24,7 +24,7 @@ python="${PYTHON:-/usr/bin/python3}"
 for exe in tests/bench/bench_static_metrics tests/bench/bench_frame tests/bench/bench_state \
            tests/bench/bench_band tests/bench/bench_targets tests/bench/bench_point_sources tests/bench/bench_detector \
            tests/geometry/bench_ray_caster tests/bench/bench_eclipse tests/bench/bench_brdf \
-           tests/bench/bench_many_objects tests/bench/bench_frame_size; do
+           tests/bench/bench_many_objects tests/bench/bench_frame_size tests/bench/bench_motion_substeps; do
   [ -x "$build/$exe" ] || { echo "missing $build/$exe: build first" >&2; exit 1; }
 done
 mkdir -p "$results"
@@ -55,6 +55,7 @@ run bench_state tests/bench/bench_state --benchmark_repetitions=3 --benchmark_re
 run bench_targets tests/bench/bench_targets --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 run bench_point_sources tests/bench/bench_point_sources --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 run bench_detector tests/bench/bench_detector --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+run bench_motion_substeps tests/bench/bench_motion_substeps --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 run bench_ray_caster tests/geometry/bench_ray_caster --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 for px in 128 256 512 1024; do
   for n in 10 100; do

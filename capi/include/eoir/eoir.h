@@ -401,6 +401,7 @@ typedef enum eoir_image_kind {
  * band integration, OTF convolution, point sources, noise from the engine's
  * seeded generator). The frame is kept until the next render of that sensor.
  * Settings: sensor properties noise_enabled, detector_model (1.7), display_agc, display_gain_step, display_stretch,
+ * motion_substeps (the scene as the mean of that many scenes over the integration: resolved objects that move smear),
  * the fidelity knobs (scene_mode, band_integration, samples_per_pixel, ...;
  * README "Fidelity") and objects' patch_size_m. The host's progress callback
  * is called between stages; a non-zero return cancels the render

@@ -252,9 +252,11 @@ const Frame& Engine::render(const std::string& name) {
   const auto t1 = clock_type::now();
   progress(0.05, "render");
   FrameBuffers& spare = spare_buffers_[name];
-  // (motion sub-steps make the whole frame's scene: scene/motion_substeps.hpp)
+  // Motion sub-steps (scene/motion_substeps.hpp): the worlds of the sub-steps.
+  frame->substep_worlds = scene::substep_worlds(w, universe_, library(), universe_.sensor(name),
+                                                model.parameters.motion_substeps, world_cache_.get());
+  const auto& substeps = frame->substep_worlds;
   frame->scene_in_strips =
-      model.parameters.motion_substeps == 1 &&
       static_cast<double>(sensor::whole_frame_bytes(model)) > model.fidelity().scene_memory_max_mib * 1048576.0;
   if (frame->scene_in_strips) {
     // The scene made strip by strip as the convolution asks for its rows.
@@ -264,7 +266,7 @@ const Frame& Engine::render(const std::string& name) {
     const double grid_rows = static_cast<double>(w.grid().height());
     const sensor::SceneRowSource source = [&](std::int64_t first, std::int64_t last) -> const double* {
       const auto start = clock_type::now();
-      rows = scene::generate_scene_rows(w, first, last, options_.threads, std::move(rows));
+      rows = scene::generate_moving_scene_rows(w, substeps, first, last, options_.threads, std::move(rows));
       cast_s += seconds_between(start, clock_type::now());
       frame->scene.rays += rows.rays;
       progress(0.05 + 0.5 * static_cast<double>(last) / grid_rows, "render");
@@ -275,9 +277,7 @@ const Frame& Engine::render(const std::string& name) {
     frame->scene.ray_casting_s = cast_s;
     frame->sensor.convolution_s -= cast_s;
   } else {
-    frame->scene = scene::generate_moving_scene(w, universe_, library(), universe_.sensor(name),
-                                                model.parameters.motion_substeps, world_cache_.get(),
-                                                options_.threads, std::move(spare.scene));
+    frame->scene = scene::generate_moving_scene(w, substeps, options_.threads, std::move(spare.scene));
     progress(0.6, "render");
     frame->sensor =
         sensor::render_sensor_image(model, frame->scene.image, noise_rng_, options_.threads, std::move(spare.sensor));
@@ -466,7 +466,8 @@ scene::Pick Engine::pick(const std::string& sensor, int space, std::int64_t x, s
   const std::int64_t c = (space == 0 ? x : x * k + k / 2) + g.guard_samples();
   const std::int64_t r = (space == 0 ? y : y * k + k / 2) + g.guard_samples();
   if (f.scene_in_strips) {  // the sample's row made again
-    const scene::SceneRows row = scene::generate_scene_rows(*f.world, r, r + 1, options_.threads);
+    const scene::SceneRows row =
+        scene::generate_moving_scene_rows(*f.world, f.substep_worlds, r, r + 1, options_.threads);
     return scene::pick_sample(*f.world, row.radiance_W_cm2_sr[static_cast<std::size_t>(c)],
                               row.hits[static_cast<std::size_t>(c)], c, r);
   }
@@ -492,7 +493,8 @@ void Engine::scene_field_radiance(const std::string& sensor, double* values) con
   scene::SceneRows rows;
   for (std::int64_t first = guard; first < guard + fh; first += kRowsPerStrip) {
     const std::int64_t last = std::min(guard + fh, first + kRowsPerStrip);
-    rows = scene::generate_scene_rows(*f.world, first, last, options_.threads, std::move(rows));
+    rows = scene::generate_moving_scene_rows(*f.world, f.substep_worlds, first, last, options_.threads,
+                                             std::move(rows));
     copy_rows(rows.radiance_W_cm2_sr, first, first, last);
   }
 }

@@ -80,6 +80,9 @@ struct Frame {
   // point sources but no samples, and there is no scene display; the scene
   // radiance and picks are made again from the world on request.
   bool scene_in_strips = false;
+  // The worlds of its motion sub-steps (scene/motion_substeps.hpp; none
+  // with motion_substeps 1), kept to make its strips again.
+  std::vector<std::shared_ptr<const scene::World>> substep_worlds;
   sensor::SensorImage sensor;
   std::vector<std::uint8_t> scene_display;   // samples of the field of view
   std::vector<std::uint8_t> sensor_display;  // pixels

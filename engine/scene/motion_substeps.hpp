@@ -15,10 +15,12 @@
 // images as a point source is one in every sub-step (its streak carries its
 // light), and any other that a sub-step's world would image as a point
 // source is imaged there as small_extended (its window drawn to its point
-// irradiance below a sample), so no light is counted twice or lost. The
-// scene is made whole (a frame in strips takes one sub-step).
+// irradiance below a sample), so no light is counted twice or lost. A frame
+// made in strips averages each strip's rows over the sub-steps alike.
 #pragma once
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 #include "scene/scene_generator.hpp"
 #include "scene/world.hpp"
@@ -26,13 +28,22 @@
 
 namespace eoir::scene {
 
-// The scene of `world` (the frame time's, for `sensor` of `universe`) with
-// `substeps` sub-steps (1: generate_scene(world) itself, spec 5.1
-// assumption 6). The sub-steps' world builds and scenes count in
-// ray_casting_s and rays. threads, storage: as generate_scene.
-SceneImage generate_moving_scene(const World& world, const universe::Universe& universe,
-                                 const universe::Library& library, const universe::Object& sensor,
-                                 std::int64_t substeps, WorldCache* cache, unsigned threads,
-                                 SceneImage storage = {});
+// The worlds of the sub-steps of a frame at `world` (the frame time's, for
+// `sensor` of `universe`): none for substeps <= 1 (spec 5.1 assumption 6);
+// null where a sub-step falls on the frame time (its world is `world`).
+std::vector<std::shared_ptr<const World>> substep_worlds(const World& world, const universe::Universe& universe,
+                                                         const universe::Library& library,
+                                                         const universe::Object& sensor, std::int64_t substeps,
+                                                         WorldCache* cache);
+
+// The scene of `world` with its radiance the mean over `substeps`
+// (substep_worlds; none: generate_scene(world) itself). The sub-steps'
+// scenes count in ray_casting_s and rays. threads, storage: as generate_scene.
+SceneImage generate_moving_scene(const World& world, const std::vector<std::shared_ptr<const World>>& substeps,
+                                 unsigned threads, SceneImage storage = {});
+
+// The same for rows [begin, end) of a frame made in strips (generate_scene_rows).
+SceneRows generate_moving_scene_rows(const World& world, const std::vector<std::shared_ptr<const World>>& substeps,
+                                     std::int64_t begin, std::int64_t end, unsigned threads, SceneRows storage = {});
 
 }  // namespace eoir::scene

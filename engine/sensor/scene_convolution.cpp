@@ -297,7 +297,8 @@ std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::R
 std::int64_t whole_frame_bytes(const SensorModel& model) {
   const geometry::SampleGrid& g = model.grid;
   const std::int64_t k = g.per_pixel;
-  const auto pad = static_cast<std::int64_t>(std::lround(model.fidelity().fft_padding * static_cast<double>(g.guard_samples())));
+  const auto pad =
+      static_cast<std::int64_t>(std::lround(model.fidelity().fft_padding * static_cast<double>(g.guard_samples())));
   const std::int64_t cols = k * ((g.width() + 2 * pad + k - 1) / k), rows = k * ((g.height() + 2 * pad + k - 1) / k);
   // per sample: radiance and hit (16 bytes) and the scene display's byte;
   // per transform cell of the half spectrum: a complex value and the OTF
@@ -340,7 +341,8 @@ std::vector<double> pixel_radiance_in_strips(const SensorModel& model, const geo
   double first_sample = 0;
   {
     fftw::RealBuffer strip = fftw::real_buffer(static_cast<std::size_t>(strip_rows) * stride);
-    std::vector<fftw::ComplexBuffer> gathers(static_cast<std::size_t>(std::max(1u, parallel_range_count(groups, threads, 1))));
+    std::vector<fftw::ComplexBuffer> gathers(
+        static_cast<std::size_t>(std::max(1u, parallel_range_count(groups, threads, 1))));
     for (int s0 = 0; s0 < rows; s0 += strip_rows) {
       const int s1 = std::min(rows, s0 + strip_rows);
       const int a = std::clamp(s0 - pad, 0, h - 1), b = std::clamp(s1 - 1 - pad, 0, h - 1) + 1;
@@ -422,7 +424,9 @@ std::vector<double> pixel_radiance_in_strips(const SensorModel& model, const geo
         fold_columns(cache, pixel_rows, group_buffer.get() + block, count, kGroup,
                      whole ? plans[0] : fftw::columns(rows, count, kGroup, FFTW_FORWARD),
                      whole ? plans[1] : fftw::columns(pixel_rows, count, count, FFTW_BACKWARD), block_buffer.get(),
-                     [&](int r, int j) { return otf_block[static_cast<std::size_t>(r) * column_block + static_cast<std::size_t>(j)]; },
+                     [&](int r, int j) {
+                       return otf_block[static_cast<std::size_t>(r) * column_block + static_cast<std::size_t>(j)];
+                     },
                      [&](int r) { return fy2[static_cast<std::size_t>(r)] >= cutoff2; });
         for (std::int64_t m = 0; m < ny; ++m)
           std::memcpy(folded_buffer[static_cast<std::size_t>(m) * kGroup + static_cast<std::size_t>(block)],
@@ -439,7 +443,8 @@ std::vector<double> pixel_radiance_in_strips(const SensorModel& model, const geo
   const fftw_plan backward = fftw::row_c2r(pixel_cols);
   const std::size_t spectrum_stride = static_cast<std::size_t>(groups) * kGroup;
   const int strip_pixel_rows = static_cast<int>(
-      std::min<std::uint64_t>(static_cast<std::uint64_t>(ny), std::max<std::uint64_t>(4, kStripBytes / (spectrum_stride * cell))));
+      std::min<std::uint64_t>(static_cast<std::uint64_t>(ny),
+                              std::max<std::uint64_t>(4, kStripBytes / (spectrum_stride * cell))));
   fftw::ComplexBuffer strip = fftw::complex_buffer(static_cast<std::size_t>(strip_pixel_rows) * spectrum_stride);
   fftw::ComplexBuffer gather = fftw::complex_buffer(static_cast<std::size_t>(strip_pixel_rows) * kGroup);
   std::vector<fftw::ComplexBuffer> row_buffers(parallel_range_count(ny, threads, pixel_row_chunk));

@@ -2,8 +2,9 @@
  * beyond spec 5.1 assumption 6), C99: 1 by default; 1..64 accepted, other
  * values refused naming the property and leaving it unchanged; saved and
  * restored with the state; with nothing moving, a frame of 4 sub-steps is
- * the frame of 1 (the mean of four equal scenes) to 1e-9; sub-steps make
- * the whole frame's scene even where scene_memory_max_mib asks for strips. */
+ * the frame of 1 (the mean of four equal scenes) to 1e-9; a frame in strips
+ * (scene_memory_max_mib 0) takes its sub-steps strip by strip: the same frame
+ * to 1e-9, without a scene display. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -57,8 +58,7 @@ int main(void) {
   for (i = 0; i < N; ++i) close = close && isfinite(four[i]) && fabs(four[i] - one[i]) <= 1e-9 * largest;
   CHECK(close);
 
-  /* Sub-steps make the whole frame's scene, whatever scene_memory_max_mib
-   * (frames in strips take one sub-step): the same frame, with its scene display. */
+  /* In strips, strip by strip: the same frame, without a scene display. */
   OK(eoir_set_number(e, "Cam", "scene_memory_max_mib", 0));
   OK(eoir_render(e, "Cam"));
   OK(eoir_image_get(e, "Cam", EOIR_IMAGE_SENSOR_ELECTRONS, strips, N));
@@ -66,7 +66,8 @@ int main(void) {
   CHECK(same);
   memset(&info, 0, sizeof info);
   info.struct_size = sizeof info;
-  OK(eoir_image_info_get(e, "Cam", EOIR_IMAGE_SCENE_DISPLAY, &info));
+  FAILS(eoir_image_info_get(e, "Cam", EOIR_IMAGE_SCENE_DISPLAY, &info), EOIR_ERR_NO_STATE, "scene_memory_max_mib");
+  OK(eoir_set_number(e, "Cam", "scene_memory_max_mib", 1024));
 
   /* Saved and restored with the state. */
   CHECK(mkdtemp(dir) != NULL);

@@ -35,14 +35,9 @@ import numpy as np
 from astropy.io import fits
 from astropy.wcs import WCS, FITSFixedWarning
 
+from cli_checks import check, failures
+
 JITTER_MRAD = 0.1  # one pixel RMS of the demo's 3 deg / 512 camera
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def unit(ra, dec):

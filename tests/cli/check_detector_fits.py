@@ -22,23 +22,7 @@ import sys
 import numpy as np
 from astropy.io import fits
 
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
-
-
-def run(exe, scenario, out):
-    shutil.rmtree(out, ignore_errors=True)
-    start = json.load(open(scenario))["start"]
-    r = subprocess.run([exe, "run", scenario, "--out", out, "--stop", start, "--quiet"], capture_output=True,
-                       text=True)
-    if r.returncode != 0:
-        sys.exit(f"eoir run {scenario} failed ({r.returncode}): {r.stderr}")
-    return json.load(open(os.path.join(out, "summary.json")))
+from cli_checks import check, failures, first_frame
 
 
 def main():
@@ -51,7 +35,7 @@ def main():
     # Off: the spec's model, no ADU file.
     path = os.path.join(out, "off.json")
     json.dump(sc, open(path, "w"))
-    summary = run(exe, path, os.path.join(out, "off"))
+    summary = first_frame(exe, path, os.path.join(out, "off"))
     check("adu" not in summary["frames"][0]["files"], "detector_model off: no ADU file")
 
     for bits, bitpix, bzero in ((14, 16, 32768), (20, 32, 2147483648)):
@@ -62,7 +46,7 @@ def main():
         path = os.path.join(out, f"on_{bits}.json")
         json.dump(sc, open(path, "w"))
         run_dir = os.path.join(out, f"on_{bits}")
-        frame = run(exe, path, run_dir)["frames"][0]
+        frame = first_frame(exe, path, run_dir)["frames"][0]
         check("adu" in frame["files"], f"{bits} bits: summary.json lists the ADU file")
         with fits.open(os.path.join(run_dir, frame["files"]["adu"]), do_not_scale_image_data=True) as hdul:
             h = hdul[0].header

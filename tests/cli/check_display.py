@@ -32,13 +32,7 @@ import numpy as np
 from astropy.io import fits
 from astropy.visualization import AsinhStretch, LogStretch, MinMaxInterval, ZScaleInterval
 
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
+from cli_checks import check, failures
 
 
 def run(exe, scenario, out, *extra, ok=True):

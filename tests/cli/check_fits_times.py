@@ -44,25 +44,10 @@ from astropy.time import Time
 from astropy.utils import iers
 from astropy.wcs import WCS, FITSFixedWarning
 
+from cli_checks import check, failures, first_frame
+
 iers.conf.auto_download = False
 GM_EARTH = 3.986004418e14  # m^3/s^2 (the scenarios' Kepler motion, EGM96/WGS84)
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
-
-
-def run(exe, scenario, out):
-    shutil.rmtree(out, ignore_errors=True)
-    start = json.load(open(scenario))["start"]
-    r = subprocess.run([exe, "run", scenario, "--out", out, "--stop", start, "--quiet"], capture_output=True,
-                       text=True)
-    if r.returncode != 0:
-        sys.exit(f"eoir run {scenario} failed ({r.returncode}): {r.stderr}")
-    return json.load(open(os.path.join(out, "summary.json")))
 
 
 def report(exe, scenario, sensor):
@@ -120,7 +105,7 @@ def main():
     exe, star_field, site_scenario, out = sys.argv[1:5]
 
     # A spacecraft: the star-field demo's GEO observer.
-    summary = run(exe, star_field, os.path.join(out, "spacecraft"))
+    summary = first_frame(exe, star_field, os.path.join(out, "spacecraft"))
     frame = summary["frames"][0]
     files = {k: os.path.join(out, "spacecraft", v) for k, v in frame["files"].items()}
     truth = json.load(open(files["truth"]))
@@ -159,7 +144,7 @@ def main():
     check("GAIN" not in headers["radiance"], "radiance: no GAIN")
 
     # A site on the ground.
-    summary = run(exe, site_scenario, os.path.join(out, "site"))
+    summary = first_frame(exe, site_scenario, os.path.join(out, "site"))
     sc = json.load(open(site_scenario))
     for frame in summary["frames"]:
         files = {k: os.path.join(out, "site", v) for k, v in frame["files"].items()}

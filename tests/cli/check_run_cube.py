@@ -25,18 +25,7 @@ import json
 import numpy as np
 from astropy.io import fits
 
-failures = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond:
-        failures.append(what)
-
-
-def run(*cmd):
-    r = subprocess.run(list(cmd), capture_output=True, text=True, timeout=600)
-    return r.returncode, r.stdout + r.stderr
+from cli_checks import check, failures, run
 
 
 CUBE_ONLY = {"NAXIS3", "WCSAXES", "CTYPE3", "CUNIT3", "CRVAL3", "CRPIX3", "CD3_3", "MJDREF", "DATEREF", "NFRAMES"}

@@ -15,18 +15,7 @@ import shutil
 import subprocess
 import sys
 
-failures = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond:
-        failures.append(what)
-
-
-def run(*cmd):
-    r = subprocess.run(list(cmd), capture_output=True, text=True, timeout=600)
-    return r.returncode, r.stdout + r.stderr
+from cli_checks import check, failures, run
 
 
 def main():

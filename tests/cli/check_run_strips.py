@@ -16,13 +16,7 @@ import sys
 import numpy as np
 from astropy.io import fits
 
-failures = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond:
-        failures.append(what)
+from cli_checks import check, failures
 
 
 def run_scenario(exe, scenario, out):

@@ -15,22 +15,12 @@ import shutil
 import subprocess
 import sys
 
+from cli_checks import check, failures, run
+
 CATALOGUE = ("id,ra_deg,dec_deg,pm_ra_mas_yr,pm_dec_mas_yr,parallax_mas,v_mag,b_v\n"
              "vega,279.234735,38.783689,200.94,286.23,130.23,0.03,0.00\n")
 FIELD = "stars.properties.catalog_file"
 OUTSIDE = "lies outside the scenario's folder"
-failures = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond:
-        failures.append(what)
-
-
-def run(*cmd):
-    r = subprocess.run(list(cmd), capture_output=True, text=True, timeout=300)
-    return r.returncode, r.stdout + r.stderr
 
 
 def scenario(folder, name, catalog_file):

@@ -256,6 +256,7 @@ const Frame& Engine::render(const std::string& name) {
   frame->substep_worlds = scene::substep_worlds(w, universe_, library(), universe_.sensor(name),
                                                 model.parameters.motion_substeps, world_cache_.get());
   const auto& substeps = frame->substep_worlds;
+  const double substep_worlds_s = seconds_between(t1, clock_type::now());  // counted with the ray casting
   frame->scene_in_strips =
       static_cast<double>(sensor::whole_frame_bytes(model)) > model.fidelity().scene_memory_max_mib * 1048576.0;
   if (frame->scene_in_strips) {
@@ -282,6 +283,7 @@ const Frame& Engine::render(const std::string& name) {
     frame->sensor =
         sensor::render_sensor_image(model, frame->scene.image, noise_rng_, options_.threads, std::move(spare.sensor));
   }
+  frame->scene.ray_casting_s += substep_worlds_s;
   progress(0.9, "render");
   const auto t2 = clock_type::now();
   const universe::SensorParameters& p = model.parameters;

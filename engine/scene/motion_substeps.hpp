@@ -38,7 +38,8 @@ std::vector<std::shared_ptr<const World>> substep_worlds(const World& world, con
 
 // The scene of `world` with its radiance the mean over `substeps`
 // (substep_worlds; none: generate_scene(world) itself). The sub-steps'
-// scenes count in ray_casting_s and rays. threads, storage: as generate_scene.
+// scenes count in ray_casting_s and rays (the engine adds the world builds of
+// substep_worlds there too). threads, storage: as generate_scene.
 SceneImage generate_moving_scene(const World& world, const std::vector<std::shared_ptr<const World>>& substeps,
                                  unsigned threads, SceneImage storage = {});
 

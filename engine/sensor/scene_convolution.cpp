@@ -47,15 +47,29 @@ std::vector<Complex> box_sum_phases(int n, std::int64_t offset, std::int64_t k) 
   return phi;
 }
 
+// The transform's padding and size for a grid: whole pixels on the
+// transform's period, so the pixel grid folds onto it.
+struct TransformShape {
+  int pad = 0, cols = 0, rows = 0;
+};
+TransformShape transform_shape(const SensorModel& model, const geometry::SampleGrid& g) {
+  const int w = static_cast<int>(g.width()), h = static_cast<int>(g.height()), k = static_cast<int>(g.per_pixel);
+  TransformShape t;
+  t.pad = static_cast<int>(std::lround(model.fidelity().fft_padding * static_cast<double>(g.guard_samples())));
+  t.cols = k * fftw::good_size((w + 2 * t.pad + k - 1) / k);
+  t.rows = k * fftw::good_size((h + 2 * t.pad + k - 1) / k);
+  return t;
+}
+
 // The transform's size, padding and box-sum phases (both ways of making a frame).
 void build_shape(SceneConvolutionCache& cache, const SensorModel& model, const geometry::SampleGrid& g) {
   cache.grid_cols = g.width();
   cache.grid_rows = g.height();
-  const int w = static_cast<int>(g.width()), h = static_cast<int>(g.height()), k = static_cast<int>(g.per_pixel);
-  cache.pad = static_cast<int>(std::lround(model.fidelity().fft_padding * static_cast<double>(g.guard_samples())));
-  // Whole pixels on the transform's period, so the pixel grid folds onto it.
-  cache.fft_cols = k * fftw::good_size((w + 2 * cache.pad + k - 1) / k);
-  cache.fft_rows = k * fftw::good_size((h + 2 * cache.pad + k - 1) / k);
+  const int k = static_cast<int>(g.per_pixel);
+  const TransformShape t = transform_shape(model, g);
+  cache.pad = t.pad;
+  cache.fft_cols = t.cols;
+  cache.fft_rows = t.rows;
   // The field's first sample is pad + guard into the buffer on both axes.
   const std::int64_t first = cache.pad + g.guard_samples();
   cache.row_phases = box_sum_phases(cache.fft_rows, first, k);
@@ -296,14 +310,12 @@ std::vector<double> pixel_radiance(const SensorModel& model, const radiometry::R
 
 std::int64_t whole_frame_bytes(const SensorModel& model) {
   const geometry::SampleGrid& g = model.grid;
-  const std::int64_t k = g.per_pixel;
-  const auto pad =
-      static_cast<std::int64_t>(std::lround(model.fidelity().fft_padding * static_cast<double>(g.guard_samples())));
-  const std::int64_t cols = k * ((g.width() + 2 * pad + k - 1) / k), rows = k * ((g.height() + 2 * pad + k - 1) / k);
+  const TransformShape t = transform_shape(model, g);
   // per sample: radiance and hit (16 bytes) and the scene display's byte;
-  // per transform cell of the half spectrum: a complex value and the OTF
-  const std::int64_t samples = g.width() * g.height(), cells = rows * (cols / 2 + 1);
-  return 17 * samples + 24 * cells + 16 * g.pixels_y * (cols / 2 + 1);
+  // per transform cell of the half spectrum: a complex value and the OTF;
+  // per pixel row: its folded half spectrum
+  const std::int64_t half = t.cols / 2 + 1;
+  return 17 * g.width() * g.height() + 24 * static_cast<std::int64_t>(t.rows) * half + 16 * g.pixels_y * half;
 }
 
 std::vector<double> pixel_radiance_in_strips(const SensorModel& model, const geometry::SampleGrid& g,

@@ -291,14 +291,14 @@ const Frame& Engine::render(const std::string& name) {
   display.agc = p.display_agc;
   display.gain_step = p.display_gain_step;
   display.stretch = p.display_stretch;
-  if (!frame->scene_in_strips)
-    frame->scene_display =
-        sensor::scene_display(frame->scene.image, display, options_.threads, std::move(spare.scene_display));
+  frame->scene_display_options = display;
   display.full_scale = std::isfinite(model.metrics.saturation_electrons) ? model.metrics.saturation_electrons : 1e6;
   display.saturation = model.metrics.saturation_electrons;  // +inf with saturation off
   if (p.detector.enabled) display.full_scale = display.saturation = p.detector.full_well_e;  // sensor/detector.hpp
-  frame->sensor_display = sensor::compress_for_display(frame->sensor.electrons, display, options_.threads,
-                                                       std::move(spare.sensor_display));
+  frame->sensor_display_options = display;
+  frame->display_threads = options_.threads;
+  frame->scene_display_storage = std::move(spare.scene_display);
+  frame->sensor_display_storage = std::move(spare.sensor_display);
   const auto t3 = clock_type::now();
   // Per-frame truth: the target metrics of every object and star in the
   // field, evaluated on the same world, with their directions (frame.hpp).
@@ -409,8 +409,8 @@ const Frame& Engine::render(const std::string& name) {
     Frame& old = *std::const_pointer_cast<Frame>(slot);
     spare.scene = std::move(old.scene);
     spare.sensor = std::move(old.sensor);
-    spare.scene_display = std::move(old.scene_display);
-    spare.sensor_display = std::move(old.sensor_display);
+    spare.scene_display = std::move(old.scene_display_storage);
+    spare.sensor_display = std::move(old.sensor_display_storage);
   }
   slot = frame;
   return *frame;

@@ -6,6 +6,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "scene/astrometric_frame.hpp"
 #include "scene/scene_generator.hpp"
 #include "scene/world.hpp"
+#include "sensor/display.hpp"
 #include "sensor/image_chain.hpp"
 #include "sensor/sensor_model.hpp"
 
@@ -27,7 +29,7 @@ struct FrameTimings {
   double convolution_s = 0;    // OTF convolution by FFT and pixel integration (eq. 49)
   double point_sources_s = 0;  // energy on detector (eqs. 50-51)
   double noise_s = 0;          // noise and saturation (eqs. 53-55)
-  double display_s = 0;        // display compression (4.1.2)
+  double display_s = 0;        // display set-up (4.1.2; the images are made on request: Frame::scene_display)
   double truth_s = 0;          // target metrics of the objects in the field
   std::size_t rays = 0;
   double total_s() const {
@@ -84,8 +86,15 @@ struct Frame {
   // with motion_substeps 1), kept to make its strips again.
   std::vector<std::shared_ptr<const scene::World>> substep_worlds;
   sensor::SensorImage sensor;
-  std::vector<std::uint8_t> scene_display;   // samples of the field of view
-  std::vector<std::uint8_t> sensor_display;  // pixels
+  // The display images (spec 4.1.2), made on first request (thread-safe):
+  // a frame whose displays nobody reads does not pay for them. The scene's
+  // (samples of the field of view) is empty for a frame made in strips.
+  const std::vector<std::uint8_t>& scene_display() const;
+  const std::vector<std::uint8_t>& sensor_display() const;
+  // What the render sets them up with; `_storage`: buffers to reuse.
+  sensor::DisplayOptions scene_display_options, sensor_display_options;
+  unsigned display_threads = 0;
+  mutable std::vector<std::uint8_t> scene_display_storage, sensor_display_storage;
   std::vector<TruthEntry> truth;
   FrameTimings timings;
   // The settings the frame was rendered with: the sensor's own, or those its
@@ -99,6 +108,9 @@ struct Frame {
 
   const EngineTime& time() const { return world->time; }
   const geometry::SampleGrid& grid() const { return scene.image.grid; }
+
+ private:
+  mutable std::once_flag scene_display_made_, sensor_display_made_;
 };
 
 }  // namespace eoir

@@ -161,7 +161,7 @@ EOIR_API eoir_status eoir_image_get_bytes(eoir_engine engine, const char* sensor
     const size_t n = static_cast<size_t>(ext.width * ext.height);
     if (kind == EOIR_IMAGE_SCENE_DISPLAY) need_scene_display(f);
     if (capacity < n) throw Error(Status::buffer_too_small, "capacity: " + std::to_string(n) + " bytes needed");
-    const auto& src = kind == EOIR_IMAGE_SCENE_DISPLAY ? f.scene_display : f.sensor_display;
+    const auto& src = kind == EOIR_IMAGE_SCENE_DISPLAY ? f.scene_display() : f.sensor_display();
     std::copy(src.begin(), src.end(), bytes);
   });
 }

@@ -409,6 +409,20 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                           const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, std::int32_t,
                                                    double, const Vec3&, const Vec3&)>& emit,
                           unsigned threads, const RayQuery& query) const {
+  cast_grid_tiles(
+      width, height, direction,
+      [&](const GridTile& tile) {
+        for (int i = 0; i < tile.count; ++i)
+          emit(tile.column[i], tile.row[i], tile.object[i], tile.part[i], tile.facet[i], tile.range_m[i],
+               tile.direction[i], tile.normal_frame[i]);
+      },
+      threads, query);
+}
+
+void RayCaster::cast_grid_tiles(std::int64_t width, std::int64_t height,
+                                const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
+                                const std::function<void(const GridTile&)>& emit_tile, unsigned threads,
+                                const RayQuery& query) const {
   if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
   if (width <= 0 || height <= 0) return;
   const auto& objects = impl_->objects;
@@ -434,6 +448,7 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
     }
   }
   constexpr std::int64_t kTile = 8, kBlock = 8;  // tiles of 8 x 8 samples, blocks of 8 x 8 tiles
+  static_assert(kTile * kTile <= GridTile::kMaxSamples, "a tile fits GridTile");
   const std::int64_t tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
   const std::int64_t blocks_x = (tiles_x + kBlock - 1) / kBlock, blocks_y = (tiles_y + kBlock - 1) / kBlock;
   const auto cone_of = [&](std::int64_t c0, std::int64_t r0, std::int64_t c1, std::int64_t r1) {
@@ -445,6 +460,19 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
     RayContext rc;
     RTCRayHit rh;
     std::vector<const PartBound*> block_bounds, tile_bounds;
+    GridTile tile;
+    const auto emit = [&tile](std::int64_t c, std::int64_t r, std::int32_t object, std::int32_t part,
+                              std::int32_t facet, double range_m, const Vec3& d, const Vec3& normal_frame) {
+      const int i = tile.count++;
+      tile.column[i] = c;
+      tile.row[i] = r;
+      tile.object[i] = object;
+      tile.part[i] = part;
+      tile.facet[i] = facet;
+      tile.range_m[i] = range_m;
+      tile.direction[i] = d;
+      tile.normal_frame[i] = normal_frame;
+    };
     for (;;) {
       const std::int64_t block = next.fetch_add(1);
       if (block >= blocks_x * blocks_y) return;
@@ -458,6 +486,7 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
       for (std::int64_t r0 = br0; r0 < br1; r0 += kTile)
         for (std::int64_t c0 = bc0; c0 < bc1; c0 += kTile) {
           const std::int64_t c1 = std::min(bc1, c0 + kTile), r1 = std::min(br1, r0 + kTile);
+          tile.count = 0;
           tile_bounds.clear();
           if (!block_bounds.empty()) {
             const Cone cone = cone_of(c0, r0, c1, r1);
@@ -474,6 +503,7 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
               })) {
             cast_tile_with_meshes(objects[static_cast<std::size_t>(tile_bounds[0]->object)], tile_bounds, c0, r0, c1,
                                   r1, direction, emit);
+            emit_tile(tile);
             continue;
           }
           for (std::int64_t r = r0; r < r1; ++r)
@@ -520,6 +550,7 @@ void RayCaster::cast_grid(std::int64_t width, std::int64_t height,
                      od.parts[static_cast<std::size_t>(rc.part)].part_to_frame * rc.normal_part);
               }
             }
+          emit_tile(tile);
         }
     }
   };

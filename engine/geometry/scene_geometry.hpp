@@ -101,6 +101,17 @@ struct RayQuery {
   std::int32_t skip_object = -1;
 };
 
+// The samples of one tile of RayCaster::cast_grid_tiles (at most 8 x 8), in
+// the order cast: sample i at (column[i], row[i]), as cast_grid's emit.
+struct GridTile {
+  static constexpr int kMaxSamples = 64;
+  int count = 0;
+  std::int64_t column[kMaxSamples], row[kMaxSamples];
+  std::int32_t object[kMaxSamples], part[kMaxSamples], facet[kMaxSamples];
+  double range_m[kMaxSamples];
+  Vec3 direction[kMaxSamples], normal_frame[kMaxSamples];
+};
+
 // Ray casting with Embree 3: every part is an Embree user geometry whose
 // intersection is computed analytically in double precision relative to the
 // observer (rays start at the observer, the origin). Built once per world;
@@ -135,6 +146,12 @@ class RayCaster {
                  const std::function<void(std::int64_t, std::int64_t, std::int32_t, std::int32_t, std::int32_t, double,
                                           const Vec3&, const Vec3&)>& emit,
                  unsigned threads = 0, const RayQuery& query = {}) const;
+  // The same, a tile at a time: emit_tile(tile) once per tile, from the
+  // worker threads, with the tile's samples (what emit would receive).
+  void cast_grid_tiles(std::int64_t width, std::int64_t height,
+                       const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
+                       const std::function<void(const GridTile&)>& emit_tile, unsigned threads = 0,
+                       const RayQuery& query = {}) const;
   // True if any surface lies along `direction` closer than range_m.
   bool occluded(const Vec3& direction, double range_m, const RayQuery& query = {}) const;
 

@@ -230,7 +230,9 @@ double DiskPhotometry::phase(double cos_psi) const {
     // Phi_LS(psi) f(psi) = 10^(-0.4 Delta V(psi)) up to Allen's limit (f is
     // that over Phi_LS): the same value to rounding, without the two Phi_LS.
     if (psi >= 1e-9 && psi <= kLunarLawLimitDeg * kDeg) return std::pow(10.0, -0.4 * lunar_phase_magnitude(psi / kDeg));
-    return lommel_seeliger_sphere_phase(psi) * lunar_surface_phase(psi);
+    // Past the limit the surface factor is its value there (the same bits, made once).
+    static const double surface_at_limit = lunar_surface_phase(kLunarLawLimitDeg * kDeg);
+    return lommel_seeliger_sphere_phase(psi) * (psi < 1e-9 ? lunar_surface_phase(psi) : surface_at_limit);
   }
   const double limit_deg = mallama_hilton_upper_limit_deg(law_);
   const double v0 = mallama_hilton_v_1_alpha(law_, 0.0);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -218,24 +219,48 @@ std::size_t shade_rows(const World& world, std::int64_t lo, std::int64_t hi, std
     return (1 - fy) * ((1 - fx) * g0[0] + fx * g0[1]) + fy * ((1 - fx) * g1[0] + fx * g1[1]);
   };
   const geometry::RayQuery extended{geometry::ray_mask_extended, -1};
-  world.caster.cast_grid(
+  world.caster.cast_grid_tiles(
       w, hi - lo, local_direction,
-      [&](std::int64_t c, std::int64_t r, std::int32_t object, std::int32_t part, std::int32_t facet, double range_m,
-          const Vec3& d, const Vec3& normal_frame) {
-        const auto i = static_cast<std::size_t>(r * w + c);
-        hits[i] = SampleHit{object, part};
-        if (object < 0) {
-          // the background light (spec 4.1.4), or the sky's
-          radiance[i] = sky_varies ? sky_at(c, r + lo, d) : background;
-          return;
+      [&](const geometry::GridTile& tile) {
+        // The shadow casters near the tile's points on each shaded object
+        // (a tile sees one or a few): occultation tests for only those.
+        thread_local std::vector<std::pair<std::int32_t, ShadowCasters>> near;
+        std::size_t objects_near = 0;
+        const auto casters_near = [&](std::int32_t object, const WorldObject& o) -> const ShadowCasters* {
+          for (std::size_t k = 0; k < objects_near; ++k)
+            if (near[k].first == object) return &near[k].second;
+          Vec3 least = Vec3::Constant(std::numeric_limits<double>::infinity()), most = -least;
+          for (int k = 0; k < tile.count; ++k)
+            if (tile.object[k] == object) {
+              const Vec3 p = tile.range_m[k] * tile.direction[k];
+              least = least.cwiseMin(p);
+              most = most.cwiseMax(p);
+            }
+          if (near.size() <= objects_near) near.resize(objects_near + 1);
+          near[objects_near].first = object;
+          o.shadow_casters_near(0.5 * (least + most), 0.5 * (most - least).norm(), near[objects_near].second);
+          return &near[objects_near++].second;
+        };
+        for (int k = 0; k < tile.count; ++k) {
+          const std::int64_t c = tile.column[k], r = tile.row[k];
+          const std::int32_t object = tile.object[k], part = tile.part[k];
+          const Vec3& d = tile.direction[k];
+          const auto i = static_cast<std::size_t>(r * w + c);
+          hits[i] = SampleHit{object, part};
+          if (object < 0) {
+            // the background light (spec 4.1.4), or the sky's
+            radiance[i] = sky_varies ? sky_at(c, r + lo, d) : background;
+            continue;
+          }
+          const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];
+          if (o.plain()) {  // no surface point needed
+            radiance[i] = o.plain_radiance(part);
+            continue;
+          }
+          const Vec3 point_body = o.seen.body_to_frame.transpose() * (tile.range_m[k] * d - o.seen.position_m);
+          radiance[i] = o.radiance_at(part, point_body, o.direction_to_body(tile.normal_frame[k]), tile.facet[k],
+                                      o.shades_each_sample() ? casters_near(object, o) : nullptr);
         }
-        const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];
-        if (o.plain()) {  // no surface point needed
-          radiance[i] = o.plain_radiance(part);
-          return;
-        }
-        const Vec3 point_body = o.seen.body_to_frame.transpose() * (range_m * d - o.seen.position_m);
-        radiance[i] = o.radiance_at(part, point_body, o.direction_to_body(normal_frame), facet);
       },
       threads, extended);
   std::size_t rays = count;

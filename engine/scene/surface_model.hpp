@@ -107,6 +107,9 @@ class SurfaceModel {
   template <class Irradiance>
   void reflect(const SurfacePoint& point, Irradiance&& irradiance, std::vector<double>& out,
                std::vector<double>& E) const;
+  // The greatest height above the surface at which reflect raises a point
+  // (the cloud top's; 0 without clouds).
+  double layer_height_m() const { return geography_.clouds ? geography_.cloud_height_m : 0.0; }
   // Adds weight x the point's SRF (its layers blended) to `srf`.
   void add_srf(const SurfacePoint& point, double weight, std::vector<double>& srf) const;
   // The temperature or the material varies over a part.

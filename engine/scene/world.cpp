@@ -248,20 +248,50 @@ Vec3 WorldObject::toward_observer_body() const {
   return -(placed.body_to_frame.transpose() * placed.position_m).normalized();
 }
 
-double WorldObject::sun_fraction(const Vec3& point_frame_m) const {
+double WorldObject::sun_fraction(const Vec3& point_frame_m, const ShadowCasters* near) const {
   const SunLight& sun = world_->sun;
-  const double f = geometry::solar_disk_visible_fraction(point_frame_m, sun.position_m, sun.radius_m, occulters_[0]);
-  if (f > 0 && !part_shadows_.empty() && !(central_body && point_frame_m == placed.position_m)) {
+  const double f = geometry::solar_disk_visible_fraction(point_frame_m, sun.position_m, sun.radius_m,
+                                                         near ? near->occulters[0] : occulters_[0]);
+  const std::vector<const WorldObject*>& part_shadows = near ? near->part_shadows : part_shadows_;
+  if (f > 0 && !part_shadows.empty() && !(central_body && point_frame_m == placed.position_m)) {
     const Vec3 to_sun = sun.position_m - point_frame_m;
     const double d = to_sun.norm();
-    for (const WorldObject* o : part_shadows_)
+    for (const WorldObject* o : part_shadows)
       if (geometry::parts_block_ray(o->placed, o->bounding_radius_m, point_frame_m, to_sun / d, d)) return 0.0;
   }
   return f;
 }
 
+void WorldObject::shadow_casters_near(const Vec3& centre_frame_m, double radius_m, ShadowCasters& out) const {
+  const World& w = *world_;
+  // Margins against can_shade's straight-cone hull of the region and the
+  // light (conservative to ~1e-5 of the radii): 1 % of each radius, and the
+  // reflecting layers' height (SurfaceModel::reflect raises the point).
+  constexpr double kMargin = 1.01;
+  const double region_m = kMargin * (radius_m + surface->layer_height_m()) + 1.0;
+  const auto inflated = [&](geometry::Occulter o) {
+    o.equatorial_radius_m *= kMargin;
+    o.polar_radius_m *= kMargin;
+    return o;
+  };
+  out.occulters.resize(occulters_.size());
+  for (std::size_t j = 0; j < occulters_.size(); ++j) {
+    const Vec3& light = j == 0 ? w.sun.position_m : w.lights[j - 1].position_m;
+    const double light_radius = j == 0 ? w.sun.radius_m : w.lights[j - 1].radius_m;
+    out.occulters[j].clear();
+    for (const geometry::Occulter& o : occulters_[j])
+      if (can_shade(centre_frame_m, region_m, light, light_radius, inflated(o))) out.occulters[j].push_back(o);
+  }
+  out.part_shadows.clear();
+  for (const WorldObject* o : part_shadows_)
+    if (can_shade(centre_frame_m, region_m, w.sun.position_m, w.sun.radius_m,
+                  geometry::Occulter::sphere(o->placed.position_m, kMargin * o->bounding_radius_m)))
+      out.part_shadows.push_back(o);
+}
+
 void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const Vec3& toward,
-                                           const radiometry::Brdf& brdf, bool sun_only, std::vector<double>& out) const {
+                                           const radiometry::Brdf& brdf, bool sun_only, std::vector<double>& out,
+                                           const ShadowCasters* near) const {
   const World& w = *world_;
   const std::size_t count = out.size();
   // The Sun (eq. 6): E = L_tab dOmega_sun, times the visible fraction of its disc.
@@ -271,7 +301,7 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     const Vec3 I = to_sun / d;
     const double cos_i = I.dot(n);
     if (cos_i > 0) {
-      const double f = sun_fraction(p);
+      const double f = sun_fraction(p, near);
       if (f > 0) {
         double g = f * universe::sun_projected_solid_angle_sr(d) * cos_i * brdf.value(I, toward, n);
         // A planet's resolved disc (Lambertian patches) carries its observed
@@ -324,7 +354,7 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     }
     const double cos_i = I.dot(n);
     if (cos_i <= 0) continue;
-    const std::vector<geometry::Occulter>& occulters = occulters_[k + 1];
+    const std::vector<geometry::Occulter>& occulters = near ? near->occulters[k + 1] : occulters_[k + 1];
     const double visible = occulters.empty() ? 1.0  // (d > radius: nothing hides any of it)
                                              : geometry::solar_disk_visible_fraction(p, src.position_m, src.radius_m,
                                                                                      occulters);
@@ -443,7 +473,7 @@ std::vector<double> WorldObject::spectral_radiance(std::int32_t part, const Vec3
 }
 
 double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
-                                       bool interpolated) const {
+                                       bool interpolated, const ShadowCasters* near) const {
   if (plain()) return plain_radiance(part);
   if (under_atmosphere_) {  // eq. 9 interval by interval: the path changes with the point
     thread_local std::vector<double> L, E;  // per-sample scratch (eq. 8 sources below allocate their own)
@@ -470,7 +500,7 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
       surface->reflect(
           point,
           [&](const radiometry::Brdf& brdf, double height_m, std::vector<double>& into) {
-            add_reflected_irradiance(p + height_m * n, n, -d, brdf, false, into);
+            add_reflected_irradiance(p + height_m * n, n, -d, brdf, false, into, near);
           },
           L, E);
       emits = !(w.view.spectral.integrate(L) > surface->emission_bound() / kNegligible);
@@ -494,7 +524,7 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
     surface->reflect(
         point,
         [&](const radiometry::Brdf& brdf, double height_m, std::vector<double>& into) {
-          add_reflected_irradiance(p + height_m * n, n, toward, brdf, false, into);
+          add_reflected_irradiance(p + height_m * n, n, toward, brdf, false, into, near);
         },
         L, E);
     reflected = view().integrate(L);
@@ -521,7 +551,7 @@ double WorldObject::patch_radiance(std::int32_t patch) const {
 
 void WorldObject::shading_point(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
                                 Vec3& shade_point_body, Vec3& normal_body, std::int32_t facet) const {
-  if (world_->view.fidelity.scene_mode != SceneMode::coarse || under_atmosphere_) {
+  if (shades_each_sample()) {
     shade_point_body = point_body_m;
     normal_body = hit_normal_body;
     return;
@@ -533,13 +563,16 @@ void WorldObject::shading_point(std::int32_t part, const Vec3& point_body_m, con
   normal_body = p.normal_body;
 }
 
-double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
-                                std::int32_t facet) const {
-  if (plain()) return plain_radiance(part);
+bool WorldObject::shades_each_sample() const {
   // (under its atmosphere the Earth is shaded at each sample in coarse mode
   // too: eq. 9's path is the sample's line of sight, not the patch centre's)
-  if (world_->view.fidelity.scene_mode != SceneMode::coarse || under_atmosphere_)
-    return effective_radiance(part, point_body_m, hit_normal_body, true);
+  return world_->view.fidelity.scene_mode != SceneMode::coarse || under_atmosphere_;
+}
+
+double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
+                                std::int32_t facet, const ShadowCasters* near) const {
+  if (plain()) return plain_radiance(part);
+  if (shades_each_sample()) return effective_radiance(part, point_body_m, hit_normal_body, true, near);
   return patch_radiance(geometry::patch_at_facet(tessellation(), placed.parts, part, facet, point_body_m, hit_normal_body));
 }
 

@@ -283,6 +283,17 @@ class WorldCache {
 };
 
 class World;
+class WorldObject;
+
+// The bodies that may shade the lights of a receiver at the points of a
+// small region of it (a tile of samples: WorldObject::shadow_casters_near),
+// laid out as its own lists: per light (0 the Sun, 1 + k lights[k]) the
+// occulters, and the vehicles that shade by their parts. Those left out hide
+// nothing of any light anywhere in the region, so results are unchanged.
+struct ShadowCasters {
+  std::vector<std::vector<geometry::Occulter>> occulters;
+  std::vector<const WorldObject*> part_shadows;
+};
 
 class WorldObject {
  public:
@@ -331,8 +342,10 @@ class WorldObject {
                                         const Vec3& toward, bool sun_only = false) const;
   // Its band integral (eq. 48) toward the observer; emission through the
   // L(T) table when `interpolated`.
+  // `near`: the shadow casters of the point's region (shadow_casters_near),
+  // or null for all of this object's.
   double effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
-                            bool interpolated = false) const;
+                            bool interpolated = false, const ShadowCasters* near = nullptr) const;
   // The effective radiance a sample ending at point_body_m on `part`, with
   // the outward normal hit_normal_body there (the ray caster's), sees, as the
   // scene mode says (spec 4.2): a part's value for plain surfaces; the value
@@ -340,7 +353,14 @@ class WorldObject {
   // patch); the point's own in smooth mode. `facet`: the mesh triangle the
   // ray caster hit (Hit::facet; -1 for analytic shapes), whose patch it is.
   double radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
-                     std::int32_t facet = -1) const;
+                     std::int32_t facet = -1, const ShadowCasters* near = nullptr) const;
+  // Of the bodies that may shade this object's lights (its occulters and
+  // part shadows), those that may shade them at some point within radius_m
+  // of centre_frame_m (observer frame), or of a reflecting layer above it,
+  // into `out`.
+  void shadow_casters_near(const Vec3& centre_frame_m, double radius_m, ShadowCasters& out) const;
+  // radiance_at shades each sample's own point (not coarse mode's patches).
+  bool shades_each_sample() const;
   // The point and normal at which that radiance is evaluated (the patch
   // centre and its normal in coarse mode, the point itself and the hit's
   // normal in smooth mode).
@@ -397,7 +417,7 @@ class WorldObject {
   // penumbra between, sunlight 1) against every other body; aircraft and
   // ground vehicles shade by their parts, 0 or 1 (geometry/part_shadow.hpp;
   // not at a central body's centre, whose eq. 7 disc they hide nothing of).
-  double sun_fraction(const Vec3& point_frame_m) const;
+  double sun_fraction(const Vec3& point_frame_m, const ShadowCasters* near = nullptr) const;
 
   // The spectral view of this object's light at the sensor: the world's, or
   // with the atmosphere on, the world's seen through the path from the
@@ -439,7 +459,8 @@ class WorldObject {
   const std::vector<AreaSourcePatch>& area_source(std::size_t light) const;
   // Adds sum_i E_i (I_i . N) BRDF(I_i, N, O) at a point (eq. 4's bracket).
   void add_reflected_irradiance(const Vec3& point_frame, const Vec3& normal_frame, const Vec3& toward,
-                                const radiometry::Brdf& brdf, bool sun_only, std::vector<double>& out) const;
+                                const radiometry::Brdf& brdf, bool sun_only, std::vector<double>& out,
+                                const ShadowCasters* near = nullptr) const;
   const World* world_ = nullptr;
   std::unique_ptr<radiometry::SpectralView> seen_through_;  // the atmosphere's T_out, if its path crosses air
   std::vector<double> sun_transmittance_;  // eq. 9's T_in of the Sun's light at the centre; empty: 1

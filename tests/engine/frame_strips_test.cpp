@@ -66,7 +66,7 @@ TEST_P(FrameStrips, EqualTheWholeFrameTo1e9) {
   const eoir::Frame& strips = e->render("Sensor");
   ASSERT_TRUE(strips.scene_in_strips);
   EXPECT_TRUE(strips.scene.image.radiance_W_cm2_sr.empty());
-  EXPECT_TRUE(strips.scene_display.empty());
+  EXPECT_TRUE(strips.scene_display().empty());
   EXPECT_EQ(strips.scene.rays, whole_rays);  // every sample and edge sub-sample cast once
   const double difference = max_relative_difference(whole_mean, strips.sensor.mean_electrons);
   RecordProperty("max_relative_difference", std::to_string(difference));

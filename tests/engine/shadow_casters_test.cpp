@@ -1,0 +1,113 @@
+// The frame's occultation tests see, per tile of samples, only the bodies
+// whose shadow can reach the tile (WorldObject::shadow_casters_near): every
+// sample must shade exactly as against all of the object's occulters
+// (spec 4.1.5.3, eqs. 4 and 6: the Sun's visible fraction at the point).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "engine.hpp"
+#include "geo_host.hpp"
+
+namespace {
+using eoir::Value;
+using eoir::universe::ObjectKind;
+using Vec3 = Eigen::Vector3d;
+
+const eoir::scene::WorldObject& object_named(const eoir::scene::World& w, const std::string& name) {
+  for (const auto& o : w.objects)
+    if (o->name == name) return *o;
+  throw std::runtime_error("no object " + name);
+}
+
+// The Earth in the visible band by day from GEO, smooth mode, and a 300 km
+// sphere 10,000 km above the sub-solar point: its umbra (~250 km) and
+// penumbra (~45 km wide) fall on the day side, away from the sphere's own
+// image (the Sun ~45 deg from the host's line of sight in early May).
+std::unique_ptr<eoir::Engine> shadow_scene() {
+  auto e = eoir_test::geo_host_engine("2010-05-05T12:00:00Z");
+  for (const char* p : {"horizontal_pixels", "vertical_pixels"}) e->set_property("Sensor", p, Value(std::int64_t{64}));
+  for (const char* p : {"horizontal_fov_deg", "vertical_fov_deg"}) e->set_property("Sensor", p, Value(24.0));
+  e->set_property("Sensor", "band_low_um", Value(0.45));
+  e->set_property("Sensor", "band_high_um", Value(0.75));
+  e->set_property("Sensor", "scene_mode", Value(std::string("smooth")));
+  e->set_property("Sensor", "noise_enabled", Value(false));
+  e->set_property("Sensor", "saturation_enabled", Value(false));
+  const double look[4] = {std::sqrt(0.5), 0, -std::sqrt(0.5), 0}, zero[3] = {0, 0, 0}, identity[4] = {1, 0, 0, 0};
+  e->push_state("Sensor", e->time(), 0, zero, zero, look);
+  // The Sun's direction from the Earth at the frame time, from a first world.
+  const eoir::Frame& probe = e->render("Sensor");
+  const eoir::scene::World& w = *probe.world;
+  const Vec3 earth = object_named(w, "Earth").placed.position_m;
+  const Vec3 to_sun = (w.sun.position_m - earth).normalized();
+  const Vec3 sphere = (6371e3 + 10000e3) * to_sun;  // Earth-centred (the engine's J2000 states)
+  const double position_m[3] = {sphere.x(), sphere.y(), sphere.z()};
+  e->add_object(ObjectKind::satellite, "Shade");
+  e->set_property("Shade", "dimensions_m", Value(std::vector<double>{300e3}));
+  e->push_state("Shade", e->time(), 0, position_m, zero, identity);
+  return e;
+}
+}  // namespace
+
+TEST(ShadowCasters, TilesShadeExactlyAsAgainstEveryOcculter) {
+  auto e = shadow_scene();
+  const eoir::Frame& f = e->render("Sensor");
+  const eoir::scene::World& w = *f.world;
+  const eoir::scene::WorldObject& earth = object_named(w, "Earth");
+  const auto& grid = w.grid();
+  const std::int64_t width = grid.width(), height = grid.height();
+  const auto& hits = f.scene.hits;
+  const auto& radiance = f.scene.image.radiance_W_cm2_sr;
+  ASSERT_EQ(radiance.size(), static_cast<std::size_t>(width * height));
+  std::int64_t compared = 0, penumbra = 0, umbra = 0;
+  for (std::int64_t r = 1; r + 1 < height; ++r)
+    for (std::int64_t c = 1; c + 1 < width; ++c) {
+      const auto i = static_cast<std::size_t>(r * width + c);
+      if (hits[i].object_id != earth.id) continue;
+      // (edge samples are means of sub-samples: not this comparison)
+      bool edge = false;
+      for (const std::size_t j : {i - 1, i + 1, i - static_cast<std::size_t>(width), i + static_cast<std::size_t>(width)})
+        edge = edge || hits[j].object_id != hits[i].object_id || hits[j].part != hits[i].part;
+      if (edge) continue;
+      const Vec3 d = w.sample_direction(static_cast<double>(c), static_cast<double>(r));
+      const eoir::geometry::Hit hit = w.caster.cast(d);
+      ASSERT_EQ(hit.object_id, earth.id);
+      const Vec3 point_frame = hit.range_m * d;
+      const Vec3 point_body = earth.seen.body_to_frame.transpose() * (point_frame - earth.seen.position_m);
+      // Against all of the Earth's occulters (no tile's list).
+      const double all = earth.radiance_at(hit.part, point_body, earth.direction_to_body(hit.normal_frame), hit.facet);
+      EXPECT_EQ(radiance[i], all) << "sample (" << c << ", " << r << ")";
+      ++compared;
+      const double fraction = earth.sun_fraction(point_frame);
+      if (fraction > 0 && fraction < 1) ++penumbra;
+      if (fraction == 0 && earth.normal_at(hit.part, point_body).dot(earth.direction_to_body(w.sun.position_m - point_frame).normalized()) > 0)
+        ++umbra;
+    }
+  EXPECT_GT(compared, 10000);
+  // The comparison covers the shadow: samples in the penumbra and the umbra.
+  EXPECT_GE(penumbra, 10);
+  EXPECT_GE(umbra, 10);
+}
+
+TEST(ShadowCasters, FarTilesKeepNoCasterNearOnesKeepTheShade) {
+  auto e = shadow_scene();
+  const eoir::Frame& f = e->render("Sensor");
+  const eoir::scene::World& w = *f.world;
+  const eoir::scene::WorldObject& earth = object_named(w, "Earth");
+  const Vec3 to_sun = (w.sun.position_m - earth.placed.position_m).normalized();
+  const Vec3 sub_solar = earth.placed.position_m + 6378e3 * to_sun;
+  const Vec3 far = earth.placed.position_m + 6378e3 * (to_sun + Vec3(0, 0, 1)).normalized();  // ~2,000+ km away
+  eoir::scene::ShadowCasters near_shade, far_away;
+  earth.shadow_casters_near(sub_solar, 50e3, near_shade);
+  earth.shadow_casters_near(far, 50e3, far_away);
+  const auto is_shade = [](const eoir::geometry::Occulter& o) { return o.equatorial_radius_m == 300e3; };
+  ASSERT_FALSE(near_shade.occulters.empty());
+  ASSERT_FALSE(far_away.occulters.empty());
+  // The sphere may hide the Sun near the sub-solar point, nowhere near the far one.
+  EXPECT_EQ(std::count_if(near_shade.occulters[0].begin(), near_shade.occulters[0].end(), is_shade), 1);
+  EXPECT_EQ(std::count_if(far_away.occulters[0].begin(), far_away.occulters[0].end(), is_shade), 0);
+}

@@ -241,6 +241,24 @@ std::size_t shade_rows(const World& world, std::int64_t lo, std::int64_t hi, std
           o.shadow_casters_near(0.5 * (least + most), 0.5 * (most - least).norm(), near[objects_near].second);
           return &near[objects_near++].second;
         };
+        // Samples shaded at their own points: their surface points first,
+        // the map cells of all of them asked of the memory together (scattered
+        // over maps of tens of MB, each would otherwise wait on its own).
+        thread_local SurfacePoint points[geometry::GridTile::kMaxSamples];
+        bool own_point[geometry::GridTile::kMaxSamples];
+        for (int k = 0; k < tile.count; ++k) {
+          own_point[k] = false;
+          if (tile.object[k] < 0) continue;
+          const WorldObject& o = *world.objects[static_cast<std::size_t>(tile.object[k])];
+          if (o.plain() || !o.shades_each_sample()) continue;
+          const Vec3 point_body =
+              o.seen.body_to_frame.transpose() * (tile.range_m[k] * tile.direction[k] - o.seen.position_m);
+          points[k] = o.surface->located(SurfaceSite{tile.part[k], point_body, o.direction_to_body(tile.normal_frame[k])});
+          o.surface->prefetch_maps(points[k]);
+          own_point[k] = true;
+        }
+        for (int k = 0; k < tile.count; ++k)
+          if (own_point[k]) world.objects[static_cast<std::size_t>(tile.object[k])]->surface->read_maps(points[k]);
         for (int k = 0; k < tile.count; ++k) {
           const std::int64_t c = tile.column[k], r = tile.row[k];
           const std::int32_t object = tile.object[k], part = tile.part[k];
@@ -257,9 +275,14 @@ std::size_t shade_rows(const World& world, std::int64_t lo, std::int64_t hi, std
             radiance[i] = o.plain_radiance(part);
             continue;
           }
+          if (own_point[k]) {
+            const SurfaceSite& site = points[k].site;
+            radiance[i] = o.effective_radiance(part, site.point_body_m, site.normal_body, true, casters_near(object, o),
+                                               &points[k]);
+            continue;
+          }
           const Vec3 point_body = o.seen.body_to_frame.transpose() * (tile.range_m[k] * d - o.seen.position_m);
-          radiance[i] = o.radiance_at(part, point_body, o.direction_to_body(tile.normal_frame[k]), tile.facet[k],
-                                      o.shades_each_sample() ? casters_near(object, o) : nullptr);
+          radiance[i] = o.radiance_at(part, point_body, o.direction_to_body(tile.normal_frame[k]), tile.facet[k]);
         }
       },
       threads, extended);

@@ -136,10 +136,28 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
 }
 
 SurfacePoint SurfaceModel::at(const SurfaceSite& site) const {
+  SurfacePoint point = located(site);
+  read_maps(point);
+  return point;
+}
+
+SurfacePoint SurfaceModel::located(const SurfaceSite& site) const {
   SurfacePoint point{site, parts_[index(site.part)].spectrum};
   const Geography& g = geography_;
   if (g.bitmap() || g.clouds || (g.climatology && g.land_mask))
     g.locate(site.point_body_m, point);
+  return point;
+}
+
+void SurfaceModel::prefetch_maps(const SurfacePoint& point) const {
+  const Geography& g = geography_;
+  for (const universe::RasterLevel* map : {g.land_cover, g.land_brightness, g.albedo})
+    if (map) map->prefetch(point.latitude_deg, point.longitude_deg);
+  if (g.climatology && g.land_mask) g.land_mask->prefetch(point.latitude_deg, point.longitude_deg);  // (temperature_K)
+}
+
+void SurfaceModel::read_maps(SurfacePoint& point) const {
+  const Geography& g = geography_;
   if (g.clouds)  // (bilinear: the map's 0.7-deg cells are wider than a GEO view's samples)
     point.cloud_fraction = std::clamp(g.clouds->interpolated(point.latitude_deg, point.longitude_deg), 0.0, 1.0);
   if (g.land_cover) {
@@ -156,7 +174,6 @@ SurfacePoint SurfaceModel::at(const SurfaceSite& site) const {
     if (const SurfaceSpectrum* s = g.albedo_spectra[g.albedo->at(point.latitude_deg, point.longitude_deg)])
       point.spectrum = s;
   }
-  return point;
 }
 
 double SurfaceModel::temperature_K(const SurfacePoint& point) const {

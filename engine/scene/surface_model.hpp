@@ -90,6 +90,12 @@ class SurfaceModel {
   std::size_t part_count() const { return parts_.size(); }
   // The material at a site (the map's in bitmap mode).
   SurfacePoint at(const SurfaceSite& site) const;
+  // The same in two steps, so that the map cells of many points can be
+  // asked of the memory together: the point's coordinates (located), the
+  // cells it reads asked for (prefetch_maps), then read (read_maps).
+  SurfacePoint located(const SurfaceSite& site) const;
+  void prefetch_maps(const SurfacePoint& point) const;
+  void read_maps(SurfacePoint& point) const;
   // The temperature there (the thermal model or the climatology).
   double temperature_K(const SurfacePoint& point) const;
   // Some part (or map class) reflects light in the band.

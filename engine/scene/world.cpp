@@ -473,13 +473,14 @@ std::vector<double> WorldObject::spectral_radiance(std::int32_t part, const Vec3
 }
 
 double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
-                                       bool interpolated, const ShadowCasters* near) const {
+                                       bool interpolated, const ShadowCasters* near,
+                                       const SurfacePoint* surface_point) const {
   if (plain()) return plain_radiance(part);
   if (under_atmosphere_) {  // eq. 9 interval by interval: the path changes with the point
     thread_local std::vector<double> L, E;  // per-sample scratch (eq. 8 sources below allocate their own)
     const World& w = *world_;
     const Vec3 d = to_frame(point_body_m).normalized();
-    const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
+    const SurfacePoint point = surface_point ? *surface_point : surface->at(SurfaceSite{part, point_body_m, normal_body});
     // (Under clouds the exact sum: their light comes from another height.)
     const auto table = surface->tabulated() || point.cloud_fraction > 0.0
                            ? w.atmosphere.surface_emission.end()
@@ -515,7 +516,7 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
     to_sensor(L, point_body_m, normal_body, false);
     return w.view.spectral.integrate(L) + emitted + w.atmosphere.scatter_band(d);
   }
-  const SurfacePoint point = surface->at(SurfaceSite{part, point_body_m, normal_body});
+  const SurfacePoint point = surface_point ? *surface_point : surface->at(SurfaceSite{part, point_body_m, normal_body});
   double reflected = 0;
   if (surface->reflects(point)) {
     const Vec3 p = to_frame(point_body_m), n = placed.body_to_frame * normal_body, toward = -p.normalized();
@@ -570,9 +571,10 @@ bool WorldObject::shades_each_sample() const {
 }
 
 double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
-                                std::int32_t facet, const ShadowCasters* near) const {
+                                std::int32_t facet, const ShadowCasters* near,
+                                const SurfacePoint* surface_point) const {
   if (plain()) return plain_radiance(part);
-  if (shades_each_sample()) return effective_radiance(part, point_body_m, hit_normal_body, true, near);
+  if (shades_each_sample()) return effective_radiance(part, point_body_m, hit_normal_body, true, near, surface_point);
   return patch_radiance(geometry::patch_at_facet(tessellation(), placed.parts, part, facet, point_body_m, hit_normal_body));
 }
 

@@ -343,9 +343,11 @@ class WorldObject {
   // Its band integral (eq. 48) toward the observer; emission through the
   // L(T) table when `interpolated`.
   // `near`: the shadow casters of the point's region (shadow_casters_near),
-  // or null for all of this object's.
+  // or null for all of this object's; `surface_point`: surface->at of the
+  // point if made already, or null.
   double effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
-                            bool interpolated = false, const ShadowCasters* near = nullptr) const;
+                            bool interpolated = false, const ShadowCasters* near = nullptr,
+                            const SurfacePoint* surface_point = nullptr) const;
   // The effective radiance a sample ending at point_body_m on `part`, with
   // the outward normal hit_normal_body there (the ray caster's), sees, as the
   // scene mode says (spec 4.2): a part's value for plain surfaces; the value
@@ -353,7 +355,8 @@ class WorldObject {
   // patch); the point's own in smooth mode. `facet`: the mesh triangle the
   // ray caster hit (Hit::facet; -1 for analytic shapes), whose patch it is.
   double radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
-                     std::int32_t facet = -1, const ShadowCasters* near = nullptr) const;
+                     std::int32_t facet = -1, const ShadowCasters* near = nullptr,
+                     const SurfacePoint* surface_point = nullptr) const;
   // Of the bodies that may shade this object's lights (its occulters and
   // part shadows), those that may shade them at some point within radius_m
   // of centre_frame_m (observer frame), or of a reflecting layer above it,

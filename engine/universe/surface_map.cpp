@@ -112,17 +112,29 @@ const std::uint8_t* RasterLevel::decode_row(std::int64_t i) const {
   return expected;  // another thread decoded it first
 }
 
-std::uint8_t RasterLevel::at(double latitude_deg, double longitude_deg) const {
+void RasterLevel::cell(double latitude_deg, double longitude_deg, std::int64_t& i, std::int64_t& j) const {
   // Integer cells per degree where the map has them (exact registration).
   const double per_degree = cells_per_degree_ > 0 ? static_cast<double>(cells_per_degree_) : 1.0 / cell_deg_;
-  auto i = floor_index((lat_north_deg_ - latitude_deg) * per_degree);
+  i = floor_index((lat_north_deg_ - latitude_deg) * per_degree);
   i = std::clamp<std::int64_t>(i, 0, height_ - 1);
   double lon = longitude_deg - lon_west_deg_;  // wrapped into [0, 360): fmod only off [-360, 360)
   if (lon < -360.0 || lon >= 360.0) lon = std::fmod(lon, 360.0);
   if (lon < 0) lon += 360.0;
-  auto j = floor_index(lon * per_degree);
+  j = floor_index(lon * per_degree);
   j = std::clamp<std::int64_t>(j, 0, width_ - 1);
+}
+
+std::uint8_t RasterLevel::at(double latitude_deg, double longitude_deg) const {
+  std::int64_t i = 0, j = 0;
+  cell(latitude_deg, longitude_deg, i, j);
   return row(i)[j];
+}
+
+void RasterLevel::prefetch(double latitude_deg, double longitude_deg) const {
+  std::int64_t i = 0, j = 0;
+  cell(latitude_deg, longitude_deg, i, j);
+  if (const std::uint8_t* r = rows_[static_cast<std::size_t>(i)].load(std::memory_order_acquire))
+    __builtin_prefetch(r + j);
 }
 
 double RasterLevel::interpolated(double latitude_deg, double longitude_deg) const {

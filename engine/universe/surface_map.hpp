@@ -26,6 +26,9 @@ class RasterLevel {
   // bilinearly between the four cell centres around (lat, lon) (longitude
   // wrapped on a global map, latitude held at the first and last rows).
   double interpolated(double latitude_deg, double longitude_deg) const;
+  // Asks the memory for the cell `at` would read (where its row is decoded):
+  // a caller about to read many scattered cells fetches them together.
+  void prefetch(double latitude_deg, double longitude_deg) const;
   double cell_deg() const { return cell_deg_; }
   double value_scale() const { return value_scale_; }
   double value_offset() const { return value_offset_; }
@@ -38,6 +41,8 @@ class RasterLevel {
     return decode_row(i);
   }
   const std::uint8_t* decode_row(std::int64_t i) const;
+  // The row and column of the cell holding (lat, lon).
+  void cell(double latitude_deg, double longitude_deg, std::int64_t& i, std::int64_t& j) const;
   std::string data_path_;
   bool rle_ = false;
   std::int64_t width_ = 0, height_ = 0, cells_per_degree_ = 0;

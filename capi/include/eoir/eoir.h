@@ -460,6 +460,8 @@ EOIR_API eoir_status eoir_image_info_get(eoir_engine engine, const char* sensor,
  * if no frame was rendered. Display kinds use eoir_image_get_bytes. */
 EOIR_API eoir_status eoir_image_get(eoir_engine engine, const char* sensor, int32_t kind, double* values,
                                     size_t capacity);
+/* The display images (spec 4.1.2) as bytes; made on the first request for a frame
+ * (a render that nobody reads the displays of does not pay for them). */
 EOIR_API eoir_status eoir_image_get_bytes(eoir_engine engine, const char* sensor, int32_t kind, uint8_t* bytes,
                                           size_t capacity);
 /* 1.7: the detector stage's ADU image (width*height values, EOIR_IMAGE_SENSOR_ADU) into a caller buffer;

@@ -142,6 +142,13 @@ const std::vector<Spec>& fidelity_properties() {
                                    "Point sources: bound on the memory of the model's tables (offsets are "
                                    "coarsened, or the direct tail dropped, to stay within it)",
                                    [](F& f) -> auto& { return f.point_table_max_mib; }, Range{0.25, 65536}, true));
+    t.push_back(bool_property<F>(
+        "point_quadrant_tables",
+        "Point sources on pixels wider than 16 lambda F#: tables from the pixel-integrated line-spread functions "
+        "plus the corner terms of the PSF's quadrant energies (milliseconds to build, within 1e-4 of the energy "
+        "per pixel); false: as before (2-D FFT tables up to 32 lambda F#, seconds to build for wide fields; the "
+        "plain line-spread product beyond, off by up to 1.4 % near a pixel corner)",
+        [](F& f) -> auto& { return f.point_quadrant_tables; }, true));
     t.push_back(number_property<F>("streak_steps_per_pixel", "per pixel",
                                    "Streaks: sub-steps along the segment a point source covers during the "
                                    "integration, at least this many per pixel",

@@ -80,6 +80,10 @@ struct Fidelity {
   double point_offset_steps_per_lambda_f = 4.0;  // sub-pixel offsets per lambda F# of that table (cubic in the offset)
   PointTail point_tail = PointTail::automatic;   // how the energy beyond the core box is added
   double point_table_max_mib = 64.0;             // bound on the model's tables (MiB)
+  // Pixels wider than 16 lambda F#: tables from line-spread functions plus
+  // the corner terms of the PSF's quadrant energies (corner_correction.hpp);
+  // false: as before (2-D FFT tables up to 32 lambda F#, the plain product beyond).
+  bool point_quadrant_tables = true;
   // Streaks (a source moving during the integration): sub-steps along the
   // segment, at least this many per pixel and per lambda F#.
   double streak_steps_per_pixel = 8.0;

@@ -149,6 +149,13 @@ const std::vector<Spec>& fidelity_properties() {
         "per pixel); false: as before (2-D FFT tables up to 32 lambda F#, seconds to build for wide fields; the "
         "plain line-spread product beyond, off by up to 1.4 % near a pixel corner)",
         [](F& f) -> auto& { return f.point_quadrant_tables; }, true));
+    t.push_back(number_property<F>(
+        "point_quadrant_lambda_f", "lambda F#",
+        "Point sources: pixels wider than this take the quadrant tables (with point_quadrant_tables); below 16 "
+        "their build costs milliseconds where the 2-D FFT tables take tens (a 64-pixel array at 0.8 lambda F#), "
+        "their results differ from those tables' by their errors (about 1e-3 of the energy per pixel), and each "
+        "source costs more (the corner terms over its core box, some 40 us at 0.8 lambda F#)",
+        [](F& f) -> auto& { return f.point_quadrant_lambda_f; }, Range{0, 32}, true));
     t.push_back(number_property<F>("streak_steps_per_pixel", "per pixel",
                                    "Streaks: sub-steps along the segment a point source covers during the "
                                    "integration, at least this many per pixel",

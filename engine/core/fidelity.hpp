@@ -84,6 +84,7 @@ struct Fidelity {
   // the corner terms of the PSF's quadrant energies (corner_correction.hpp);
   // false: as before (2-D FFT tables up to 32 lambda F#, the plain product beyond).
   bool point_quadrant_tables = true;
+  double point_quadrant_lambda_f = 16.0;  // from this pixel width (lambda F#) on; 0: every pixel
   // Streaks (a source moving during the integration): sub-steps along the
   // segment, at least this many per pixel and per lambda F#.
   double streak_steps_per_pixel = 8.0;

@@ -18,26 +18,31 @@ constexpr std::int64_t kMaxTableFft = 2048;  // FFT size cap of the table builds
 constexpr double kTablePeriodPerExtent = 2.0;
 constexpr double kAliasPeriodPixels = 64.0;
 
-// Pixels wider than this many lambda F# (along either axis) take E(u) as
-// the product of the pixel-integrated line-spread functions along x and y
-// (pixel_integrated_lsf) plus the corner terms of G (corner_correction.hpp):
-// the inclusion-exclusion of the PSF's quadrant energies, exact up to G's
-// table (about 1e-4 of the energy per pixel). The 2-D FFT path's OTF fold
-// costs pi (period / lambda F#)^2 evaluations per table; a window of 500
-// lambda F# needs some 1e6 to 1e7 (0.2 s at 18 lambda F#, seconds at 140,
-// minutes at 1e4: a 64-pixel camera of 120 deg), the 1-D path milliseconds
-// (G's table, a few ms, is kept per optics). Without point_quadrant_tables:
-// the plain product from 32 lambda F# (off by up to 1.4 % of the energy for
-// a source near a pixel corner, where G peaks), the 2-D FFT tables below.
-constexpr double kSeparablePixelLambdaF = 16.0;
+// Pixels wider than point_quadrant_lambda_f (16 lambda F# by default, along
+// either axis) take E(u) as the product of the pixel-integrated line-spread
+// functions along x and y (pixel_integrated_lsf) plus the corner terms of G
+// (corner_correction.hpp): the inclusion-exclusion of the PSF's quadrant
+// energies, exact up to G's table (about 1e-4 of the energy per pixel). The
+// 2-D FFT path's OTF fold costs pi (period / lambda F#)^2 evaluations per
+// table; a window of 500 lambda F# needs some 1e6 to 1e7 (0.2 s at 18
+// lambda F#, seconds at 140, minutes at 1e4: a 64-pixel camera of 120 deg),
+// the 1-D path milliseconds (G's table, a few ms, is kept per optics).
+// Without point_quadrant_tables: the plain product from 32 lambda F# (off
+// by up to 1.4 % of the energy for a source near a pixel corner, where G
+// peaks), the 2-D FFT tables below.
 constexpr double kPlainProductPixelLambdaF = 32.0;
+// The line-spread function falls only as 2 A / x^2 (A = pi^-3, x in lambda
+// F#), so its FFT period P must be long: the copies put about 8 A W / P^2
+// of the energy into a window of half-width W (8e-6 for W = 513 lambda F#,
+// the 500 lambda F# window, at this P). A 1-D FFT of P / (lambda F# / 4)
+// points costs well under a millisecond.
 constexpr double kLsfPeriodLambdaF = 4096.0;
 
 }  // namespace
 
 bool separable_pixels(const OpticsModel& optics, const geometry::SampleGrid& g, const Fidelity& f) {
   return std::max(g.pitch_x_cm, g.pitch_y_cm) / (optics.diffraction_wavelength_cm * optics.f_number) >
-         (f.point_quadrant_tables ? kSeparablePixelLambdaF : kPlainProductPixelLambdaF);
+         (f.point_quadrant_tables ? f.point_quadrant_lambda_f : kPlainProductPixelLambdaF);
 }
 
 namespace {

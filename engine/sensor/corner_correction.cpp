@@ -17,7 +17,7 @@ constexpr double kNearLambdaF = 16.0;          // the grid's reach for a diffrac
 constexpr double kNearJitterSigmas = 8.0;      // plus this many jitter sigmas
 constexpr double kNearBlurDiameters = 2.0;     // and defocus blur diameters
 constexpr std::int64_t kMinQuadrature = 256;   // midpoint nodes per axis on [0, 1] (error ~4e-5)
-constexpr double kQuadraturePerLambdaF = 16.0;  // and at least this many per lambda F# of reach
+constexpr double kQuadraturePerLambdaF = 10.0;  // and at least this many per lambda F# of reach (5e-5 at 8)
 constexpr std::int64_t kTailQuadrature = 2048;  // for T (error ~1e-7)
 constexpr std::size_t kKept = 8;                // optics kept process-wide
 

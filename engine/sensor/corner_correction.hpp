@@ -12,7 +12,7 @@
 // optics serves any pitch. G is odd in x and in y (zero on the axes), at
 // most about 0.018 (near x = y = 0.75 lambda F#, the diffraction-limited
 // PSF), and about 0.019 / r far out: for a source near a pixel corner the
-// product alone is off by up to 1.8 % of the source's energy at any pixel
+// product alone is off by over 1 % of the source's energy at any pixel
 // width.
 //
 // Computed (lambda F# = 1, cutoff 1) as the sine transform
@@ -26,7 +26,11 @@
 // integrated over the corner gives
 //   G(x, y) = 2 A / (x + y + r) - T(x) T(y),  T = 1 - C,
 // within 1e-6 of the transform from 16 lambda F# on (diffraction limited).
-// Between the grid's nodes: Catmull-Rom (bicubic), about 1e-4.
+// Between the grid's nodes: Catmull-Rom (bicubic); against the Airy pattern
+// integrated directly the pixel energies agree within 2e-5. Build: about
+// 2.4 ms (67^2 nodes, a 256^2 quadrature) for a diffraction-limited optics,
+// growing as near_lf^3 with jitter and defocus; kept per process for each
+// optics in lambda F# units (8 at most).
 #pragma once
 #include <cstdint>
 #include <memory>

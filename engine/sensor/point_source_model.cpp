@@ -27,7 +27,7 @@ constexpr double kAliasPeriodPixels = 64.0;
 // table; a window of 500 lambda F# needs some 1e6 to 1e7 (0.2 s at 18
 // lambda F#, seconds at 140, minutes at 1e4: a 64-pixel camera of 120 deg),
 // the 1-D path milliseconds (G's table, a few ms, is kept per optics).
-// Without point_quadrant_tables: the plain product from 32 lambda F# (off
+// With point_wide_pixels product: the plain product from 32 lambda F# (off
 // by up to 1.4 % of the energy for a source near a pixel corner, where G
 // peaks), the 2-D FFT tables below.
 constexpr double kPlainProductPixelLambdaF = 32.0;
@@ -38,11 +38,13 @@ constexpr double kPlainProductPixelLambdaF = 32.0;
 // points costs well under a millisecond.
 constexpr double kLsfPeriodLambdaF = 4096.0;
 
+bool quadrant(const Fidelity& f) { return f.point_wide_pixels == WidePixelTables::quadrant; }
+
 }  // namespace
 
 bool separable_pixels(const OpticsModel& optics, const geometry::SampleGrid& g, const Fidelity& f) {
   return std::max(g.pitch_x_cm, g.pitch_y_cm) / (optics.diffraction_wavelength_cm * optics.f_number) >
-         (f.point_quadrant_tables ? f.point_quadrant_lambda_f : kPlainProductPixelLambdaF);
+         (quadrant(f) ? f.point_quadrant_lambda_f : kPlainProductPixelLambdaF);
 }
 
 namespace {
@@ -64,7 +66,7 @@ void sample_pixel_energy(const OpticsModel& optics, const geometry::SampleGrid& 
       std::max(kTablePeriodPerExtent * extent_px, kAliasPeriodPixels / std::cbrt(pixel_in_lambda_f));
   if (separable_pixels(optics, g, f)) {
     const double lsf_period_px =
-        f.point_quadrant_tables ? std::max(period_px, kLsfPeriodLambdaF / pixel_in_lambda_f) : period_px;
+        quadrant(f) ? std::max(period_px, kLsfPeriodLambdaF / pixel_in_lambda_f) : period_px;
     const double fine_x = g.pitch_x_cm / static_cast<double>(steps), fine_y = g.pitch_y_cm / static_cast<double>(steps);
     const std::vector<double> ex =
         pixel_integrated_lsf(optics, g.pitch_x_cm, fine_x, half, delta * fine_x, lsf_period_px * g.pitch_x_cm, otf);
@@ -198,7 +200,7 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
   m.separable = separable_pixels(optics, g, f);
   // The radial OTF table of the line-spread functions, made once.
   const std::vector<double> otf = m.separable ? radial_otf_table(optics, f.otf_table_size) : std::vector<double>{};
-  if (m.separable && f.point_quadrant_tables) {
+  if (m.separable && quadrant(f)) {
     m.corners = corner_correction(optics, f.otf_table_size);
     m.pixel_x_lf = g.pitch_x_cm / lambda_f_cm;
     m.pixel_y_lf = g.pitch_y_cm / lambda_f_cm;
@@ -229,7 +231,7 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
       const double delta = s % 2 ? 0.5 : 0.0;
       const double period_px = std::max({kTablePeriodPerExtent * 2.0 * static_cast<double>(half) / static_cast<double>(s),
                                          kAliasPeriodPixels / std::cbrt(pixel_in_lambda_f),
-                                         f.point_quadrant_tables ? kLsfPeriodLambdaF / pixel_in_lambda_f : 0.0});
+                                         quadrant(f) ? kLsfPeriodLambdaF / pixel_in_lambda_f : 0.0});
       auto axis = [&](double pitch_cm, std::vector<double>& table) {
         const double fine = pitch_cm / static_cast<double>(s);
         const std::vector<double> e =

@@ -49,7 +49,7 @@
 // tails (and E0) come from the same sum at their offsets. Built in a few
 // milliseconds at any width (G's table, a few ms more, kept per optics),
 // where the 2-D fold takes 0.2 s at 18 lambda F# and seconds from 140 on.
-// Without point_quadrant_tables (as before): the plain product, from 32
+// With point_wide_pixels product (as before): the plain product, from 32
 // lambda F#.
 // Build: one FFT of up to 2048^2 points per table, 0.2-0.7 s for the
 // sensors above on a 2-core machine (more for pixels wider than about 50
@@ -83,7 +83,7 @@ struct PointSourceModel {
   // core_x[i (2c + 1) + d + c] = E_x(d - phi_i) (core_y likewise); core empty.
   bool separable = false;
   std::vector<double> core_x, core_y;
-  // With it (point_quadrant_tables), the corner terms of G
+  // With it (point_wide_pixels quadrant), the corner terms of G
   // (corner_correction.hpp), added for each source at its own offset over
   // the core box (and in the direct tail and E0 at their offsets);
   // pixel_x_lf, pixel_y_lf: the pitch in lambda F#. Null: the plain product.
@@ -112,7 +112,7 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
 
 // Whether the tables come from the product of pixel-integrated line-spread
 // functions (with the corner terms of G: pixels wider than 16 lambda F#;
-// without point_quadrant_tables, the plain product from 32 lambda F#;
+// with point_wide_pixels product, the plain product from 32 lambda F#;
 // point_source_model.cpp) rather than 2-D FFTs of the OTF.
 bool separable_pixels(const OpticsModel& optics, const geometry::SampleGrid& grid, const Fidelity& fidelity = {});
 

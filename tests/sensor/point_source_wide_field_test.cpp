@@ -66,7 +66,7 @@ TEST(Spec_5_11_2_PointSourceWideField, EnergyOnTheImageEqualsIrradianceTimesResp
 }
 
 // The narrow sensors keep the 2-D FFT tables (their results are unchanged):
-// up to 16 lambda F# with point_quadrant_tables (the default), up to 32
+// up to 16 lambda F# with point_wide_pixels quadrant (the default), up to 32
 // without it (as before).
 TEST(Spec_5_11_2_PointSourceWideField, NarrowPixelsKeepTheTwoDimensionalTables) {
   for (const SensorParameters& p : {eoir::sensor::testing::table3(), eoir::sensor::testing::nyquist(),
@@ -75,7 +75,7 @@ TEST(Spec_5_11_2_PointSourceWideField, NarrowPixelsKeepTheTwoDimensionalTables) 
     EXPECT_FALSE(separable_pixels(model->optics, model->grid));
   }
   eoir::Fidelity before;
-  before.point_quadrant_tables = false;
+  before.point_wide_pixels = eoir::WidePixelTables::product;
   for (const SensorParameters& p : {eoir::sensor::testing::table3(), eoir::sensor::testing::nyquist(),
                                eoir::sensor::testing::sampled(30.0, 16)}) {
     const auto model = resolve_sensor(p);
@@ -238,7 +238,7 @@ void expect_matches_the_exact_path(const SensorParameters& p) {
         total += v;
         worst = std::max(worst, std::abs(v - e));
       }
-    if (k == 0) {  // the total at a corner offset (a long-period FFT: 16 s at 3,581 lambda F#)
+    if (k == 0) {  // the total at a corner offset (a long-period FFT: about 15 s at 3,581 lambda F#)
       const FocalPlaneSamples truth = energy_on_detector(model->optics, px, py, w, -fx * px, -fy * py, long_period);
       worst_total = std::max(worst_total, std::abs(total - truth.sum()));
       exact_path_error = std::max(exact_path_error, std::abs(exact.sum() - truth.sum()));

@@ -29,6 +29,11 @@ const std::vector<std::string>& point_tail_names() {
   return names;
 }
 
+const std::vector<std::string>& wide_pixel_tables_names() {
+  static const std::vector<std::string> names{"quadrant", "product"};
+  return names;
+}
+
 const std::vector<Spec>& fidelity_properties() {
   static const std::vector<Spec> table = [] {
     std::vector<Spec> t;
@@ -142,6 +147,21 @@ const std::vector<Spec>& fidelity_properties() {
                                    "Point sources: bound on the memory of the model's tables (offsets are "
                                    "coarsened, or the direct tail dropped, to stay within it)",
                                    [](F& f) -> auto& { return f.point_table_max_mib; }, Range{0.25, 65536}, true));
+    t.push_back(enum_property<F, WidePixelTables>(
+        "point_wide_pixels",
+        "Point sources on pixels many lambda F# wide: quadrant (wider than point_quadrant_lambda_f: the "
+        "pixel-integrated line-spread functions plus the corner terms of the PSF's quadrant energies, milliseconds "
+        "to build, within 1e-4 of the energy per pixel) or product (as before the quadrant tables: 2-D FFT tables up "
+        "to 32 lambda F#, seconds to build for wide fields; the plain line-spread product beyond, off by up to "
+        "1.4 % of the energy near a pixel corner)",
+        [](F& f) -> auto& { return f.point_wide_pixels; }, wide_pixel_tables_names(), true));
+    t.push_back(number_property<F>(
+        "point_quadrant_lambda_f", "lambda F#",
+        "Point sources: pixels wider than this take the quadrant tables (point_wide_pixels quadrant); below 16 "
+        "their build costs milliseconds where the 2-D FFT tables take tens (a 64-pixel array at 0.8 lambda F#), "
+        "their results differ from those tables' by their errors (about 1e-3 of the energy per pixel), and each "
+        "source costs more (the corner terms over its core box, some 40 us at 0.8 lambda F#)",
+        [](F& f) -> auto& { return f.point_quadrant_lambda_f; }, Range{0, 32}, true));
     t.push_back(number_property<F>("streak_steps_per_pixel", "per pixel",
                                    "Streaks: sub-steps along the segment a point source covers during the "
                                    "integration, at least this many per pixel",

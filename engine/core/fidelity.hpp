@@ -31,6 +31,13 @@ enum class SpectralQuadrature : int { interval_midpoint = 0, interval_left_edge 
 // (automatic). Both keep each source's energy, centroid and second moments.
 enum class PointTail : int { automatic = 0, direct = 1, multilevel = 2 };
 
+// Point-source tables of pixels many lambda F# wide
+// (sensor/point_source_model.hpp): quadrant (from point_quadrant_lambda_f
+// on: the line-spread product plus the corner terms of the PSF's quadrant
+// energies) or product (the plain line-spread product from 32 lambda F# on,
+// 2-D FFT tables below, as the engine had them before the quadrant tables).
+enum class WidePixelTables : int { quadrant = 0, product = 1 };
+
 // How far the PSF reaches in the focal plane: k_d lambda F# of diffraction
 // tail, k_j sigma of jitter (times the focal length) and k_f defocus blur
 // diameters delta / F#. An Airy pattern holds about 2 / (pi^2 k_d) of its
@@ -80,6 +87,8 @@ struct Fidelity {
   double point_offset_steps_per_lambda_f = 4.0;  // sub-pixel offsets per lambda F# of that table (cubic in the offset)
   PointTail point_tail = PointTail::automatic;   // how the energy beyond the core box is added
   double point_table_max_mib = 64.0;             // bound on the model's tables (MiB)
+  WidePixelTables point_wide_pixels = WidePixelTables::quadrant;  // tables of wide pixels
+  double point_quadrant_lambda_f = 16.0;  // quadrant tables from this pixel width (lambda F#) on; 0: every pixel
   // Streaks (a source moving during the integration): sub-steps along the
   // segment, at least this many per pixel and per lambda F#.
   double streak_steps_per_pixel = 8.0;
@@ -117,6 +126,7 @@ const std::vector<std::string>& scene_mode_names();
 const std::vector<std::string>& band_integration_names();
 const std::vector<std::string>& spectral_quadrature_names();
 const std::vector<std::string>& point_tail_names();
+const std::vector<std::string>& wide_pixel_tables_names();
 
 // Throws out_of_range naming the field unless every knob is in its range
 // (and psf_grid_size a power of two).

@@ -18,21 +18,33 @@ constexpr std::int64_t kMaxTableFft = 2048;  // FFT size cap of the table builds
 constexpr double kTablePeriodPerExtent = 2.0;
 constexpr double kAliasPeriodPixels = 64.0;
 
-// Pixels wider than this many lambda F# (along either axis) take E(u) as
-// the product of the pixel-integrated line-spread functions along x and y
-// (pixel_integrated_lsf): exact for a separable PSF, and for the radial one
-// off only where both edges of a pixel corner cut the PSF, a share of the
-// energy that falls as the pixel widens. The 2-D FFT path's OTF fold costs
-// pi (period / lambda F#)^2 evaluations per table, seconds at 140 lambda F#
-// and minutes at 1e4 (a 64-pixel camera of 120 deg); the 1-D one costs
-// milliseconds. The sum over the pixels stays the LSFs' sums' product, one.
-constexpr double kSeparablePixelLambdaF = 32.0;
+// Pixels wider than point_quadrant_lambda_f (16 lambda F# by default, along
+// either axis) take E(u) as the product of the pixel-integrated line-spread
+// functions along x and y (pixel_integrated_lsf) plus the corner terms of G
+// (corner_correction.hpp): the inclusion-exclusion of the PSF's quadrant
+// energies, exact up to G's table (about 1e-4 of the energy per pixel). The
+// 2-D FFT path's OTF fold costs pi (period / lambda F#)^2 evaluations per
+// table; a window of 500 lambda F# needs some 1e6 to 1e7 (0.2 s at 18
+// lambda F#, seconds at 140, minutes at 1e4: a 64-pixel camera of 120 deg),
+// the 1-D path milliseconds (G's table, a few ms, is kept per optics).
+// With point_wide_pixels product: the plain product from 32 lambda F# (off
+// by up to 1.4 % of the energy for a source near a pixel corner, where G
+// peaks), the 2-D FFT tables below.
+constexpr double kPlainProductPixelLambdaF = 32.0;
+// The line-spread function falls only as 2 A / x^2 (A = pi^-3, x in lambda
+// F#), so its FFT period P must be long: the copies put about 8 A W / P^2
+// of the energy into a window of half-width W (8e-6 for W = 513 lambda F#,
+// the 500 lambda F# window, at this P). A 1-D FFT of P / (lambda F# / 4)
+// points costs well under a millisecond.
+constexpr double kLsfPeriodLambdaF = 4096.0;
+
+bool quadrant(const Fidelity& f) { return f.point_wide_pixels == WidePixelTables::quadrant; }
 
 }  // namespace
 
-bool separable_pixels(const OpticsModel& optics, const geometry::SampleGrid& g) {
+bool separable_pixels(const OpticsModel& optics, const geometry::SampleGrid& g, const Fidelity& f) {
   return std::max(g.pitch_x_cm, g.pitch_y_cm) / (optics.diffraction_wavelength_cm * optics.f_number) >
-         kSeparablePixelLambdaF;
+         (quadrant(f) ? f.point_quadrant_lambda_f : kPlainProductPixelLambdaF);
 }
 
 namespace {
@@ -42,21 +54,26 @@ namespace {
 // offsets -1/2 + i / steps fall on samples). One FFT of at most kMaxTableFft
 // points when its period at this step is long enough; otherwise m x m FFTs
 // at m steps, interleaved (j = m i + r, r in [0, m)).
+// `otf`: the radial OTF table (radial_otf_table) for the separable path.
 template <class Store>
 void sample_pixel_energy(const OpticsModel& optics, const geometry::SampleGrid& g, std::int64_t steps,
-                         std::int64_t half, const Fidelity& f, Store&& store) {
+                         std::int64_t half, const Fidelity& f, const std::vector<double>& otf, Store&& store) {
   const double delta = steps % 2 ? 0.5 : 0.0;
   const double lambda_f_cm = optics.diffraction_wavelength_cm * optics.f_number;
   const double pixel_in_lambda_f = std::max(g.pitch_x_cm, g.pitch_y_cm) / lambda_f_cm;
   const double extent_px = 2.0 * static_cast<double>(half) / static_cast<double>(steps);
   const double period_px =
       std::max(kTablePeriodPerExtent * extent_px, kAliasPeriodPixels / std::cbrt(pixel_in_lambda_f));
-  if (separable_pixels(optics, g)) {
+  if (separable_pixels(optics, g, f)) {
+    const double lsf_period_px =
+        quadrant(f) ? std::max(period_px, kLsfPeriodLambdaF / pixel_in_lambda_f) : period_px;
     const double fine_x = g.pitch_x_cm / static_cast<double>(steps), fine_y = g.pitch_y_cm / static_cast<double>(steps);
-    const std::vector<double> ex = pixel_integrated_lsf(optics, g.pitch_x_cm, fine_x, half, delta * fine_x,
-                                                        period_px * g.pitch_x_cm, f.otf_table_size);
-    const std::vector<double> ey = pixel_integrated_lsf(optics, g.pitch_y_cm, fine_y, half, delta * fine_y,
-                                                        period_px * g.pitch_y_cm, f.otf_table_size);
+    const std::vector<double> ex =
+        pixel_integrated_lsf(optics, g.pitch_x_cm, fine_x, half, delta * fine_x, lsf_period_px * g.pitch_x_cm, otf);
+    const std::vector<double> ey =
+        g.pitch_y_cm == g.pitch_x_cm
+            ? ex
+            : pixel_integrated_lsf(optics, g.pitch_y_cm, fine_y, half, delta * fine_y, lsf_period_px * g.pitch_y_cm, otf);
     for (std::int64_t jy = -half; jy <= half; ++jy)
       for (std::int64_t jx = -half; jx <= half; ++jx)
         store(jx, jy, ex[static_cast<std::size_t>(jx + half)] * ey[static_cast<std::size_t>(jy + half)]);
@@ -110,6 +127,34 @@ std::vector<std::vector<std::pair<std::int64_t, std::int64_t>>> entries_of_sampl
   return out;
 }
 
+// The corner terms of G for the window's pixels |d| <= h at the half-pixel
+// offsets phi = -1/2 + i / 2 (i = 0..2 per axis): add(i_x, i_y, d_x, d_y,
+// G(X1, Y1) - G(X0, Y1) - G(X1, Y0) + G(X0, Y0)), the pixel spanning
+// [d - 1/2 - phi, d + 1/2 - phi] pixels from the source. G is evaluated
+// once on the half-pixel grid that holds every such corner.
+template <class Add>
+void half_pixel_corner_terms(const CornerCorrection& g, double pixel_x_lf, double pixel_y_lf, std::int64_t h,
+                             Add&& add) {
+  const std::int64_t n = 4 * h + 5;  // corner j <-> (j - 2h - 2) / 2 pixels
+  std::vector<double> gc(static_cast<std::size_t>(n * n));
+  for (std::int64_t jy = 0; jy < n; ++jy)
+    for (std::int64_t jx = 0; jx < n; ++jx)
+      gc[static_cast<std::size_t>(jy * n + jx)] = g.at(0.5 * static_cast<double>(jx - 2 * h - 2) * pixel_x_lf,
+                                                       0.5 * static_cast<double>(jy - 2 * h - 2) * pixel_y_lf);
+  // The corner d + 1/2 - phi_i = d + 1 - i / 2 is j = 2 d + 4 - i + 2 h; d - 1/2 - phi_i is j - 2.
+  for (std::int64_t iy = 0; iy < 3; ++iy)
+    for (std::int64_t ix = 0; ix < 3; ++ix)
+      for (std::int64_t dy = -h; dy <= h; ++dy) {
+        const std::int64_t y1 = 2 * dy + 4 - iy + 2 * h, y0 = y1 - 2;
+        for (std::int64_t dx = -h; dx <= h; ++dx) {
+          const std::int64_t x1 = 2 * dx + 4 - ix + 2 * h, x0 = x1 - 2;
+          add(ix, iy, dx, dy,
+              gc[static_cast<std::size_t>(y1 * n + x1)] - gc[static_cast<std::size_t>(y1 * n + x0)] -
+                  gc[static_cast<std::size_t>(y0 * n + x1)] + gc[static_cast<std::size_t>(y0 * n + x0)]);
+        }
+      }
+}
+
 std::int64_t core_bytes(std::int64_t c, std::int64_t s) { return (2 * c + 1) * (2 * c + 1) * (s + 3) * (s + 3) * 4; }
 std::int64_t tail_bytes(std::int64_t h) {
   const std::int64_t s = PointSourceModel::tail_steps + 1;
@@ -122,6 +167,7 @@ std::int64_t PointSourceModel::bytes() const {
   std::int64_t total = static_cast<std::int64_t>((core.size() + tail.size()) * sizeof(float) +
                                                  (core_x.size() + core_y.size()) * sizeof(double));
   for (const HaloLevel& l : halo) total += static_cast<std::int64_t>(l.kernel.size() * sizeof(double));
+  if (corners) total += corners->bytes();  // shared by the sensors of these optics
   return total;
 }
 
@@ -151,7 +197,14 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
   auto core_half = [&] {
     return m.window_half <= m.taper_start ? m.window_half : std::min(2 * m.taper_start, m.window_half);
   };
-  m.separable = separable_pixels(optics, g);
+  m.separable = separable_pixels(optics, g, f);
+  // The radial OTF table of the line-spread functions, made once.
+  const std::vector<double> otf = m.separable ? radial_otf_table(optics, f.otf_table_size) : std::vector<double>{};
+  if (m.separable && quadrant(f)) {
+    m.corners = corner_correction(optics, f.otf_table_size);
+    m.pixel_x_lf = g.pitch_x_cm / lambda_f_cm;
+    m.pixel_y_lf = g.pitch_y_cm / lambda_f_cm;
+  }
   auto table_bytes = [&] {  // the 2-D core, or the two 1-D ones of doubles
     const std::int64_t c = core_half(), s = m.core_steps;
     return m.separable ? 2 * (2 * c + 1) * (s + 3) * 8 : core_bytes(c, s);
@@ -176,22 +229,26 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
       // One line-spread function per axis (the 1-D tables hold S + 3 offsets
       // of 2c + 1 pixels: no memory bound needed).
       const double delta = s % 2 ? 0.5 : 0.0;
-      const double period_px = std::max(kTablePeriodPerExtent * 2.0 * static_cast<double>(half) / static_cast<double>(s),
-                                        kAliasPeriodPixels / std::cbrt(pixel_in_lambda_f));
+      const double period_px = std::max({kTablePeriodPerExtent * 2.0 * static_cast<double>(half) / static_cast<double>(s),
+                                         kAliasPeriodPixels / std::cbrt(pixel_in_lambda_f),
+                                         quadrant(f) ? kLsfPeriodLambdaF / pixel_in_lambda_f : 0.0});
       auto axis = [&](double pitch_cm, std::vector<double>& table) {
         const double fine = pitch_cm / static_cast<double>(s);
         const std::vector<double> e =
-            pixel_integrated_lsf(optics, pitch_cm, fine, half, delta * fine, period_px * pitch_cm, f.otf_table_size);
+            pixel_integrated_lsf(optics, pitch_cm, fine, half, delta * fine, period_px * pitch_cm, otf);
         table.assign(static_cast<std::size_t>(offsets * box), 0.0);
         for (std::int64_t j = -half; j <= half; ++j)
           for (const auto& [i, d] : entries[static_cast<std::size_t>(j + half)])
             table[static_cast<std::size_t>(i * box + d + c)] = e[static_cast<std::size_t>(j + half)];
       };
       axis(g.pitch_x_cm, m.core_x);
-      axis(g.pitch_y_cm, m.core_y);
+      if (g.pitch_y_cm == g.pitch_x_cm)
+        m.core_y = m.core_x;
+      else
+        axis(g.pitch_y_cm, m.core_y);
     } else {
       m.core.assign(static_cast<std::size_t>(offsets * offsets * box * box), 0.0f);
-      sample_pixel_energy(optics, g, s, half, f, [&](std::int64_t jx, std::int64_t jy, double v) {
+      sample_pixel_energy(optics, g, s, half, f, otf, [&](std::int64_t jx, std::int64_t jy, double v) {
         for (const auto& [iy, dy] : entries[static_cast<std::size_t>(jy + half)])
           for (const auto& [ix, dx] : entries[static_cast<std::size_t>(jx + half)])
             m.core[static_cast<std::size_t>((iy * offsets + ix) * box * box + (dy + c) * box + dx + c)] =
@@ -212,7 +269,7 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
     e0.step_x_cm = g.pitch_x_cm;
     e0.step_y_cm = g.pitch_y_cm;
     e0.values.assign(static_cast<std::size_t>(window * window), 0.0);
-    sample_pixel_energy(optics, g, s, half, f, [&](std::int64_t jx, std::int64_t jy, double v) {
+    sample_pixel_energy(optics, g, s, half, f, otf, [&](std::int64_t jx, std::int64_t jy, double v) {
       if (jx % s == 0 && jy % s == 0 && std::abs(jx) <= s * H && std::abs(jy) <= s * H)
         e0.values[static_cast<std::size_t>((jy / s + H) * window + jx / s + H)] = v;
       if (!direct) return;
@@ -222,6 +279,14 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
             m.tail[static_cast<std::size_t>((iy * offsets + ix) * window * window + (dy + H) * window + dx + H)] =
                 static_cast<float>(v);
     });
+    if (m.corners)
+      half_pixel_corner_terms(*m.corners, m.pixel_x_lf, m.pixel_y_lf, H,
+                              [&](std::int64_t ix, std::int64_t iy, std::int64_t dx, std::int64_t dy, double v) {
+                                if (ix == 1 && iy == 1) e0.values[static_cast<std::size_t>((dy + H) * window + dx + H)] += v;
+                                if (direct && (std::abs(dx) > c || std::abs(dy) > c))
+                                  m.tail[static_cast<std::size_t>((iy * offsets + ix) * window * window +
+                                                                  (dy + H) * window + dx + H)] += static_cast<float>(v);
+                              });
     m.halo = halo_levels(e0, m.taper_start);
   }
   m.streak_steps_per_pixel_x =

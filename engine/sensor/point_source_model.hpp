@@ -41,20 +41,27 @@
 // falls below 4 per lambda F# only for pixels wider than about 100 lambda F#
 // (where the 2048-point FFT also shortens the core table's period to a few
 // pixels: the accuracy then degrades, to about 1 % for 140 lambda F#).
-// Pixels wider than 32 lambda F# (separable_pixels) instead hold the core as
+// Pixels wider than 16 lambda F# (separable_pixels) instead hold the core as
 // two 1-D tables, E(u) = E_x(u_x) E_y(u_y) (core_x, core_y: S + 3 offsets of
-// 2c + 1 pixels, within the same bound), from pixel_integrated_lsf;
-// their tails come from the same product. Built in milliseconds (7-37 ms
-// from 137 to 9,100 lambda F#), where the 2-D fold takes seconds.
+// 2c + 1 pixels, within the same bound), from pixel_integrated_lsf, plus
+// the corner terms of the PSF's quadrant energies (corner_correction.hpp),
+// evaluated for each source at its own offset over the core box; their
+// tails (and E0) come from the same sum at their offsets. Built in a few
+// milliseconds at any width (G's table, a few ms more, kept per optics),
+// where the 2-D fold takes 0.2 s at 18 lambda F# and seconds from 140 on.
+// With point_wide_pixels product (as before): the plain product, from 32
+// lambda F#.
 // Build: one FFT of up to 2048^2 points per table, 0.2-0.7 s for the
 // sensors above on a 2-core machine (more for pixels wider than about 50
 // lambda F#: seconds at 140 lambda F#).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/fidelity.hpp"
 #include "geometry/sample_grid.hpp"
+#include "sensor/corner_correction.hpp"
 #include "sensor/otf.hpp"
 #include "sensor/point_source_halo.hpp"
 
@@ -70,12 +77,18 @@ struct PointSourceModel {
   // phi) at phi = -1/2 + (i - 1) / S, i = 0..S + 2 (one offset beyond each
   // end for the cubic).
   std::vector<float> core;
-  // Pixels wider than 32 lambda F# (separable_pixels): the core instead as
+  // Pixels wider than 16 lambda F# (separable_pixels): the core instead as
   // E_x(d_x - phi_x) E_y(d_y - phi_y), the pixel-integrated line-spread
   // functions, each at the same S + 3 offsets:
   // core_x[i (2c + 1) + d + c] = E_x(d - phi_i) (core_y likewise); core empty.
   bool separable = false;
   std::vector<double> core_x, core_y;
+  // With it (point_wide_pixels quadrant), the corner terms of G
+  // (corner_correction.hpp), added for each source at its own offset over
+  // the core box (and in the direct tail and E0 at their offsets);
+  // pixel_x_lf, pixel_y_lf: the pitch in lambda F#. Null: the plain product.
+  std::shared_ptr<const CornerCorrection> corners;
+  double pixel_x_lf = 0, pixel_y_lf = 0;
   // tail[(i_y 3 + i_x) (2H + 1)^2 + (d_y + H)(2H + 1) + d_x + H]: the same at
   // phi = -1/2 + i / 2, zero on the core box; empty when over the memory
   // bound (or without a tail).
@@ -98,9 +111,10 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
                                           const Fidelity& fidelity);
 
 // Whether the tables come from the product of pixel-integrated line-spread
-// functions (pixels wider than 32 lambda F#, point_source_model.cpp) rather
-// than 2-D FFTs of the OTF.
-bool separable_pixels(const OpticsModel& optics, const geometry::SampleGrid& grid);
+// functions (with the corner terms of G: pixels wider than 16 lambda F#;
+// with point_wide_pixels product, the plain product from 32 lambda F#;
+// point_source_model.cpp) rather than 2-D FFTs of the OTF.
+bool separable_pixels(const OpticsModel& optics, const geometry::SampleGrid& grid, const Fidelity& fidelity = {});
 
 // The window half-width H in pixels for point sources: the reach of
 // fidelity.point_psf_reach, at least 2, at most the array's larger side and

@@ -43,7 +43,31 @@ struct Scratch {
   std::vector<float> acc;       // the core box
   std::vector<double> taper_x;  // w along x
   std::vector<double> along_x, along_y;  // the separable core's factors
+  std::vector<double> corners;           // and G at the core box's pixel corners
 };
+
+// The corner terms of G (corner_correction.hpp) added to the separable core
+// box `a` of a source at offset (phi_x, phi_y): corner k (k = -c - 1 .. c)
+// lies k + 1/2 - phi pixels from the source, and pixel d spans corners d - 1
+// and d: G(d, d) - G(d - 1, d) - G(d, d - 1) + G(d - 1, d - 1).
+void add_corner_terms(const PointSourceModel& m, double phi_x, double phi_y, std::int64_t x_lo, std::int64_t x_hi,
+                      std::int64_t y_lo, std::int64_t y_hi, float* a, std::vector<double>& g) {
+  const std::int64_t c = m.core_half, box = 2 * c + 1, n = box + 1;
+  g.resize(static_cast<std::size_t>(n * n));
+  for (std::int64_t ky = y_lo - 1; ky <= y_hi; ++ky) {
+    const double y_lf = (static_cast<double>(ky) + 0.5 - phi_y) * m.pixel_y_lf;
+    for (std::int64_t kx = x_lo - 1; kx <= x_hi; ++kx)
+      g[static_cast<std::size_t>((ky + c + 1) * n + kx + c + 1)] =
+          m.corners->at((static_cast<double>(kx) + 0.5 - phi_x) * m.pixel_x_lf, y_lf);
+  }
+  for (std::int64_t dy = y_lo; dy <= y_hi; ++dy) {
+    const double* g1 = &g[static_cast<std::size_t>((dy + c + 1) * n + c + 1)];
+    const double* g0 = g1 - n;
+    float* row = a + (dy + c) * box + c;
+    for (std::int64_t dx = x_lo; dx <= x_hi; ++dx)
+      row[dx] = static_cast<float>(static_cast<double>(row[dx]) + g1[dx] - g1[dx - 1] - g0[dx] + g0[dx - 1]);
+  }
+}
 
 // The core box of one source, cubic in the offset, multiplied by the taper w
 // when the tail is multilevel.
@@ -77,6 +101,7 @@ void add_core(const PointSourceModel& m, double x, double y, double electrons, b
     for (std::size_t i = from; i < to; ++i)
       a[i] = static_cast<float>(scratch.along_y[i / static_cast<std::size_t>(box)] *
                                 scratch.along_x[i % static_cast<std::size_t>(box)]);
+    if (m.corners) add_corner_terms(m, ax.offset, ay.offset, x_lo, x_hi, y_lo, y_hi, a, scratch.corners);
   } else {
     for (int b = 0; b < 4; ++b)
       for (int k = 0; k < 4; ++k) {

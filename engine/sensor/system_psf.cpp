@@ -213,8 +213,24 @@ FocalPlaneSamples pixel_integrated_psf(const OpticsModel& optics, double pitch_x
                         numerics);
 }
 
+std::vector<double> radial_otf_table(const OpticsModel& optics, std::int64_t otf_table_size) {
+  const double cutoff = optics.cutoff_cycles_per_cm();
+  std::vector<double> otf_table(static_cast<std::size_t>(otf_table_size + 2), 0.0);
+  for (std::int64_t t = 0; t <= otf_table_size; ++t)
+    otf_table[static_cast<std::size_t>(t)] =
+        optics.system(cutoff * static_cast<double>(t) / static_cast<double>(otf_table_size));
+  return otf_table;
+}
+
 std::vector<double> pixel_integrated_lsf(const OpticsModel& optics, double pitch_cm, double step_cm, std::int64_t half,
                                          double centre_cm, double period_cm, std::int64_t otf_table_size) {
+  return pixel_integrated_lsf(optics, pitch_cm, step_cm, half, centre_cm, period_cm,
+                              radial_otf_table(optics, otf_table_size));
+}
+
+std::vector<double> pixel_integrated_lsf(const OpticsModel& optics, double pitch_cm, double step_cm, std::int64_t half,
+                                         double centre_cm, double period_cm, const std::vector<double>& otf_table) {
+  const auto otf_table_size = static_cast<std::int64_t>(otf_table.size()) - 2;
   const std::int64_t k = fft_subdivisions(optics, step_cm, 1);
   const double dx = step_cm / static_cast<double>(k);
   const double span_cm = static_cast<double>(2 * half + 1) * step_cm;
@@ -226,10 +242,6 @@ std::vector<double> pixel_integrated_lsf(const OpticsModel& optics, double pitch
   const std::int64_t bins = n / 2 + 1;
   const double cutoff = optics.cutoff_cycles_per_cm();
   // The radial OTF tabulated on [0, cutoff] as integrated_psf does.
-  std::vector<double> otf_table(static_cast<std::size_t>(otf_table_size + 2), 0.0);
-  for (std::int64_t t = 0; t <= otf_table_size; ++t)
-    otf_table[static_cast<std::size_t>(t)] =
-        optics.system(cutoff * static_cast<double>(t) / static_cast<double>(otf_table_size));
   const double table_scale = static_cast<double>(otf_table_size) / cutoff;
   const fftw::ComplexBuffer spectrum = fftw::complex_buffer(static_cast<std::size_t>(bins));
   // Riemann sum over d xi = 1 / (n dx) of OTF(xi, 0) pitch sinc(xi pitch)

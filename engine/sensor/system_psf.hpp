@@ -93,6 +93,14 @@ FocalPlaneSamples pixel_integrated_psf(const OpticsModel& optics, double pitch_x
 // to one. otf_table_size as for integrated PSFs.
 std::vector<double> pixel_integrated_lsf(const OpticsModel& optics, double pitch_cm, double step_cm, std::int64_t half,
                                          double centre_cm, double period_cm, std::int64_t otf_table_size);
+// The same with the radial OTF table given (radial_otf_table), for callers
+// that make several.
+std::vector<double> pixel_integrated_lsf(const OpticsModel& optics, double pitch_cm, double step_cm, std::int64_t half,
+                                         double centre_cm, double period_cm, const std::vector<double>& otf_table);
+
+// The radial OTF at cutoff k / otf_table_size, k = 0..otf_table_size (and a
+// zero past the end), the table the PSF folds interpolate linearly.
+std::vector<double> radial_otf_table(const OpticsModel& optics, std::int64_t otf_table_size);
 
 // (c) Ensquared energy, eq. 42: EOD of the centre pixel for a point source at
 // its centre.

@@ -33,7 +33,10 @@
 //    10 um diffraction: 54 lambda F# at 120 deg, 3,600 at 179). Counters:
 //    with_ms, without_ms, ratio = with / without (target: at most 2), and
 //    kept_ratio: the same on a sensor whose tables are already built (every
-//    frame after the first).
+//    frame after the first); quadrant_tables: 1 where the tables are the
+//    quadrant ones (pixels over point_quadrant_lambda_f, 16 lambda F#).
+//  - BM_PointSourceWideFieldAllQuadrant/fov_deg/camera: the same with the
+//    quadrant tables for every pixel (point_quadrant_lambda_f = 0).
 //
 // Target (not asserted): at most 1 us per star at 10,000 stars.
 #include <benchmark/benchmark.h>
@@ -209,8 +212,7 @@ SensorParameters wide_field(double fov_deg, std::int64_t camera) {
   return p;
 }
 
-void BM_PointSourceWideField(benchmark::State& state) {
-  const SensorParameters p = wide_field(static_cast<double>(state.range(0)), state.range(1));
+void wide_field_renders(benchmark::State& state, const SensorParameters& p) {
   const auto probe = eoir::sensor::resolve_sensor(p);
   const auto stars = star_field(*probe, 5), empty = star_field(*probe, 0);
   std::mt19937_64 rng(1);
@@ -240,6 +242,19 @@ void BM_PointSourceWideField(benchmark::State& state) {
   state.counters["kept_without_ms"] = 1e3 * kept_without_s / n;
   state.counters["pixel_lambda_f"] =
       probe->grid.pitch_x_cm / (probe->optics.diffraction_wavelength_cm * probe->optics.f_number);
+  state.counters["quadrant_tables"] = probe->point_sources().separable ? 1 : 0;
+}
+
+void BM_PointSourceWideField(benchmark::State& state) {
+  wide_field_renders(state, wide_field(static_cast<double>(state.range(0)), state.range(1)));
+}
+
+// The same with the quadrant tables for every pixel width
+// (point_quadrant_lambda_f = 0; the default takes them from 16 lambda F#).
+void BM_PointSourceWideFieldAllQuadrant(benchmark::State& state) {
+  SensorParameters p = wide_field(static_cast<double>(state.range(0)), state.range(1));
+  p.fidelity.point_quadrant_lambda_f = 0.0;
+  wide_field_renders(state, p);
 }
 
 }  // namespace
@@ -268,6 +283,11 @@ BENCHMARK(BM_PointSourceWideField)
     ->Args({60, 1})
     ->Args({120, 1})
     ->Args({179, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_PointSourceWideFieldAllQuadrant)
+    ->Args({3, 1})
+    ->Args({10, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(BM_PerOffsetFft)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -18,7 +18,7 @@ double SampleGrid::tan_y(double r) const {
 }
 
 Eigen::Vector3d SampleGrid::direction_body(double c, double r) const {
-  return Eigen::Vector3d(tan_x(c), tan_y(r), 1.0).normalized();
+  return direction_of_tangents(tan_x(c), tan_y(r));
 }
 
 double SampleGrid::sample_solid_angle_sr(std::int64_t c, std::int64_t r) const {

@@ -38,6 +38,11 @@ struct SampleGrid {
   double tan_y(double r) const;
   // Unit direction in the sensor body frame.
   Eigen::Vector3d direction_body(double c, double r) const;
+  // The same from the tangents tan_x(c) and tan_y(r) (made once per column
+  // and row where many samples are cast).
+  static Eigen::Vector3d direction_of_tangents(double tan_x, double tan_y) {
+    return Eigen::Vector3d(tan_x, tan_y, 1.0).normalized();
+  }
   // Solid angle of one sample at (c, r) (sr), for display irradiance.
   double sample_solid_angle_sr(std::int64_t c, std::int64_t r) const;
   // The smallest angle between neighbouring samples (rad), on the axis.

@@ -180,7 +180,13 @@ std::size_t shade_rows(const World& world, std::int64_t lo, std::int64_t hi, std
   radiance.resize(count);
   // (r: the grid's row; cast_grid's rows count from lo)
   const auto direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r); };
-  const auto local_direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r + lo); };
+  // The directions of rows [lo, hi) from tangents made once per column and row.
+  std::vector<double> tan_x(static_cast<std::size_t>(w)), tan_y(static_cast<std::size_t>(hi - lo));
+  for (std::int64_t c = 0; c < w; ++c) tan_x[static_cast<std::size_t>(c)] = grid.tan_x(static_cast<double>(c));
+  for (std::int64_t r = lo; r < hi; ++r) tan_y[static_cast<std::size_t>(r - lo)] = grid.tan_y(static_cast<double>(r));
+  const auto local_direction = [&](std::int64_t c, std::int64_t r) {
+    return world.sample_direction_of_tangents(tan_x[static_cast<std::size_t>(c)], tan_y[static_cast<std::size_t>(r)]);
+  };
   const bool sky_varies = world.atmosphere.sky != nullptr;  // under the atmosphere, with the line of sight
   const double background = world.sky.background_radiance_W_cm2_sr;
   // The sky under the atmosphere on a coarse grid (every kSkyStep-th

@@ -334,14 +334,16 @@ bool cone_meets(const Cone& cone, const PartBound& b) {
 }  // namespace
 
 namespace {
-// A tile near one object with mesh parts: its analytic parts sample by
-// sample, then each mesh part's triangles for the tile's rays in packets of
-// 16 (coherent primary rays: Embree traverses a packet together), nearest
-// strictly closer wins as in the intersect callback.
+// A tile near one object: its parts directly, in double, as the intersect
+// callback would (nearest strictly closer wins): the tile's directions
+// first, then each analytic part for all of them (independent rays back to
+// back, so that their long chains of divisions and roots overlap), each
+// mesh part's triangles in packets of 16 (coherent primary rays: Embree
+// traverses a packet together).
 template <class Direction, class Emit>
-void cast_tile_with_meshes(const ObjectData& od, const std::vector<const PartBound*>& tile_bounds, std::int64_t c0,
-                           std::int64_t r0, std::int64_t c1, std::int64_t r1, const Direction& direction,
-                           const Emit& emit) {
+void cast_tile_near_one_object(const ObjectData& od, const std::vector<const PartBound*>& tile_bounds,
+                               std::int64_t c0, std::int64_t r0, std::int64_t c1, std::int64_t r1,
+                               const Direction& direction, const Emit& emit) {
   constexpr int kMax = 64;  // an 8 x 8 tile
   const int width = static_cast<int>(c1 - c0), n = static_cast<int>((c1 - c0) * (r1 - r0));
   Vec3 d[kMax], d_part[kMax], normal_part[kMax];
@@ -354,10 +356,19 @@ void cast_tile_with_meshes(const ObjectData& od, const std::vector<const PartBou
     best_part[i] = -1;
     best_facet[i] = -1;
   }
+  // (The rays into the part's axes as cast() turns them, rounding included:
+  // transposed in the product where no part is a mesh, through the
+  // transposed matrix where one is.)
+  const bool any_mesh = std::any_of(tile_bounds.begin(), tile_bounds.end(), [&](const PartBound* b) {
+    return od.parts[b->part].geom.kind == ShapeKind::mesh;
+  });
   for (const PartBound* b : tile_bounds) {
     const PartData& p = od.parts[b->part];
     const Mat3 to_part = p.part_to_frame.transpose();
-    for (int i = 0; i < n; ++i) d_part[i] = to_part * d[i];
+    if (any_mesh)
+      for (int i = 0; i < n; ++i) d_part[i] = to_part * d[i];
+    else
+      for (int i = 0; i < n; ++i) d_part[i] = p.part_to_frame.transpose() * d[i];
     if (p.geom.kind != ShapeKind::mesh) {
       for (int i = 0; i < n; ++i) {
         double t = 0;
@@ -497,12 +508,9 @@ void RayCaster::cast_grid_tiles(std::int64_t width, std::int64_t height,
                                   std::all_of(tile_bounds.begin(), tile_bounds.end(), [&](const PartBound* b) {
                                     return b->object == tile_bounds[0]->object;
                                   });
-          if (one_object && std::any_of(tile_bounds.begin(), tile_bounds.end(), [&](const PartBound* b) {
-                const ObjectData& od = objects[static_cast<std::size_t>(b->object)];
-                return od.parts[b->part].geom.kind == ShapeKind::mesh;
-              })) {
-            cast_tile_with_meshes(objects[static_cast<std::size_t>(tile_bounds[0]->object)], tile_bounds, c0, r0, c1,
-                                  r1, direction, emit);
+          if (one_object) {
+            cast_tile_near_one_object(objects[static_cast<std::size_t>(tile_bounds[0]->object)], tile_bounds, c0, r0,
+                                      c1, r1, direction, emit);
             emit_tile(tile);
             continue;
           }
@@ -513,34 +521,6 @@ void RayCaster::cast_grid_tiles(std::int64_t width, std::int64_t height,
                 continue;
               }
               const Vec3 d = direction(c, r);
-              if (one_object) {
-                // One object near: its nearby parts directly, in double, as
-                // the intersect callback would (nearest strictly closer wins).
-                const ObjectData& od = objects[static_cast<std::size_t>(tile_bounds[0]->object)];
-                double best = std::numeric_limits<double>::infinity();
-                int best_part = -1;
-                std::int32_t best_facet = -1;
-                Vec3 best_normal_part;
-                for (const PartBound* b : tile_bounds) {
-                  const PartData& p = od.parts[b->part];
-                  double t = 0;
-                  Vec3 n;
-                  std::int32_t facet = -1;
-                  if (intersect_shape(p.geom, p.origin_part_m, p.part_to_frame.transpose() * d, 0.0, best, t, n,
-                                      &facet)) {
-                    best = t;
-                    best_part = static_cast<int>(b->part);
-                    best_facet = facet;
-                    best_normal_part = n;
-                  }
-                }
-                if (best_part < 0)
-                  emit(c, r, -1, -1, -1, sky_range_m, d, Vec3::Zero());
-                else
-                  emit(c, r, od.object->object_id, best_part, best_facet, best, d,
-                       od.parts[static_cast<std::size_t>(best_part)].part_to_frame * best_normal_part);
-                continue;
-              }
               cast_one(scene, rc, rh, d, 0, query);
               if (rc.object < 0) {
                 emit(c, r, -1, -1, -1, sky_range_m, d, Vec3::Zero());

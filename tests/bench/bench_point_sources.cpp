@@ -198,18 +198,7 @@ void BM_PerOffsetFft(benchmark::State& state) {
 }
 
 SensorParameters wide_field(double fov_deg, std::int64_t camera) {
-  SensorParameters p;
-  p.horizontal_pixels = p.vertical_pixels = 64;
-  p.horizontal_fov_deg = p.vertical_fov_deg = fov_deg;
-  p.noise_enabled = false;
-  if (camera == 1) {
-    p.focal_length_cm = 2.0;
-    p.f_number = 2.0;
-    p.band_low_um = 8.0;
-    p.band_high_um = 12.0;
-    p.diffraction_wavelength_um = 10.0;
-  }
-  return p;
+  return camera == 1 ? eoir::sensor::testing::fence(fov_deg) : eoir::sensor::testing::wide(fov_deg);
 }
 
 void wide_field_renders(benchmark::State& state, const SensorParameters& p) {

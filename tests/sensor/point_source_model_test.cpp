@@ -32,20 +32,6 @@ struct Comparison {
   double total_model = 0, total_exact = 0;  // at the last offset
 };
 
-// Renders one unit source at pixel (W + H, W + H) + phi into a 3W x 3W image
-// (W = 2H + 1): the exact path's window about its nearest pixel, with a
-// margin of W where the multilevel tail's coarse grids may spill.
-std::vector<double> render_one(const PointSourceModel& m, double phi_x, double phi_y) {
-  const std::int64_t h = m.window_half, w = 2 * h + 1, side = 3 * w;
-  std::vector<double> image(static_cast<std::size_t>(side * side), 0.0);
-  PointSourceSignal s;
-  s.x_px = static_cast<double>(w + h) + phi_x;
-  s.y_px = static_cast<double>(w + h) + phi_y;
-  s.electrons = 1.0;
-  render_point_sources(m, {s}, side, side, image);
-  return image;
-}
-
 // The model in the given tail modes against energy_on_detector at `count`
 // random offsets in [-1/2, 1/2)^2: every pixel of the image (0 outside the
 // exact path's window), and the totals.
@@ -59,7 +45,7 @@ std::vector<Comparison> compare(const SensorParameters& p, const std::vector<eoi
               << models.back().core_half << " S " << models.back().core_steps << " bytes " << models.back().bytes()
               << " build " << models.back().build_s * 1e3 << " ms\n";
   }
-  const std::int64_t h = models.front().window_half, w = 2 * h + 1, side = 3 * w;
+  const std::int64_t h = models.front().window_half, w = 2 * h + 1;
   const double px = sensor->grid.pitch_x_cm, py = sensor->grid.pitch_y_cm;
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> offset(-0.5, 0.5);
@@ -70,16 +56,9 @@ std::vector<Comparison> compare(const SensorParameters& p, const std::vector<eoi
     const FocalPlaneSamples exact = energy_on_detector(sensor->optics, px, py, w, -phi_x * px, -phi_y * py, reference);
     const double exact_total = exact.sum();
     for (std::size_t k = 0; k < models.size(); ++k) {
-      const std::vector<double> image = render_one(models[k], phi_x, phi_y);
-      double total = 0;
-      for (std::int64_t y = 0; y < side; ++y)
-        for (std::int64_t x = 0; x < side; ++x) {
-          const std::int64_t dx = x - w - h, dy = y - w - h;
-          const double v = image[static_cast<std::size_t>(y * side + x)];
-          const double e = std::abs(dx) <= h && std::abs(dy) <= h ? exact.at(-dx, -dy) : 0.0;
-          total += v;
-          out[k].worst_pixel = std::max(out[k].worst_pixel, std::abs(v - e));
-        }
+      const AgainstExact got = against_exact(render_one(models[k], phi_x, phi_y), exact, h);
+      const double total = got.total;
+      out[k].worst_pixel = std::max(out[k].worst_pixel, got.worst_pixel);
       out[k].worst_total = std::max(out[k].worst_total, std::abs(total - exact_total));
       out[k].total_model = total;
       out[k].total_exact = exact_total;

@@ -571,10 +571,9 @@ bool WorldObject::shades_each_sample() const {
 }
 
 double WorldObject::radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
-                                std::int32_t facet, const ShadowCasters* near,
-                                const SurfacePoint* surface_point) const {
+                                std::int32_t facet) const {
   if (plain()) return plain_radiance(part);
-  if (shades_each_sample()) return effective_radiance(part, point_body_m, hit_normal_body, true, near, surface_point);
+  if (shades_each_sample()) return effective_radiance(part, point_body_m, hit_normal_body, true);
   return patch_radiance(geometry::patch_at_facet(tessellation(), placed.parts, part, facet, point_body_m, hit_normal_body));
 }
 

@@ -355,8 +355,7 @@ class WorldObject {
   // patch); the point's own in smooth mode. `facet`: the mesh triangle the
   // ray caster hit (Hit::facet; -1 for analytic shapes), whose patch it is.
   double radiance_at(std::int32_t part, const Vec3& point_body_m, const Vec3& hit_normal_body,
-                     std::int32_t facet = -1, const ShadowCasters* near = nullptr,
-                     const SurfacePoint* surface_point = nullptr) const;
+                     std::int32_t facet = -1) const;
   // Of the bodies that may shade this object's lights (its occulters and
   // part shadows), those that may shade them at some point within radius_m
   // of centre_frame_m (observer frame), or of a reflecting layer above it,

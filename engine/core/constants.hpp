@@ -3,6 +3,7 @@
 
 namespace eoir::constants {
 constexpr double pi = 3.14159265358979323846;
+constexpr double ln10 = 2.30258509299404568402;  // ln 10
 constexpr double planck_J_s = 6.62607015e-34;
 constexpr double speed_of_light_m_per_s = 299792458.0;
 constexpr double speed_of_light_cm_per_s = 2.99792458e10;

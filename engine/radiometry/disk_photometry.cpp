@@ -229,7 +229,8 @@ double DiskPhotometry::phase(double cos_psi) const {
   if (law_ == DiskPhaseLaw::moon) {
     // Phi_LS(psi) f(psi) = 10^(-0.4 Delta V(psi)) up to Allen's limit (f is
     // that over Phi_LS): the same value to rounding, without the two Phi_LS.
-    if (psi >= 1e-9 && psi <= kLunarLawLimitDeg * kDeg) return std::pow(10.0, -0.4 * lunar_phase_magnitude(psi / kDeg));
+    if (psi >= 1e-9 && psi <= kLunarLawLimitDeg * kDeg)
+      return std::exp(-0.4 * constants::ln10 * lunar_phase_magnitude(psi / kDeg));  // (10^x to rounding, cheaper)
     // Past the limit the surface factor is its value there (the same bits, made once).
     static const double surface_at_limit = lunar_surface_phase(kLunarLawLimitDeg * kDeg);
     return lommel_seeliger_sphere_phase(psi) * (psi < 1e-9 ? lunar_surface_phase(psi) : surface_at_limit);

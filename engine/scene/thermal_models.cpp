@@ -8,6 +8,7 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "core/parallel_ranges.hpp"
 
 namespace eoir::scene {
 namespace {
@@ -133,6 +134,13 @@ struct HalfDay {
   enum Kind { arc, polar_day, polar_night } kind = arc;
   double h0_rad = 0.0, sin_h0 = 0.0;
 };
+// The day's Sun path (declination, horizon) at a latitude given as sine and cosine.
+SunPathAngles at_latitude(SunPathAngles sun, double sin_latitude, double cos_latitude) {
+  sun.sin_latitude = sin_latitude;
+  sun.cos_latitude = cos_latitude;
+  return sun;
+}
+
 HalfDay half_day(const SunPathAngles& s) {
   // Elevation over the day: sin e = a + b cos h.
   const double a = s.sin_latitude * s.sin_declination, b = s.cos_latitude * s.cos_declination;
@@ -290,9 +298,14 @@ void DiurnalCycle::solve_night() {
 
 double DiurnalCycle::temperature_K(double t_min_K, double t_max_K, double latitude_deg, double declination_deg,
                                    double local_solar_time_h, const DiurnalShape& shape) {
-  return DiurnalCycle(t_min_K, t_max_K, SunPathAngles::from_deg(latitude_deg, declination_deg, shape.horizon_elevation_deg),
-                      shape)
-      .temperature_solving_night_K(local_solar_time_h);
+  return temperature_K(t_min_K, t_max_K,
+                       SunPathAngles::from_deg(latitude_deg, declination_deg, shape.horizon_elevation_deg), shape,
+                       local_solar_time_h);
+}
+
+double DiurnalCycle::temperature_K(double t_min_K, double t_max_K, const SunPathAngles& sun, const DiurnalShape& shape,
+                                   double local_solar_time_h) {
+  return DiurnalCycle(t_min_K, t_max_K, sun, shape).temperature_solving_night_K(local_solar_time_h);
 }
 
 double DiurnalCycle::temperature_solving_night_K(double local_solar_time_h) {
@@ -356,12 +369,138 @@ double ClimatologyInstant::temperature_K(universe::SurfaceKind kind, double lati
 double ClimatologyInstant::temperature_K(universe::SurfaceKind kind, double latitude_deg, double sin_latitude,
                                          double cos_latitude, double longitude_deg) const {
   const universe::DailyExtremes x = (kind == universe::SurfaceKind::land ? land_ : water_).at(latitude_deg);
-  SunPathAngles sun = sun_;
-  sun.sin_latitude = sin_latitude;
-  sun.cos_latitude = cos_latitude;
-  return DiurnalCycle(x.t_min_K, x.t_max_K, sun, shape_)
-      .temperature_solving_night_K(
-          local_solar_time_from_eot_h(calendar_.utc_hours, longitude_deg, equation_of_time_min_));
+  return DiurnalCycle::temperature_K(x.t_min_K, x.t_max_K, at_latitude(sun_, sin_latitude, cos_latitude), shape_,
+                                     local_solar_time_from_eot_h(calendar_.utc_hours, longitude_deg, equation_of_time_min_));
+}
+
+const DiurnalLatitudeTable& ClimatologyInstant::latitude_table(universe::SurfaceKind kind) const {
+  const int k = kind == universe::SurfaceKind::land ? 0 : 1;
+  std::call_once(tables_->built[k], [&] {
+    tables_->table[k] = std::make_unique<DiurnalLatitudeTable>(k == 0 ? land_ : water_, sun_, shape_,
+                                                               calendar_.utc_hours, equation_of_time_min_);
+  });
+  return *tables_->table[k];
+}
+
+double ClimatologyInstant::tabulated_temperature_K(universe::SurfaceKind kind, double latitude_deg,
+                                                   double sin_latitude, double cos_latitude,
+                                                   double longitude_deg) const {
+  return latitude_table(kind).temperature_K(latitude_deg, sin_latitude, cos_latitude, longitude_deg);
+}
+
+std::size_t DiurnalLatitudeTable::regular_nodes() const {
+  return static_cast<std::size_t>(std::count_if(nodes_.begin(), nodes_.end(), [](const Node& n) { return n.regular; }));
+}
+
+namespace {
+
+// Node spacing of the latitude tables (at most; an interval between band
+// centres takes a whole number of steps): the cubic's error is about
+// 0.02 h^4 |f''''|, below 1e-13 of the cycle's parameters at 0.025 deg.
+constexpr double kTableStep_deg = 0.025;
+// A node is regular (its stencils interpolate) only well inside its regime:
+// |cos h0| at most kMaxCosHalfDay (acos and its derivatives steep near
+// +-1), the latitude's cosine at least kMinCosLatitude (cos h0 = (sin e0 -
+// sin phi sin delta) / (cos phi cos delta) steep near the poles), and the
+// night decay's r = q / n at most kMaxNightDecayRatio (k and T_inf diverge
+// as r -> 1).
+constexpr double kMaxCosHalfDay = 0.8;
+constexpr double kMinCosLatitude = 0.2;
+constexpr double kMaxNightDecayRatio = 0.9;
+
+}  // namespace
+
+DiurnalLatitudeTable::DiurnalLatitudeTable(const universe::ClimatologyDay& day, const SunPathAngles& sun,
+                                           const DiurnalShape& shape, double utc_hours, double equation_of_time_min)
+    : day_(day), sun_(sun), shape_(shape), utc_hours_(utc_hours), equation_of_time_min_(equation_of_time_min) {
+  // Segments between -90, the band centres and 90 deg.
+  std::vector<double> edges{-90.0};
+  for (double c : day.band_centres_deg())
+    if (c > edges.back() && c < 90.0) edges.push_back(c);
+  edges.push_back(90.0);
+  std::int64_t count = 0;
+  for (std::size_t s = 0; s + 1 < edges.size(); ++s) {
+    const double width = edges[s + 1] - edges[s];
+    const auto intervals = std::max<std::int64_t>(3, static_cast<std::int64_t>(std::ceil(width / kTableStep_deg - 1e-9)));
+    segments_.push_back({edges[s], width, intervals, count});
+    segment_tops_deg_.push_back(edges[s + 1]);
+    count += intervals + 1;
+  }
+  nodes_.resize(static_cast<std::size_t>(count));
+  for (int d = 0; d <= 180; ++d) {  // the first segment reaching each whole degree
+    std::size_t s = 0;
+    while (s + 1 < segments_.size() && segment_tops_deg_[s] < static_cast<double>(d - 90)) ++s;
+    segment_of_degree_[static_cast<std::size_t>(d)] = static_cast<std::uint16_t>(s);
+  }
+  // (Made on first use inside a frame's shading, whose other threads wait:
+  // the nodes in parallel.)
+  parallel_ranges(count, 0, [&](std::int64_t begin, std::int64_t end) {
+    std::size_t s = 0;
+    for (std::int64_t k = begin; k < end; ++k) {
+      while (s + 1 < segments_.size() && k >= segments_[s + 1].first_node) ++s;
+      const Segment& g = segments_[s];
+      const std::int64_t i = k - g.first_node;
+      const double lat_deg = g.low_deg + g.width_deg * static_cast<double>(i) / static_cast<double>(g.intervals);
+      const double lat = lat_deg * rad_per_deg;
+      const SunPathAngles here = at_latitude(sun, std::sin(lat), std::cos(lat));
+      const universe::DailyExtremes x = day.at(lat_deg);
+      DiurnalCycle c(x.t_min_K, x.t_max_K, here, shape);
+      const HalfDay half = half_day(here);
+      const double length_h = sunrise_sunset(half).length_h();
+      const double cos_h0 = half.kind == HalfDay::arc ? std::cos(half.h0_rad) : 1.0;
+      bool regular = half.kind == HalfDay::arc && std::fabs(cos_h0) <= kMaxCosHalfDay &&
+                     here.cos_latitude >= kMinCosLatitude &&
+                     length_h > shape.min_day_length_h && length_h < kHoursPerDay && x.t_max_K > x.t_min_K &&
+                     c.sunset_slope_K_h_ > 0.0 && c.sunset_K_ > x.t_min_K;
+      if (regular) {
+        const double night_h = kHoursPerDay - length_h;
+        const double ratio = (c.sunset_K_ - x.t_min_K) / c.sunset_slope_K_h_ / night_h;
+        regular = ratio > 0.0 && ratio <= kMaxNightDecayRatio;
+      }
+      if (regular) c.solve_night();
+      nodes_[static_cast<std::size_t>(k)] = {x.t_min_K,       x.t_max_K,   c.sunrise_h_, c.sunset_h_,
+                                             c.time_of_max_h_, c.half_period_h_, c.sunset_K_, c.asymptote_K_,
+                                             c.decay_h_,       regular && !c.linear_night_ && c.decay_h_ > 0.0};
+    }
+  }, 1024);
+}
+
+double DiurnalLatitudeTable::temperature_K(double latitude_deg, double sin_latitude, double cos_latitude,
+                                           double longitude_deg) const {
+  require_range(latitude_deg, -90.0, 90.0, "latitude_deg");
+  const double local_h = local_solar_time_from_eot_h(utc_hours_, longitude_deg, equation_of_time_min_);
+  std::size_t s = segment_of_degree_[static_cast<std::size_t>(latitude_deg + 90.0)];
+  while (s + 1 < segments_.size() && latitude_deg > segment_tops_deg_[s]) ++s;
+  const Segment& g = segments_[s];
+  const double t = std::clamp((latitude_deg - g.low_deg) / g.width_deg, 0.0, 1.0) * static_cast<double>(g.intervals);
+  const std::int64_t k0 = std::clamp<std::int64_t>(static_cast<std::int64_t>(t) - 1, 0, g.intervals - 3);
+  const Node* n = &nodes_[static_cast<std::size_t>(g.first_node + k0)];
+  if (!(n[0].regular && n[1].regular && n[2].regular && n[3].regular)) {
+    const universe::DailyExtremes x = day_.at(latitude_deg);
+    return DiurnalCycle::temperature_K(x.t_min_K, x.t_max_K, at_latitude(sun_, sin_latitude, cos_latitude), shape_,
+                                       local_h);
+  }
+  // Lagrange weights of the nodes at 0, 1, 2, 3 for x in [0, 3].
+  const double x = t - static_cast<double>(k0);
+  const double a = x - 1.0, b = x - 2.0, c = x - 3.0;
+  const double w0 = -a * b * c / 6.0, w1 = x * b * c / 2.0, w2 = -x * a * c / 2.0, w3 = x * a * b / 6.0;
+  const auto at = [&](double Node::*field) { return w0 * n[0].*field + w1 * n[1].*field + w2 * n[2].*field + w3 * n[3].*field; };
+  // Sunrise and sunset first: then only the branch's own parameters.
+  DiurnalCycle cycle;
+  cycle.sunrise_h_ = at(&Node::sunrise_h);
+  cycle.sunset_h_ = at(&Node::sunset_h);
+  cycle.t_min_K_ = at(&Node::t_min_K);
+  cycle.t_max_K_ = at(&Node::t_max_K);
+  const double u = cycle.from_sunrise_h(local_h);
+  if (u <= cycle.sunset_h_) {
+    cycle.time_of_max_h_ = at(&Node::time_of_max_h);
+    cycle.half_period_h_ = at(&Node::half_period_h);
+  } else {
+    cycle.sunset_K_ = at(&Node::sunset_K);
+    cycle.asymptote_K_ = at(&Node::asymptote_K);
+    cycle.decay_h_ = at(&Node::decay_h);
+  }
+  return cycle.temperature_at_K(u);
 }
 
 // ---- 2. Airless central bodies ----------------------------------------------

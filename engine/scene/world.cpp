@@ -295,8 +295,10 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
   const World& w = *world_;
   const std::size_t count = out.size();
   // The Sun (eq. 6): E = L_tab dOmega_sun, times the visible fraction of its disc.
-  if (w.sun.object != id) {
-    const Vec3 to_sun = w.sun.position_m - p;
+  const Vec3 to_sun = w.sun.position_m - p;
+  // (The sign of cos(incidence) first, without the norm: a point facing
+  // away, half of every globe, costs no square root and division.)
+  if (w.sun.object != id && to_sun.dot(n) > 0) {
     const double d = to_sun.norm();
     const Vec3 I = to_sun / d;
     const double cos_i = I.dot(n);
@@ -339,10 +341,12 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     const ObjectLight& src = w.lights[k];
     if (src.object == id || negligible_light_[k]) continue;
     const Vec3 to_src = src.position_m - p;
+    if (!src.area_source && !(to_src.dot(n) > 0)) continue;  // (cos_i <= 0 below, but for rounding)
     const double d = to_src.norm();
     if (!(d > src.radius_m)) continue;
-    const Vec3 I = to_src / d;
-    const double omega = constants::pi * (src.radius_m / d) * (src.radius_m / d);
+    const double per_d = 1.0 / d, sin_radius = src.radius_m * per_d;  // (one division for the three)
+    const Vec3 I = to_src * per_d;
+    const double omega = constants::pi * sin_radius * sin_radius;
     if (src.area_source && omega > w.view.fidelity.area_source_solid_angle_sr) {
       for (const AreaSourcePatch& a : area_source(k)) {
         const double c = a.direction.dot(n);

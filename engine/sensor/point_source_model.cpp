@@ -54,7 +54,7 @@ namespace {
 // offsets -1/2 + i / steps fall on samples). One FFT of at most kMaxTableFft
 // points when its period at this step is long enough; otherwise m x m FFTs
 // at m steps, interleaved (j = m i + r, r in [0, m)).
-// `otf`: the radial OTF table (radial_otf_table) for the separable path.
+// `otf`: the radial OTF table (radial_otf_table).
 template <class Store>
 void sample_pixel_energy(const OpticsModel& optics, const geometry::SampleGrid& g, std::int64_t steps,
                          std::int64_t half, const Fidelity& f, const std::vector<double>& otf, Store&& store) {
@@ -91,6 +91,7 @@ void sample_pixel_energy(const OpticsModel& optics, const geometry::SampleGrid& 
   const std::int64_t period_steps =
       std::min(kMaxTableFft, std::max((period_fine + m - 1) / m, size + f.psf_alias_margin_steps));
   PsfNumerics numerics(f);
+  numerics.otf_table = &otf;
   numerics.alias_margin_steps = std::max<std::int64_t>(1, period_steps - size);
   const std::int64_t nyquist = std::max(fft_subdivisions(optics, step_x, 1), fft_subdivisions(optics, step_y, 1));
   numerics.fft_size = 128;
@@ -198,8 +199,8 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
     return m.window_half <= m.taper_start ? m.window_half : std::min(2 * m.taper_start, m.window_half);
   };
   m.separable = separable_pixels(optics, g, f);
-  // The radial OTF table of the line-spread functions, made once.
-  const std::vector<double> otf = m.separable ? radial_otf_table(optics, f.otf_table_size) : std::vector<double>{};
+  // The radial OTF table of the line-spread functions or the 2-D folds, made once.
+  const std::vector<double> otf = radial_otf_table(optics, f.otf_table_size);
   if (m.separable && quadrant(f)) {
     m.corners = corner_correction(optics, f.otf_table_size);
     m.pixel_x_lf = g.pitch_x_cm / lambda_f_cm;

@@ -30,6 +30,9 @@ struct PsfNumerics {
   std::int64_t otf_table_size;
   std::int64_t alias_margin_steps;
   double fold_budget;
+  // The optics' radial OTF table at otf_table_size (radial_otf_table), made
+  // once by a caller that folds many times; null: each fold makes its own.
+  const std::vector<double>* otf_table = nullptr;
   explicit PsfNumerics(const Fidelity& f)
       : fft_size(f.psf_grid_size),
         otf_table_size(f.otf_table_size),

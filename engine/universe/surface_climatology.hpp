@@ -56,6 +56,7 @@ class ClimatologyDay {
   // The greatest t_max_K and the least t_min_K of any band (at() stays within them).
   double hottest_K() const;
   double coldest_K() const;
+  const std::vector<double>& band_centres_deg() const { return latitudes_deg_; }
 
  private:
   friend class ClimatologyTable;

@@ -401,11 +401,12 @@ constexpr double kTableStep_deg = 0.025;
 // A node is regular (its stencils interpolate) only well inside its regime:
 // |cos h0| at most kMaxCosHalfDay (acos and its derivatives steep near
 // +-1), the latitude's cosine at least kMinCosLatitude (cos h0 = (sin e0 -
-// sin phi sin delta) / (cos phi cos delta) steep near the poles), and the
+// sin phi sin delta) / (cos phi cos delta) steep near the poles: 1e-11 off
+// at 77 deg with 0.2), and the
 // night decay's r = q / n at most kMaxNightDecayRatio (k and T_inf diverge
 // as r -> 1).
 constexpr double kMaxCosHalfDay = 0.8;
-constexpr double kMinCosLatitude = 0.2;
+constexpr double kMinCosLatitude = 0.3;
 constexpr double kMaxNightDecayRatio = 0.9;
 
 }  // namespace

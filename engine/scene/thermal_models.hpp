@@ -200,11 +200,12 @@ double surface_temperature_K(const universe::SurfaceClimatology& climatology, un
 // (where t_min and t_max are linear in latitude), interpolated by the cubic
 // through four nodes of the same interval; the cycle at the point's local
 // solar time from them. Within 1e-11 of the exact temperature, relative
-// (test engine.DiurnalLatitudeTable), so that a frame's radiance stays within
-// 1e-9 of the exact one's. Near a change of regime (polar day or night, a
-// day length held at its bounds, a linear or flat night, a sunrise where
-// acos is steep, a night decay near linear) the stencil's nodes are marked
-// and the exact cycle is computed instead.
+// (tests ThermalEarth.LatitudeTable*), so that a frame's radiance stays
+// within 1e-9 of the exact one's (issue 23 item 6). Near a change of regime
+// (polar day or night, a day length held at its bounds, a linear or flat
+// night, a sunrise where acos is steep, latitudes past 72.5 deg, a night
+// decay near linear) the stencil's nodes are marked and the exact cycle is
+// computed instead.
 class DiurnalLatitudeTable {
  public:
   DiurnalLatitudeTable(const universe::ClimatologyDay& day, const SunPathAngles& sun, const DiurnalShape& shape,

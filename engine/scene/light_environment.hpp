@@ -38,6 +38,10 @@ struct LightSpectra {
   // Overall emittance times B(T_eff): multiply by dOmega.
   std::vector<double> emitted;
   bool reflects = false;  // some reflected value is not 0 (not eclipsed, not black)
+  // reflected + emitted where the source's phase law stays within 1 (the
+  // Moon's, a Lambertian sphere's): at least its light per dOmega at any
+  // phase angle; empty for other laws (no bound kept).
+  std::vector<double> bound;
 };
 
 

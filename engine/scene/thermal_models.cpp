@@ -8,7 +8,6 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
-#include "core/parallel_ranges.hpp"
 
 namespace eoir::scene {
 namespace {
@@ -134,6 +133,11 @@ struct HalfDay {
   enum Kind { arc, polar_day, polar_night } kind = arc;
   double h0_rad = 0.0, sin_h0 = 0.0;
 };
+void check_shape(const DiurnalShape& shape) {
+  require_range(shape.max_lag_h, 0.0, 3.0, "max_lag_h");
+  require_range(shape.min_day_length_h, 1e-3, 12.0, "min_day_length_h");
+}
+
 // The day's Sun path (declination, horizon) at a latitude given as sine and cosine.
 SunPathAngles at_latitude(SunPathAngles sun, double sin_latitude, double cos_latitude) {
   sun.sin_latitude = sin_latitude;
@@ -259,8 +263,7 @@ DiurnalCycle::DiurnalCycle(double t_min_K, double t_max_K, const SunPathAngles& 
   if (t_min_K > t_max_K)
     throw Error(Status::out_of_range,
                 "t_min_K: " + std::to_string(t_min_K) + " above t_max_K " + std::to_string(t_max_K));
-  require_range(shape.max_lag_h, 0.0, 3.0, "max_lag_h");
-  require_range(shape.min_day_length_h, 1e-3, 12.0, "min_day_length_h");
+  check_shape(shape);
 
   const HalfDay half = half_day(sun);
   const double length_h = sunrise_sunset(half).length_h();
@@ -358,7 +361,9 @@ ClimatologyInstant::ClimatologyInstant(const universe::SurfaceClimatology& clima
       calendar_(calendar),
       shape_(shape),
       equation_of_time_min_(equation_of_time_min(calendar.day_of_year)),
-      sun_(SunPathAngles::from_deg(0.0, solar_declination_deg(calendar.day_of_year), shape.horizon_elevation_deg)) {}
+      sun_(SunPathAngles::from_deg(0.0, solar_declination_deg(calendar.day_of_year), shape.horizon_elevation_deg)) {
+  check_shape(shape);  // (here, not in the latitude tables' first use inside a frame)
+}
 
 double ClimatologyInstant::temperature_K(universe::SurfaceKind kind, double latitude_deg, double longitude_deg) const {
   require_range(latitude_deg, -90.0, 90.0, "latitude_deg");
@@ -388,6 +393,8 @@ double ClimatologyInstant::tabulated_temperature_K(universe::SurfaceKind kind, d
   return latitude_table(kind).temperature_K(latitude_deg, sin_latitude, cos_latitude, longitude_deg);
 }
 
+bool DiurnalLatitudeTable::interpolates(double latitude_deg) const { return stencil(latitude_deg).regular; }
+
 std::size_t DiurnalLatitudeTable::regular_nodes() const {
   return static_cast<std::size_t>(std::count_if(nodes_.begin(), nodes_.end(), [](const Node& n) { return n.regular; }));
 }
@@ -396,7 +403,8 @@ namespace {
 
 // Node spacing of the latitude tables (at most; an interval between band
 // centres takes a whole number of steps): the cubic's error is about
-// 0.02 h^4 |f''''|, below 1e-13 of the cycle's parameters at 0.025 deg.
+// 0.02 h^4 |f''''| (0.04 h^4 |f''''| in an interval's end cells), below
+// 1e-12 of the cycle's parameters at 0.025 deg.
 constexpr double kTableStep_deg = 0.025;
 // A node is regular (its stencils interpolate) only well inside its regime:
 // |cos h0| at most kMaxCosHalfDay (acos and its derivatives steep near
@@ -433,56 +441,64 @@ DiurnalLatitudeTable::DiurnalLatitudeTable(const universe::ClimatologyDay& day, 
     while (s + 1 < segments_.size() && segment_tops_deg_[s] < static_cast<double>(d - 90)) ++s;
     segment_of_degree_[static_cast<std::size_t>(d)] = static_cast<std::uint16_t>(s);
   }
-  // (Made on first use inside a frame's shading, whose other threads wait:
-  // the nodes in parallel.)
-  parallel_ranges(count, 0, [&](std::int64_t begin, std::int64_t end) {
-    std::size_t s = 0;
-    for (std::int64_t k = begin; k < end; ++k) {
-      while (s + 1 < segments_.size() && k >= segments_[s + 1].first_node) ++s;
-      const Segment& g = segments_[s];
-      const std::int64_t i = k - g.first_node;
-      const double lat_deg = g.low_deg + g.width_deg * static_cast<double>(i) / static_cast<double>(g.intervals);
-      const double lat = lat_deg * rad_per_deg;
-      const SunPathAngles here = at_latitude(sun, std::sin(lat), std::cos(lat));
-      const universe::DailyExtremes x = day.at(lat_deg);
-      DiurnalCycle c(x.t_min_K, x.t_max_K, here, shape);
-      const HalfDay half = half_day(here);
-      const double length_h = sunrise_sunset(half).length_h();
-      const double cos_h0 = half.kind == HalfDay::arc ? std::cos(half.h0_rad) : 1.0;
-      bool regular = half.kind == HalfDay::arc && std::fabs(cos_h0) <= kMaxCosHalfDay &&
-                     here.cos_latitude >= kMinCosLatitude &&
-                     length_h > shape.min_day_length_h && length_h < kHoursPerDay && x.t_max_K > x.t_min_K &&
-                     c.sunset_slope_K_h_ > 0.0 && c.sunset_K_ > x.t_min_K;
-      if (regular) {
-        const double night_h = kHoursPerDay - length_h;
-        const double ratio = (c.sunset_K_ - x.t_min_K) / c.sunset_slope_K_h_ / night_h;
-        regular = ratio > 0.0 && ratio <= kMaxNightDecayRatio;
-      }
-      if (regular) c.solve_night();
-      nodes_[static_cast<std::size_t>(k)] = {x.t_min_K,       x.t_max_K,   c.sunrise_h_, c.sunset_h_,
-                                             c.time_of_max_h_, c.half_period_h_, c.sunset_K_, c.asymptote_K_,
-                                             c.decay_h_,       regular && !c.linear_night_ && c.decay_h_ > 0.0};
+  // (One thread: made on first use inside a frame's shading, which keeps to
+  // the engine's thread count; about a millisecond per kind.)
+  std::size_t s = 0;
+  for (std::int64_t k = 0; k < count; ++k) {
+    while (s + 1 < segments_.size() && k >= segments_[s + 1].first_node) ++s;
+    const Segment& g = segments_[s];
+    const std::int64_t i = k - g.first_node;
+    const double lat_deg =
+        i == g.intervals ? segment_tops_deg_[s]
+                         : std::min(90.0, g.low_deg + g.width_deg * static_cast<double>(i) / static_cast<double>(g.intervals));
+    const double lat = lat_deg * rad_per_deg;
+    const SunPathAngles here = at_latitude(sun, std::sin(lat), std::cos(lat));
+    Node& node = nodes_[static_cast<std::size_t>(k)];
+    node.regular = false;
+    if (here.cos_latitude < kMinCosLatitude) continue;  // (never interpolated)
+    const universe::DailyExtremes x = day.at(lat_deg);
+    DiurnalCycle c(x.t_min_K, x.t_max_K, here, shape);
+    const HalfDay half = half_day(here);
+    const double length_h = sunrise_sunset(half).length_h();
+    const double cos_h0 = half.kind == HalfDay::arc ? std::cos(half.h0_rad) : 1.0;
+    bool regular = half.kind == HalfDay::arc && std::fabs(cos_h0) <= kMaxCosHalfDay &&
+                   length_h > shape.min_day_length_h && length_h < kHoursPerDay && x.t_max_K > x.t_min_K &&
+                   c.sunset_slope_K_h_ > 0.0 && c.sunset_K_ > x.t_min_K;
+    if (regular) {
+      const double night_h = kHoursPerDay - length_h;
+      const double ratio = (c.sunset_K_ - x.t_min_K) / c.sunset_slope_K_h_ / night_h;
+      regular = ratio > 0.0 && ratio <= kMaxNightDecayRatio;
     }
-  }, 1024);
+    if (regular) c.solve_night();
+    node = {x.t_min_K,       x.t_max_K,         c.sunrise_h_, c.sunset_h_,
+            c.time_of_max_h_, c.half_period_h_, c.sunset_K_,  c.asymptote_K_,
+            c.decay_h_,       regular && !c.linear_night_ && c.decay_h_ > 0.0};
+  }
 }
 
-double DiurnalLatitudeTable::temperature_K(double latitude_deg, double sin_latitude, double cos_latitude,
-                                           double longitude_deg) const {
+DiurnalLatitudeTable::Stencil DiurnalLatitudeTable::stencil(double latitude_deg) const {
   require_range(latitude_deg, -90.0, 90.0, "latitude_deg");
-  const double local_h = local_solar_time_from_eot_h(utc_hours_, longitude_deg, equation_of_time_min_);
   std::size_t s = segment_of_degree_[static_cast<std::size_t>(latitude_deg + 90.0)];
   while (s + 1 < segments_.size() && latitude_deg > segment_tops_deg_[s]) ++s;
   const Segment& g = segments_[s];
   const double t = std::clamp((latitude_deg - g.low_deg) / g.width_deg, 0.0, 1.0) * static_cast<double>(g.intervals);
   const std::int64_t k0 = std::clamp<std::int64_t>(static_cast<std::int64_t>(t) - 1, 0, g.intervals - 3);
   const Node* n = &nodes_[static_cast<std::size_t>(g.first_node + k0)];
-  if (!(n[0].regular && n[1].regular && n[2].regular && n[3].regular)) {
+  return {n, t - static_cast<double>(k0), n[0].regular && n[1].regular && n[2].regular && n[3].regular};
+}
+
+double DiurnalLatitudeTable::temperature_K(double latitude_deg, double sin_latitude, double cos_latitude,
+                                           double longitude_deg) const {
+  const double local_h = local_solar_time_from_eot_h(utc_hours_, longitude_deg, equation_of_time_min_);
+  const Stencil st = stencil(latitude_deg);
+  if (!st.regular) {
     const universe::DailyExtremes x = day_.at(latitude_deg);
     return DiurnalCycle::temperature_K(x.t_min_K, x.t_max_K, at_latitude(sun_, sin_latitude, cos_latitude), shape_,
                                        local_h);
   }
+  const Node* n = st.nodes;
   // Lagrange weights of the nodes at 0, 1, 2, 3 for x in [0, 3].
-  const double x = t - static_cast<double>(k0);
+  const double x = st.x;
   const double a = x - 1.0, b = x - 2.0, c = x - 3.0;
   const double w0 = -a * b * c / 6.0, w1 = x * b * c / 2.0, w2 = -x * a * c / 2.0, w3 = x * a * b / 6.0;
   const auto at = [&](double Node::*field) { return w0 * n[0].*field + w1 * n[1].*field + w2 * n[2].*field + w3 * n[3].*field; };

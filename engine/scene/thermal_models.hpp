@@ -212,13 +212,20 @@ class DiurnalLatitudeTable {
                        double utc_hours, double equation_of_time_min);
   double temperature_K(double latitude_deg, double sin_latitude, double cos_latitude, double longitude_deg) const;
   std::size_t nodes() const { return nodes_.size(); }
-  std::size_t regular_nodes() const;  // nodes whose stencils interpolate
+  std::size_t regular_nodes() const;  // nodes whose stencils may interpolate
+  bool interpolates(double latitude_deg) const;  // false: the exact cycle there
 
  private:
   struct Node {
     double t_min_K, t_max_K, sunrise_h, sunset_h, time_of_max_h, half_period_h, sunset_K, asymptote_K, decay_h;
     bool regular;
   };
+  struct Stencil {
+    const Node* nodes;  // four
+    double x;           // the point among them, in [0, 3]
+    bool regular;
+  };
+  Stencil stencil(double latitude_deg) const;
   struct Segment {
     double low_deg, width_deg;
     std::int64_t intervals, first_node;

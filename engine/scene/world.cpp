@@ -24,6 +24,11 @@ using universe::ObjectKind;
 // self-emission beside its reflected light (WorldObject::effective_radiance),
 // an eq. 7 source's light beside its self-emission (build_world).
 constexpr double kNegligible = 1e-10;
+// A source's eq. 7 light at a point is left out where it cannot reach this
+// fraction of the irradiance the point already has at any wavelength (all
+// terms are non-negative, so the band radiance moves by less than this
+// fraction per source left out).
+constexpr double kNegligibleAtPoint = 1e-12;
 
 // True if a sphere (centre in sensor body axes, radius) lies wholly outside
 // the pyramid of the sample grid (field of view plus guard band).
@@ -341,7 +346,21 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     const ObjectLight& src = w.lights[k];
     if (src.object == id || negligible_light_[k]) continue;
     const Vec3 to_src = src.position_m - p;
-    if (!src.area_source && !(to_src.dot(n) > 0)) continue;  // (cos_i <= 0 below, but for rounding)
+    // A disc below (eq. 7; an area source too while it subtends less than
+    // half area_source_solid_angle_sr here): first the sign of cos_i, then
+    // whether it can matter here at all.
+    const double omega_here = constants::pi * src.radius_m * src.radius_m / to_src.squaredNorm();
+    if (!src.area_source || omega_here < 0.5 * w.view.fidelity.area_source_solid_angle_sr) {
+      if (!(to_src.dot(n) > 0)) continue;  // (cos_i <= 0 below, but for rounding)
+      // Its bound here: dOmega x the BRDF's largest N.L value x its light
+      // at any phase, against kNegligibleAtPoint of the point's irradiance
+      // so far (the Sun's by day), wavelength by wavelength.
+      const std::vector<double>& bound = w.objects[static_cast<std::size_t>(src.object)]->light_spectra().bound;
+      const double scale = omega_here * brdf.max_projected_value_per_sr() / kNegligibleAtPoint;
+      std::size_t i = 0;
+      while (i < bound.size() && scale * bound[i] <= out[i]) ++i;
+      if (!bound.empty() && i == bound.size()) continue;
+    }
     const double d = to_src.norm();
     if (!(d > src.radius_m)) continue;
     const double per_d = 1.0 / d, sin_radius = src.radius_m * per_d;  // (one division for the three)
@@ -424,6 +443,11 @@ const LightSpectra& WorldObject::light_spectra() const {
               : w.sun.radiance[i] * sun_omega * fraction * srf[i] * disk_photometry.geometric_albedo_per_srf() /
                     constants::pi;
       light_spectra_.reflects = light_spectra_.reflects || light_spectra_.reflected[i] != 0.0;
+    }
+    if (disk_photometry.lambertian() ||
+        (disk_photometry.law() == radiometry::DiskPhaseLaw::moon && !disk_photometry.has_face_terms())) {
+      light_spectra_.bound.resize(n);
+      for (std::size_t i = 0; i < n; ++i) light_spectra_.bound[i] = light_spectra_.reflected[i] + emitted[i];
     }
   });
   return light_spectra_;

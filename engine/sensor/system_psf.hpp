@@ -13,7 +13,8 @@
 // one step (pixels of hundreds of lambda F#), dx is coarser and the spectrum
 // is folded (each bin sums its aliases xi + m / dx inside the cutoff), which
 // is still exact sampling; only the period, not the accuracy of the OTF
-// sampling, is then limited by the grid size.
+// sampling, is then limited by the grid size. The fold and its FFT run on
+// every core (a sensor's one-off tables; the same numbers for any count).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -31,7 +32,8 @@ struct PsfNumerics {
   std::int64_t alias_margin_steps;
   double fold_budget;
   // The optics' radial OTF table at otf_table_size (radial_otf_table), made
-  // once by a caller that folds many times; null: each fold makes its own.
+  // once by a caller that folds many times for the same optics (only its
+  // size is checked); null: each fold makes its own.
   const std::vector<double>* otf_table = nullptr;
   explicit PsfNumerics(const Fidelity& f)
       : fft_size(f.psf_grid_size),

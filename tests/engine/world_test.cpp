@@ -593,7 +593,10 @@ namespace {
 // Lambertian disc, earthshine on it): 3e-7 of the Sun's at 1 km (kept: the
 // same light as with the default profile), 3.5e-14 at 3,000 km (left out;
 // the light the default profile adds there is at most 3.5e-14 / 0.985 =
-// 3.6e-14 of the point's light, below 1e-10).
+// 3.6e-14 of the point's light, below 1e-10). At the point itself either
+// profile leaves it out there as well: its bound, (R / h)^2 x the BRDF's
+// largest N.L (1/pi) x its light at any phase, is below 1e-12 of the
+// Sun's irradiance already at the point (world.cpp kNegligibleAtPoint).
 TEST(World, FarLightLeftOutAgainstTheSunBeyondTheDefaultProfile) {
   const double receiver_radius_m = 100e3;
   const Eigen::Vector3d receiver(20000e3, 0, 0), up = Eigen::Vector3d::UnitX();
@@ -625,12 +628,49 @@ TEST(World, FarLightLeftOutAgainstTheSunBeyondTheDefaultProfile) {
   const double near_raised = radiance_beneath(1e3, true, true) - radiance_beneath(1e3, false, true);
   EXPECT_GT(near_default, 0.0);
   EXPECT_NEAR(near_raised, near_default, 1e-9 * near_default);
-  // 3,000 km: the default profile keeps it, the raised one leaves it out.
+  // 3,000 km: the raised profile leaves it out of the world, the default
+  // one at the point.
   const double without = radiance_beneath(3e6, false, true);
   EXPECT_EQ(radiance_beneath(3e6, true, true), without);
-  const double far_default = radiance_beneath(3e6, true, false) - radiance_beneath(3e6, false, false);
-  EXPECT_GT(far_default, 0.0);
-  std::printf("far / without %.3g\n", far_default / without);
-  EXPECT_LT(far_default, 3.6e-14 * without);
+  EXPECT_EQ(radiance_beneath(3e6, true, false), radiance_beneath(3e6, false, false));
+}
+
+// A source's light is left out at a point only below 1e-12 of the light
+// already there (world.cpp kNegligibleAtPoint): the same 1 m gray sphere
+// and sunlit point as above, in the default profile, from 1 km to 3,000
+// km. Its irradiance at the point is at most (R / h)^2 x 0.3 x E_sun x 1.05
+// (above), the point's own E_sun x 0.985: where it is left out that ratio
+// must be below 1e-12 (it is 3.2e-13 at 1,000 km); where it is kept (1 to
+// 100 km, 3.2e-7 to 3.2e-11) it adds light.
+TEST(World, LightLeftOutAtAPointOnlyBelowItsBound) {
+  const double receiver_radius_m = 100e3;
+  const Eigen::Vector3d receiver(20000e3, 0, 0), up = Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d aside = Eigen::Vector3d(1, 0, 1).normalized();
+  auto radiance_beneath = [&](double h_m, bool with_source) {
+    auto e = geo_engine();
+    e->set_property("Sensor", "band_low_um", Value(0.45));
+    e->set_property("Sensor", "band_high_um", Value(0.75));
+    e->set_property("Sensor", "diffraction_wavelength_um", Value(0.6));
+    e->add_object(ObjectKind::satellite, "Receiver");
+    e->set_property("Receiver", "dimensions_m", Value(std::vector<double>{receiver_radius_m}));
+    e->set_property("Receiver", "reflectance", Value(0.3));
+    e->push_state("Receiver", e->time(), 0, receiver.data(), zero, identity);
+    if (with_source) {
+      const Eigen::Vector3d p = receiver + receiver_radius_m * up + h_m * aside;
+      add_sphere(*e, "Source", 1.0, p.data());
+      e->set_property("Source", "reflectance", Value(0.3));
+    }
+    return e->world("Sensor")->find("Receiver")->effective_radiance(0, receiver_radius_m * up, up);
+  };
+  for (double h_m : {1e3, 1e4, 1e5, 1e6, 3e6}) {
+    const double with = radiance_beneath(h_m, true), without = radiance_beneath(h_m, false);
+    const double ratio = 0.3 * 1.05 / 0.985 / (h_m * h_m);  // its light over the point's, at most (R = 1 m)
+    if (h_m <= 1e5) {
+      EXPECT_GT(with, without) << h_m;
+    } else {
+      EXPECT_EQ(with, without) << h_m;
+      EXPECT_LT(ratio, 1e-12) << h_m;
+    }
+  }
 }
 }  // namespace

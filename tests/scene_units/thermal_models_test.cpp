@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/time.hpp"
@@ -366,23 +367,39 @@ TEST(ThermalEarth, LatitudeTableMatchesTheExactCycleToOnePartIn1e11) {
   EXPECT_LT(worst, 1e-11);
 }
 
-// The same across the polar circles at a solstice, where the day's length
-// reaches its bounds (the stencils there fall back to the exact cycle).
-TEST(ThermalEarth, LatitudeTableExactAcrossThePolarCircles) {
+// The same, finely, where stencils switch between the table and the exact
+// cycle (the sunrise's |cos h0| reaching 0.8, near 61.5 deg at the
+// solstices; the latitude bound, 72.5 deg): around every switch, found by a
+// scan, neither side is off.
+TEST(ThermalEarth, LatitudeTableAcrossTheSwitchesToTheExactCycle) {
+  for (double day : {80.3, 121.0, 172.5, 355.7}) {
+    CalendarInstant c;
+    c.day_of_year = day;
+    c.utc_hours = 3.0;
+    const ClimatologyInstant now(climatology(), c);
+    const DiurnalLatitudeTable& table = now.latitude_table(SurfaceKind::land);
+    std::vector<double> switches;
+    for (double lat = -89.99; lat < 89.99; lat += 0.01)
+      if (table.interpolates(lat) != table.interpolates(lat + 0.01)) switches.push_back(lat);
+    EXPECT_GE(switches.size(), 2u) << "day " << day;  // one each side of the equator at least
+    for (double at : switches) {
+      double worst = 0;
+      for (double lat = at - 0.3; lat <= at + 0.3; lat += 1.1e-4)
+        for (double lon : {-100.0, 80.0}) {
+          const double s = std::sin(lat * kPi / 180.0), co = std::cos(lat * kPi / 180.0);
+          const double e = now.temperature_K(SurfaceKind::land, lat, s, co, lon);
+          worst = std::max(worst, std::fabs(now.tabulated_temperature_K(SurfaceKind::land, lat, s, co, lon) - e) / e);
+        }
+      EXPECT_LT(worst, 1e-11) << "day " << day << " near " << at;
+    }
+  }
+  // The ends of the table: the poles themselves.
   CalendarInstant c;
-  c.day_of_year = 172.5;
-  c.utc_hours = 3.0;
+  c.day_of_year = 80.3;
   const ClimatologyInstant now(climatology(), c);
-  double worst = 0;
-  for (double centre : {-66.6, 66.6, -70.0, 70.0})
-    for (double lat = centre - 3.0; lat <= centre + 3.0; lat += 1.1e-4)
-      for (double lon : {-100.0, 80.0}) {
-        const double s = std::sin(lat * kPi / 180.0), co = std::cos(lat * kPi / 180.0);
-        const double exact = now.temperature_K(SurfaceKind::land, lat, s, co, lon);
-        worst = std::max(worst,
-                         std::fabs(now.tabulated_temperature_K(SurfaceKind::land, lat, s, co, lon) - exact) / exact);
-      }
-  EXPECT_LT(worst, 1e-11);
+  for (double lat : {-90.0, 90.0})
+    EXPECT_NEAR(now.tabulated_temperature_K(SurfaceKind::water, lat, lat < 0 ? -1.0 : 1.0, 0.0, 10.0),
+                now.temperature_K(SurfaceKind::water, lat, lat < 0 ? -1.0 : 1.0, 0.0, 10.0), 1e-9);
 }
 
 // ---- 2. Airless central bodies ----------------------------------------------

@@ -380,7 +380,7 @@ double ClimatologyInstant::temperature_K(universe::SurfaceKind kind, double lati
 
 const DiurnalLatitudeTable& ClimatologyInstant::latitude_table(universe::SurfaceKind kind) const {
   const int k = kind == universe::SurfaceKind::land ? 0 : 1;
-  std::call_once(tables_->built[k], [&] {
+  tables_->built[k].call([&] {
     tables_->table[k] = std::make_unique<DiurnalLatitudeTable>(k == 0 ? land_ : water_, sun_, shape_,
                                                                calendar_.utc_hours, equation_of_time_min_);
   });
@@ -396,6 +396,7 @@ double ClimatologyInstant::tabulated_temperature_K(universe::SurfaceKind kind, d
 bool DiurnalLatitudeTable::interpolates(double latitude_deg) const { return stencil(latitude_deg).regular; }
 
 std::size_t DiurnalLatitudeTable::regular_nodes() const {
+  for (std::size_t s = 0; s < segments_.size(); ++s) segment_built_[s].call([&] { build_segment(s); });
   return static_cast<std::size_t>(std::count_if(nodes_.begin(), nodes_.end(), [](const Node& n) { return n.regular; }));
 }
 
@@ -441,28 +442,30 @@ DiurnalLatitudeTable::DiurnalLatitudeTable(const universe::ClimatologyDay& day, 
     while (s + 1 < segments_.size() && segment_tops_deg_[s] < static_cast<double>(d - 90)) ++s;
     segment_of_degree_[static_cast<std::size_t>(d)] = static_cast<std::uint16_t>(s);
   }
-  // (One thread: made on first use inside a frame's shading, which keeps to
-  // the engine's thread count; about a millisecond per kind.)
-  std::size_t s = 0;
-  for (std::int64_t k = 0; k < count; ++k) {
-    while (s + 1 < segments_.size() && k >= segments_[s + 1].first_node) ++s;
-    const Segment& g = segments_[s];
-    const std::int64_t i = k - g.first_node;
+  segment_built_ = std::make_unique<OnceFlag[]>(segments_.size());
+}
+
+// A segment's nodes, made on first use: inside a frame's shading, each
+// thread makes the segments its samples reach (so no thread of its own, and
+// a frame that sees few latitudes makes few), about 0.1 ms each.
+void DiurnalLatitudeTable::build_segment(std::size_t s) const {
+  const Segment& g = segments_[s];
+  for (std::int64_t i = 0; i <= g.intervals; ++i) {
     const double lat_deg =
         i == g.intervals ? segment_tops_deg_[s]
                          : std::min(90.0, g.low_deg + g.width_deg * static_cast<double>(i) / static_cast<double>(g.intervals));
     const double lat = lat_deg * rad_per_deg;
-    const SunPathAngles here = at_latitude(sun, std::sin(lat), std::cos(lat));
-    Node& node = nodes_[static_cast<std::size_t>(k)];
+    const SunPathAngles here = at_latitude(sun_, std::sin(lat), std::cos(lat));
+    Node& node = nodes_[static_cast<std::size_t>(g.first_node + i)];
     node.regular = false;
     if (here.cos_latitude < kMinCosLatitude) continue;  // (never interpolated)
-    const universe::DailyExtremes x = day.at(lat_deg);
-    DiurnalCycle c(x.t_min_K, x.t_max_K, here, shape);
+    const universe::DailyExtremes x = day_.at(lat_deg);
+    DiurnalCycle c(x.t_min_K, x.t_max_K, here, shape_);
     const HalfDay half = half_day(here);
     const double length_h = sunrise_sunset(half).length_h();
     const double cos_h0 = half.kind == HalfDay::arc ? std::cos(half.h0_rad) : 1.0;
     bool regular = half.kind == HalfDay::arc && std::fabs(cos_h0) <= kMaxCosHalfDay &&
-                   length_h > shape.min_day_length_h && length_h < kHoursPerDay && x.t_max_K > x.t_min_K &&
+                   length_h > shape_.min_day_length_h && length_h < kHoursPerDay && x.t_max_K > x.t_min_K &&
                    c.sunset_slope_K_h_ > 0.0 && c.sunset_K_ > x.t_min_K;
     if (regular) {
       const double night_h = kHoursPerDay - length_h;
@@ -480,6 +483,7 @@ DiurnalLatitudeTable::Stencil DiurnalLatitudeTable::stencil(double latitude_deg)
   require_range(latitude_deg, -90.0, 90.0, "latitude_deg");
   std::size_t s = segment_of_degree_[static_cast<std::size_t>(latitude_deg + 90.0)];
   while (s + 1 < segments_.size() && latitude_deg > segment_tops_deg_[s]) ++s;
+  segment_built_[s].call([&] { build_segment(s); });
   const Segment& g = segments_[s];
   const double t = std::clamp((latitude_deg - g.low_deg) / g.width_deg, 0.0, 1.0) * static_cast<double>(g.intervals);
   const std::int64_t k0 = std::clamp<std::int64_t>(static_cast<std::int64_t>(t) - 1, 0, g.intervals - 3);

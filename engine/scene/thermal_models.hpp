@@ -79,6 +79,7 @@
 #include <mutex>
 #include <vector>
 
+#include "core/once.hpp"
 #include "core/time.hpp"
 #include "universe/surface_climatology.hpp"
 
@@ -237,7 +238,9 @@ class DiurnalLatitudeTable {
   std::vector<Segment> segments_;
   std::vector<double> segment_tops_deg_;
   std::uint16_t segment_of_degree_[181] = {};  // by latitude + 90 deg, whole degrees
-  std::vector<Node> nodes_;
+  std::unique_ptr<OnceFlag[]> segment_built_;
+  mutable std::vector<Node> nodes_;  // each segment's made on first use (build_segment)
+  void build_segment(std::size_t segment) const;
 };
 
 // The climatology and the Sun at one instant, computed once for a frame:
@@ -260,14 +263,14 @@ class ClimatologyInstant {
   // cycle's minimum, at sunrise).
   double coldest_K() const { return std::min(land_.coldest_K(), water_.coldest_K()); }
   // temperature_K from the kind's DiurnalLatitudeTable, made on first use
-  // (about half a millisecond) and shared by copies of this instant.
+  // (its segments too) and shared by copies of this instant.
   double tabulated_temperature_K(universe::SurfaceKind kind, double latitude_deg, double sin_latitude,
                                  double cos_latitude, double longitude_deg) const;
   const DiurnalLatitudeTable& latitude_table(universe::SurfaceKind kind) const;
 
  private:
   struct LatitudeTables {
-    std::once_flag built[2];
+    OnceFlag built[2];
     std::unique_ptr<DiurnalLatitudeTable> table[2];  // land, water
   };
   universe::ClimatologyDay land_, water_;

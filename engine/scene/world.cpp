@@ -395,7 +395,7 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
 }
 
 const LightSpectra& WorldObject::light_spectra() const {
-  std::call_once(lit_, [this] {
+  lit_.call([this] {
     const World& w = *world_;
     const std::size_t n = w.spectral().sample_wavelengths_um.size();
     std::vector<double> srf(n, 0.0), e(n);

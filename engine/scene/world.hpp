@@ -28,6 +28,7 @@
 #include "atmosphere/refraction.hpp"
 #include "atmosphere/shell_path.hpp"
 #include "core/fidelity.hpp"
+#include "core/once.hpp"
 #include "core/time.hpp"
 #include "geometry/eclipse.hpp"
 #include "geometry/sample_grid.hpp"
@@ -479,7 +480,7 @@ class WorldObject {
   mutable std::unique_ptr<std::atomic<double>[]> patch_cache_;  // NaN until computed
   mutable std::once_flag windowed_;
   mutable VisibleWindow window_;
-  mutable std::once_flag lit_;
+  mutable OnceFlag lit_;  // (read per sample: the lock-free fast path)
   mutable LightSpectra light_spectra_;
   mutable std::mutex area_mutex_;
   mutable std::map<std::size_t, std::vector<AreaSourcePatch>> area_sources_;

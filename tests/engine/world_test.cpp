@@ -583,6 +583,35 @@ TEST(World, NegligibleLightIsBelowItsThreshold) {
 }
 
 namespace {
+// The radiance at the sunlit point (normal +x J2000, the Sun 10 deg off it)
+// of a 100 km gray (0.3) sphere in 0.45-0.75 um, with or without a 1 m gray
+// (0.3) sphere h from the point, 45 deg off its normal toward +z; object
+// limits above the default profile (README "Object limits") if `raised`.
+double sunlit_point_radiance(double h_m, bool with_source, bool raised) {
+  const double receiver_radius_m = 100e3;
+  const Eigen::Vector3d receiver(20000e3, 0, 0), up = Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d aside = Eigen::Vector3d(1, 0, 1).normalized();
+  auto e = geo_engine();
+  if (raised) {
+    eoir::universe::ObjectLimits limits;
+    limits.satellites = 1000;
+    e->set_limits(limits);
+  }
+  e->set_property("Sensor", "band_low_um", Value(0.45));
+  e->set_property("Sensor", "band_high_um", Value(0.75));
+  e->set_property("Sensor", "diffraction_wavelength_um", Value(0.6));
+  e->add_object(ObjectKind::satellite, "Receiver");
+  e->set_property("Receiver", "dimensions_m", Value(std::vector<double>{receiver_radius_m}));
+  e->set_property("Receiver", "reflectance", Value(0.3));
+  e->push_state("Receiver", e->time(), 0, receiver.data(), zero, identity);
+  if (with_source) {
+    const Eigen::Vector3d p = receiver + receiver_radius_m * up + h_m * aside;
+    add_sphere(*e, "Source", 1.0, p.data());
+    e->set_property("Source", "reflectance", Value(0.3));
+  }
+  return e->world("Sensor")->find("Receiver")->effective_radiance(0, receiver_radius_m * up, up);
+}
+
 // Beyond the default profile (README "Object limits"), eq. 7 light is also
 // left out where its irradiance cannot reach 1e-10 of the Sun's at the
 // receiver. A 1 m gray (0.3) sphere h from the sunlit point (normal +x
@@ -598,31 +627,7 @@ namespace {
 // largest N.L (1/pi) x its light at any phase, is below 1e-12 of the
 // Sun's irradiance already at the point (world.cpp kNegligibleAtPoint).
 TEST(World, FarLightLeftOutAgainstTheSunBeyondTheDefaultProfile) {
-  const double receiver_radius_m = 100e3;
-  const Eigen::Vector3d receiver(20000e3, 0, 0), up = Eigen::Vector3d::UnitX();
-  const Eigen::Vector3d aside = Eigen::Vector3d(1, 0, 1).normalized();
-  auto radiance_beneath = [&](double h_m, bool with_source, bool raised) {
-    auto e = geo_engine();
-    if (raised) {
-      eoir::universe::ObjectLimits limits;
-      limits.satellites = 1000;
-      e->set_limits(limits);
-    }
-    e->set_property("Sensor", "band_low_um", Value(0.45));
-    e->set_property("Sensor", "band_high_um", Value(0.75));
-    e->set_property("Sensor", "diffraction_wavelength_um", Value(0.6));
-    e->add_object(ObjectKind::satellite, "Receiver");
-    e->set_property("Receiver", "dimensions_m", Value(std::vector<double>{receiver_radius_m}));
-    e->set_property("Receiver", "reflectance", Value(0.3));
-    e->push_state("Receiver", e->time(), 0, receiver.data(), zero, identity);
-    if (with_source) {
-      const Eigen::Vector3d p = receiver + receiver_radius_m * up + h_m * aside;
-      add_sphere(*e, "Source", 1.0, p.data());
-      e->set_property("Source", "reflectance", Value(0.3));
-    }
-    const auto world = e->world("Sensor");
-    return world->find("Receiver")->effective_radiance(0, receiver_radius_m * up, up);
-  };
+  const auto radiance_beneath = sunlit_point_radiance;
   // 1 km: kept by both profiles, the same light.
   const double near_default = radiance_beneath(1e3, true, false) - radiance_beneath(1e3, false, false);
   const double near_raised = radiance_beneath(1e3, true, true) - radiance_beneath(1e3, false, true);
@@ -643,27 +648,8 @@ TEST(World, FarLightLeftOutAgainstTheSunBeyondTheDefaultProfile) {
 // must be below 1e-12 (it is 3.2e-13 at 1,000 km); where it is kept (1 to
 // 100 km, 3.2e-7 to 3.2e-11) it adds light.
 TEST(World, LightLeftOutAtAPointOnlyBelowItsBound) {
-  const double receiver_radius_m = 100e3;
-  const Eigen::Vector3d receiver(20000e3, 0, 0), up = Eigen::Vector3d::UnitX();
-  const Eigen::Vector3d aside = Eigen::Vector3d(1, 0, 1).normalized();
-  auto radiance_beneath = [&](double h_m, bool with_source) {
-    auto e = geo_engine();
-    e->set_property("Sensor", "band_low_um", Value(0.45));
-    e->set_property("Sensor", "band_high_um", Value(0.75));
-    e->set_property("Sensor", "diffraction_wavelength_um", Value(0.6));
-    e->add_object(ObjectKind::satellite, "Receiver");
-    e->set_property("Receiver", "dimensions_m", Value(std::vector<double>{receiver_radius_m}));
-    e->set_property("Receiver", "reflectance", Value(0.3));
-    e->push_state("Receiver", e->time(), 0, receiver.data(), zero, identity);
-    if (with_source) {
-      const Eigen::Vector3d p = receiver + receiver_radius_m * up + h_m * aside;
-      add_sphere(*e, "Source", 1.0, p.data());
-      e->set_property("Source", "reflectance", Value(0.3));
-    }
-    return e->world("Sensor")->find("Receiver")->effective_radiance(0, receiver_radius_m * up, up);
-  };
   for (double h_m : {1e3, 1e4, 1e5, 1e6, 3e6}) {
-    const double with = radiance_beneath(h_m, true), without = radiance_beneath(h_m, false);
+    const double with = sunlit_point_radiance(h_m, true, false), without = sunlit_point_radiance(h_m, false, false);
     const double ratio = 0.3 * 1.05 / 0.985 / (h_m * h_m);  // its light over the point's, at most (R = 1 m)
     if (h_m <= 1e5) {
       EXPECT_GT(with, without) << h_m;

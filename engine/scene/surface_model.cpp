@@ -183,8 +183,8 @@ double SurfaceModel::temperature_K(const SurfacePoint& point) const {
   if (!g.climatology || !g.land_mask) return thermal_.at(point.site.normal_body, part.temperature_K);
   const auto kind = g.land_mask->at(point.latitude_deg, point.longitude_deg) ? universe::SurfaceKind::land
                                                                              : universe::SurfaceKind::water;
-  return g.climatology_now.tabulated_temperature_K(kind, point.latitude_deg, point.sin_latitude, point.cos_latitude,
-                                         point.longitude_deg);
+  return g.climatology_now.tabulated_temperature_K(kind, point.latitude_deg, point.sin_latitude,
+                                                   point.cos_latitude, point.longitude_deg);
 }
 
 void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& out) const {

@@ -411,9 +411,8 @@ constexpr double kTableStep_deg = 0.025;
 // |cos h0| at most kMaxCosHalfDay (acos and its derivatives steep near
 // +-1), the latitude's cosine at least kMinCosLatitude (cos h0 = (sin e0 -
 // sin phi sin delta) / (cos phi cos delta) steep near the poles: 1e-11 off
-// at 77 deg with 0.2), and the
-// night decay's r = q / n at most kMaxNightDecayRatio (k and T_inf diverge
-// as r -> 1).
+// at 77 deg with 0.2), and the night decay's r = q / n at most
+// kMaxNightDecayRatio (k and T_inf diverge as r -> 1).
 constexpr double kMaxCosHalfDay = 0.8;
 constexpr double kMinCosLatitude = 0.3;
 constexpr double kMaxNightDecayRatio = 0.9;
@@ -505,7 +504,9 @@ double DiurnalLatitudeTable::temperature_K(double latitude_deg, double sin_latit
   const double x = st.x;
   const double a = x - 1.0, b = x - 2.0, c = x - 3.0;
   const double w0 = -a * b * c / 6.0, w1 = x * b * c / 2.0, w2 = -x * a * c / 2.0, w3 = x * a * b / 6.0;
-  const auto at = [&](double Node::*field) { return w0 * n[0].*field + w1 * n[1].*field + w2 * n[2].*field + w3 * n[3].*field; };
+  const auto at = [&](double Node::*field) {
+    return w0 * n[0].*field + w1 * n[1].*field + w2 * n[2].*field + w3 * n[3].*field;
+  };
   // Sunrise and sunset first: then only the branch's own parameters.
   DiurnalCycle cycle;
   cycle.sunrise_h_ = at(&Node::sunrise_h);

@@ -363,9 +363,8 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     }
     const double d = to_src.norm();
     if (!(d > src.radius_m)) continue;
-    const double per_d = 1.0 / d, sin_radius = src.radius_m * per_d;  // (one division for the three)
-    const Vec3 I = to_src * per_d;
-    const double omega = constants::pi * sin_radius * sin_radius;
+    const Vec3 I = to_src / d;
+    const double omega = omega_here;
     if (src.area_source && omega > w.view.fidelity.area_source_solid_angle_sr) {
       for (const AreaSourcePatch& a : area_source(k)) {
         const double c = a.direction.dot(n);

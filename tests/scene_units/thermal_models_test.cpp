@@ -337,9 +337,9 @@ TEST(ThermalEarth, RefusesBadArguments) {
 }
 
 // A frame's temperatures come from latitude tables (issue 23 item 6: results
-// within 1e-9 of the exact ones, relative; a radiance moves some five times
-// its temperature's relative change at 10 um and 300 K, so the table is held
-// to 1e-11): the exact cycle at every latitude 0.0137 deg apart, on the
+// within 1e-9 of the exact ones, relative; a radiance moves some 5 (10 um)
+// to 12 (4 um) times its temperature's relative change at 300 K, so the
+// table is held to 1e-11): the exact cycle at every latitude 0.0137 deg apart, on the
 // first of every month, the solstices and the equinoxes, at four times and
 // four longitudes.
 TEST(ThermalEarth, LatitudeTableMatchesTheExactCycleToOnePartIn1e11) {

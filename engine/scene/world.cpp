@@ -346,17 +346,18 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     const ObjectLight& src = w.lights[k];
     if (src.object == id || negligible_light_[k]) continue;
     const Vec3 to_src = src.position_m - p;
+    const WorldObject& source = *w.objects[static_cast<std::size_t>(src.object)];
     // A disc below (eq. 7; an area source too while it subtends less than
     // half area_source_solid_angle_sr here): first the sign of cos_i, then
     // whether it can matter here at all.
-    const double omega_here = constants::pi * src.radius_m * src.radius_m / to_src.squaredNorm();
-    if (!src.area_source || omega_here < 0.5 * w.view.fidelity.area_source_solid_angle_sr) {
+    const double omega = constants::pi * src.radius_m * src.radius_m / to_src.squaredNorm();
+    if (!src.area_source || omega < 0.5 * w.view.fidelity.area_source_solid_angle_sr) {
       if (!(to_src.dot(n) > 0)) continue;  // (cos_i <= 0 below, but for rounding)
       // Its bound here: dOmega x the BRDF's largest N.L value x its light
       // at any phase, against kNegligibleAtPoint of the point's irradiance
       // so far (the Sun's by day), wavelength by wavelength.
-      const std::vector<double>& bound = w.objects[static_cast<std::size_t>(src.object)]->light_spectra().bound;
-      const double scale = omega_here * brdf.max_projected_value_per_sr() / kNegligibleAtPoint;
+      const std::vector<double>& bound = source.light_spectra().bound;
+      const double scale = omega * brdf.max_projected_value_per_sr() / kNegligibleAtPoint;
       std::size_t i = 0;
       while (i < bound.size() && scale * bound[i] <= out[i]) ++i;
       if (!bound.empty() && i == bound.size()) continue;
@@ -364,7 +365,6 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     const double d = to_src.norm();
     if (!(d > src.radius_m)) continue;
     const Vec3 I = to_src / d;
-    const double omega = omega_here;
     if (src.area_source && omega > w.view.fidelity.area_source_solid_angle_sr) {
       for (const AreaSourcePatch& a : area_source(k)) {
         const double c = a.direction.dot(n);
@@ -382,12 +382,11 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
                                                                                      occulters);
     if (visible <= 0) continue;
     const double g = omega * visible * cos_i * brdf.value(I, toward, n);
-    const LightSpectra& spectra = w.objects[static_cast<std::size_t>(src.object)]->light_spectra();
+    const LightSpectra& spectra = source.light_spectra();
     if (!spectra.reflects) {  // eclipsed or black: no phase to weigh
       for (std::size_t i = 0; i < count; ++i) out[i] += g * spectra.emitted[i];
       continue;
     }
-    const WorldObject& source = *w.objects[static_cast<std::size_t>(src.object)];
     const double phase = source.disk_photometry.phase(radiometry::DiscView{src.to_sun, -I, source.placed.body_to_frame});
     for (std::size_t i = 0; i < count; ++i) out[i] += g * (spectra.reflected[i] * phase + spectra.emitted[i]);
   }

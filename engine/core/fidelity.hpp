@@ -37,6 +37,10 @@ enum class PointTail : int { automatic = 0, direct = 1, multilevel = 2 };
 // energies) or product (the plain line-spread product from 32 lambda F# on,
 // 2-D FFT tables below, as the engine had them before the quadrant tables).
 enum class WidePixelTables : int { quadrant = 0, product = 1 };
+// FFT sizes of the 2-D point-source tables: fitted (the smallest even size
+// with factors 2, 3, 5, 7 that holds the table's period) or power_of_two (the
+// next power of two, as before: the tables bit for bit as they were).
+enum class TableFftSizes : int { fitted = 0, power_of_two = 1 };
 
 // How far the PSF reaches in the focal plane: k_d lambda F# of diffraction
 // tail, k_j sigma of jitter (times the focal length) and k_f defocus blur
@@ -88,6 +92,7 @@ struct Fidelity {
   PointTail point_tail = PointTail::automatic;   // how the energy beyond the core box is added
   double point_table_max_mib = 64.0;             // bound on the model's tables (MiB)
   WidePixelTables point_wide_pixels = WidePixelTables::quadrant;  // tables of wide pixels
+  TableFftSizes point_table_fft_sizes = TableFftSizes::fitted;  // FFT sizes of the 2-D tables
   double point_quadrant_lambda_f = 16.0;  // quadrant tables from this pixel width (lambda F#) on; 0: every pixel
   // Streaks (a source moving during the integration): sub-steps along the
   // segment, at least this many per pixel and per lambda F#.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/parallel_ranges.hpp"
 #include "sensor/catmull_rom.hpp"
 
 namespace eoir::sensor {
@@ -84,52 +85,79 @@ double taper(double r, double a) {
 }
 
 std::vector<HaloLevel> halo_levels(const FocalPlaneSamples& e0, std::int64_t taper_start_px) {
-  std::vector<HaloLevel> levels;
   const std::int64_t half = e0.half(), a = std::max<std::int64_t>(1, taper_start_px);
-  if (half <= a) return levels;  // w_1 = 1 on the whole window: nothing beyond the core
+  if (half <= a) return {};  // w_1 = 1 on the whole window: nothing beyond the core
   std::int64_t count = 1;
   while (a << count < half) ++count;  // w_(L+1) = 1 on the window once a 2^L >= H
-  for (std::int64_t l = 1; l <= count; ++l) {
-    const std::int64_t h = a << (l - 1);
-    const double hd = static_cast<double>(h);
-    const bool last = l == count;
-    const std::int64_t r0 = (std::min(4 * h, half) + h - 1) / h + 2;
-    const std::int64_t side0 = 2 * r0 + 1;
-    std::vector<double> k(static_cast<std::size_t>(side0 * side0), 0.0);
-    for (std::int64_t dy = -half; dy <= half; ++dy)
-      for (std::int64_t dx = -half; dx <= half; ++dx) {
-        const double ax = std::abs(static_cast<double>(dx)), ay = std::abs(static_cast<double>(dy));
-        const double inner = taper(ax, hd) * taper(ay, hd);
-        const double outer = last ? 1.0 : taper(ax, 2 * hd) * taper(ay, 2 * hd);
-        const double t = e0.at(dx, dy) * (outer - inner) / (hd * hd);
-        if (t == 0) continue;
-        const auto jx0 = static_cast<std::int64_t>(std::floor(static_cast<double>(dx) / hd));
-        const auto jy0 = static_cast<std::int64_t>(std::floor(static_cast<double>(dy) / hd));
-        for (std::int64_t jy = jy0 - 1; jy <= jy0 + 2; ++jy) {
-          const double wy = catmull_rom(static_cast<double>(dy) / hd - static_cast<double>(jy));
-          for (std::int64_t jx = jx0 - 1; jx <= jx0 + 2; ++jx) {
-            const double w = wy * catmull_rom(static_cast<double>(dx) / hd - static_cast<double>(jx));
-            if (w != 0) k[static_cast<std::size_t>((jy + r0) * side0 + jx + r0)] += t * w;
+  std::vector<HaloLevel> levels(static_cast<std::size_t>(count));
+  // Levels in parallel (each made whole by one thread).
+  parallel_ranges(
+      count, 0,
+      [&](std::int64_t first, std::int64_t end) {
+        for (std::int64_t l = first + 1; l <= end; ++l) {
+          const std::int64_t h = a << (l - 1);
+          const double hd = static_cast<double>(h);
+          const bool last = l == count;
+          const std::int64_t r0 = (std::min(4 * h, half) + h - 1) / h + 2;
+          const std::int64_t side0 = 2 * r0 + 1;
+          std::vector<double> k(static_cast<std::size_t>(side0 * side0), 0.0);
+          // Per offset d along an axis: the tapers, the node below d / h and the
+          // Catmull-Rom weights of nodes j0 - 1..j0 + 2 (the same for x and y).
+          struct Axis {
+            double inner, outer;
+            std::int64_t j0;
+            double w[4];
+          };
+          std::vector<Axis> axis(static_cast<std::size_t>(2 * half + 1));
+          for (std::int64_t d = -half; d <= half; ++d) {
+            Axis& at = axis[static_cast<std::size_t>(d + half)];
+            const double ad = std::abs(static_cast<double>(d));
+            at.inner = taper(ad, hd);
+            at.outer = last ? 1.0 : taper(ad, 2 * hd);
+            at.j0 = static_cast<std::int64_t>(std::floor(static_cast<double>(d) / hd));
+            for (int b = 0; b < 4; ++b)
+              at.w[b] = catmull_rom(static_cast<double>(d) / hd - static_cast<double>(at.j0 - 1 + b));
           }
+          // (Where the outer taper is zero so is the inner one, and t = 0.)
+          std::int64_t reach_d = half;
+          while (reach_d > 0 && axis[static_cast<std::size_t>(reach_d + half)].outer == 0) --reach_d;
+          for (std::int64_t dy = -reach_d; dy <= reach_d; ++dy) {
+            const Axis& ay = axis[static_cast<std::size_t>(dy + half)];
+            for (std::int64_t dx = -reach_d; dx <= reach_d; ++dx) {
+              const Axis& ax = axis[static_cast<std::size_t>(dx + half)];
+              const double inner = ax.inner * ay.inner;
+              const double outer = last ? 1.0 : ax.outer * ay.outer;
+              const double t = e0.at(dx, dy) * (outer - inner) / (hd * hd);
+              if (t == 0) continue;
+              for (int by = 0; by < 4; ++by) {
+                const double wy = ay.w[by];
+                double* row = &k[static_cast<std::size_t>((ay.j0 - 1 + by + r0) * side0 + ax.j0 - 1 + r0)];
+                for (int bx = 0; bx < 4; ++bx) {
+                  const double w = wy * ax.w[bx];
+                  if (w != 0) row[bx] += t * w;
+                }
+              }
+            }
+          }
+          // Trim to the nodes that hold anything.
+          std::int64_t reach = 0;
+          for (std::int64_t jy = -r0; jy <= r0; ++jy)
+            for (std::int64_t jx = -r0; jx <= r0; ++jx)
+              if (k[static_cast<std::size_t>((jy + r0) * side0 + jx + r0)] != 0)
+                reach = std::max({reach, std::abs(jx), std::abs(jy)});
+          HaloLevel level;
+          level.spacing_px = h;
+          level.reach_nodes = reach;
+          const std::int64_t side = 2 * reach + 1;
+          level.kernel.resize(static_cast<std::size_t>(side * side));
+          for (std::int64_t jy = -reach; jy <= reach; ++jy)
+            for (std::int64_t jx = -reach; jx <= reach; ++jx)
+              level.kernel[static_cast<std::size_t>((jy + reach) * side + jx + reach)] =
+                  k[static_cast<std::size_t>((jy + r0) * side0 + jx + r0)];
+          levels[static_cast<std::size_t>(l - 1)] = std::move(level);
         }
-      }
-    // Trim to the nodes that hold anything.
-    std::int64_t reach = 0;
-    for (std::int64_t jy = -r0; jy <= r0; ++jy)
-      for (std::int64_t jx = -r0; jx <= r0; ++jx)
-        if (k[static_cast<std::size_t>((jy + r0) * side0 + jx + r0)] != 0)
-          reach = std::max({reach, std::abs(jx), std::abs(jy)});
-    HaloLevel level;
-    level.spacing_px = h;
-    level.reach_nodes = reach;
-    const std::int64_t side = 2 * reach + 1;
-    level.kernel.resize(static_cast<std::size_t>(side * side));
-    for (std::int64_t jy = -reach; jy <= reach; ++jy)
-      for (std::int64_t jx = -reach; jx <= reach; ++jx)
-        level.kernel[static_cast<std::size_t>((jy + reach) * side + jx + reach)] =
-            k[static_cast<std::size_t>((jy + r0) * side0 + jx + r0)];
-    levels.push_back(std::move(level));
-  }
+      },
+      1);
   return levels;
 }
 

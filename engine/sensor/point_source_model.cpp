@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/fftw_plans.hpp"
 #include "sensor/sensor_model.hpp"
 #include "sensor/system_psf.hpp"
 
@@ -49,40 +50,44 @@ bool separable_pixels(const OpticsModel& optics, const geometry::SampleGrid& g, 
 
 namespace {
 
-// Calls store(jx, jy, E(u)) for u = (j + delta) / steps pixels along each
-// axis, j in [-half, half], delta = 1/2 for odd `steps` (so that the table
-// offsets -1/2 + i / steps fall on samples). One FFT of at most kMaxTableFft
-// points when its period at this step is long enough; otherwise m x m FFTs
-// at m steps, interleaved (j = m i + r, r in [0, m)).
-// `otf`: the radial OTF table (radial_otf_table).
-template <class Store>
-void sample_pixel_energy(const OpticsModel& optics, const geometry::SampleGrid& g, std::int64_t steps,
-                         std::int64_t half, const Fidelity& f, const std::vector<double>& otf, Store&& store) {
+// E(u) at u = (j + delta) / steps pixels along each axis, j in [-half,
+// half] (at least), delta = 1/2 for odd `steps` (so that the table offsets
+// -1/2 + i / steps fall on samples): element (j_x, j_y) of the result. One
+// FFT of at most kMaxTableFft points when its period at this step is long
+// enough; otherwise m x m FFTs at m steps, interleaved (j = m i + r, r in
+// [0, m)). `otf`: the radial OTF table (radial_otf_table).
+FocalPlaneSamples pixel_energy_samples(const OpticsModel& optics, const geometry::SampleGrid& g, std::int64_t steps,
+                                       std::int64_t half, const Fidelity& f, const std::vector<double>& otf) {
   const double delta = steps % 2 ? 0.5 : 0.0;
   const double lambda_f_cm = optics.diffraction_wavelength_cm * optics.f_number;
   const double pixel_in_lambda_f = std::max(g.pitch_x_cm, g.pitch_y_cm) / lambda_f_cm;
   const double extent_px = 2.0 * static_cast<double>(half) / static_cast<double>(steps);
   const double period_px =
       std::max(kTablePeriodPerExtent * extent_px, kAliasPeriodPixels / std::cbrt(pixel_in_lambda_f));
+  const double fine_x = g.pitch_x_cm / static_cast<double>(steps), fine_y = g.pitch_y_cm / static_cast<double>(steps);
+  FocalPlaneSamples e;
+  e.size = 2 * half + 1;
+  e.step_x_cm = fine_x;
+  e.step_y_cm = fine_y;
   if (separable_pixels(optics, g, f)) {
     const double lsf_period_px =
         quadrant(f) ? std::max(period_px, kLsfPeriodLambdaF / pixel_in_lambda_f) : period_px;
-    const double fine_x = g.pitch_x_cm / static_cast<double>(steps), fine_y = g.pitch_y_cm / static_cast<double>(steps);
     const std::vector<double> ex =
         pixel_integrated_lsf(optics, g.pitch_x_cm, fine_x, half, delta * fine_x, lsf_period_px * g.pitch_x_cm, otf);
     const std::vector<double> ey =
         g.pitch_y_cm == g.pitch_x_cm
             ? ex
             : pixel_integrated_lsf(optics, g.pitch_y_cm, fine_y, half, delta * fine_y, lsf_period_px * g.pitch_y_cm, otf);
+    e.values.resize(static_cast<std::size_t>(e.size * e.size));
     for (std::int64_t jy = -half; jy <= half; ++jy)
       for (std::int64_t jx = -half; jx <= half; ++jx)
-        store(jx, jy, ex[static_cast<std::size_t>(jx + half)] * ey[static_cast<std::size_t>(jy + half)]);
-    return;
+        e.values[static_cast<std::size_t>((jy + half) * e.size + jx + half)] =
+            ex[static_cast<std::size_t>(jx + half)] * ey[static_cast<std::size_t>(jy + half)];
+    return e;
   }
   const auto period_fine = static_cast<std::int64_t>(std::ceil(period_px * static_cast<double>(steps)));
   const std::int64_t m = (period_fine + kMaxTableFft - 1) / kMaxTableFft;
   const std::int64_t coarse_half = half / m + 1, size = 2 * coarse_half + 1;
-  const double fine_x = g.pitch_x_cm / static_cast<double>(steps), fine_y = g.pitch_y_cm / static_cast<double>(steps);
   const double step_x = fine_x * static_cast<double>(m), step_y = fine_y * static_cast<double>(m);
   // The FFT period, in steps, is the window plus the alias margin
   // (system_psf.cpp): the margin sets it; the FFT is as large as a
@@ -94,23 +99,55 @@ void sample_pixel_energy(const OpticsModel& optics, const geometry::SampleGrid& 
   numerics.otf_table = &otf;
   numerics.alias_margin_steps = std::max<std::int64_t>(1, period_steps - size);
   const std::int64_t nyquist = std::max(fft_subdivisions(optics, step_x, 1), fft_subdivisions(optics, step_y, 1));
-  numerics.fft_size = 128;
-  while (numerics.fft_size < kMaxTableFft && numerics.fft_size < period_steps * nyquist) numerics.fft_size *= 2;
+  // point_table_fft_sizes fitted: the smallest even size FFTW transforms
+  // quickly (factors 2, 3, 5, 7), not the next power of two (up to 4x the
+  // points, for the same period rule).
+  const std::int64_t points = std::max<std::int64_t>(128, period_steps * nyquist);
+  numerics.fitted_fft_size = f.point_table_fft_sizes == TableFftSizes::fitted;
+  if (numerics.fitted_fft_size) {
+    numerics.fft_size =
+        std::min(kMaxTableFft, 2 * static_cast<std::int64_t>(fftw::good_size(static_cast<int>((points + 1) / 2))));
+  } else {
+    numerics.fft_size = 128;
+    while (numerics.fft_size < kMaxTableFft && numerics.fft_size < points) numerics.fft_size *= 2;
+  }
+  const auto transform = [&](std::int64_t rx, std::int64_t ry) {
+    return pixel_integrated_psf(optics, g.pitch_x_cm, g.pitch_y_cm, step_x, step_y, size,
+                                (static_cast<double>(rx) + delta) * fine_x,
+                                (static_cast<double>(ry) + delta) * fine_y, numerics);
+  };
+  if (m == 1) return transform(0, 0);  // (half + 1 samples each side)
+  e.values.resize(static_cast<std::size_t>(e.size * e.size));
   for (std::int64_t ry = 0; ry < m; ++ry)
     for (std::int64_t rx = 0; rx < m; ++rx) {
-      const FocalPlaneSamples t =
-          pixel_integrated_psf(optics, g.pitch_x_cm, g.pitch_y_cm, step_x, step_y, size,
-                               (static_cast<double>(rx) + delta) * fine_x, (static_cast<double>(ry) + delta) * fine_y,
-                               numerics);
+      const FocalPlaneSamples t = transform(rx, ry);
       for (std::int64_t iy = -coarse_half; iy <= coarse_half; ++iy) {
         const std::int64_t jy = m * iy + ry;
         if (jy < -half || jy > half) continue;
         for (std::int64_t ix = -coarse_half; ix <= coarse_half; ++ix) {
           const std::int64_t jx = m * ix + rx;
-          if (jx >= -half && jx <= half) store(jx, jy, t.at(ix, iy));
+          if (jx >= -half && jx <= half)
+            e.values[static_cast<std::size_t>((jy + half) * e.size + jx + half)] = t.at(ix, iy);
         }
       }
     }
+  return e;
+}
+
+// put(i_x, i_y, d_x, d_y, E(d - phi_i)) for offsets i in [0, offsets) and
+// pixels |d| <= reach: the sample j = d steps + floor(steps / 2) - (i - shift)
+// of pixel_energy_samples (the table's offset phi_i = -1/2 + (i - shift) / steps).
+template <class Put>
+void gather(const FocalPlaneSamples& e, std::int64_t steps, std::int64_t offsets, std::int64_t shift,
+            std::int64_t reach, Put&& put) {
+  const std::int64_t half = e.half();
+  const auto sample = [&](std::int64_t i, std::int64_t d) { return d * steps + steps / 2 - (i - shift) + half; };
+  for (std::int64_t iy = 0; iy < offsets; ++iy)
+    for (std::int64_t ix = 0; ix < offsets; ++ix)
+      for (std::int64_t dy = -reach; dy <= reach; ++dy) {
+        const double* row = &e.values[static_cast<std::size_t>(sample(iy, dy) * e.size)];
+        for (std::int64_t dx = -reach; dx <= reach; ++dx) put(ix, iy, dx, dy, row[sample(ix, dx)]);
+      }
 }
 
 // The table entries that hold sample j along one axis: offset index i and
@@ -225,8 +262,8 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
   // E(d - phi) is j = d S + floor(S / 2) - (i - 1).
   {
     const std::int64_t s = m.core_steps, offsets = s + 3, half = c * s + s + 1, box = 2 * c + 1;
-    const auto entries = entries_of_samples(half, s, offsets, 1, c);
     if (m.separable) {
+      const auto entries = entries_of_samples(half, s, offsets, 1, c);
       // One line-spread function per axis (the 1-D tables hold S + 3 offsets
       // of 2c + 1 pixels: no memory bound needed).
       const double delta = s % 2 ? 0.5 : 0.0;
@@ -248,12 +285,11 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
       else
         axis(g.pitch_y_cm, m.core_y);
     } else {
+      const FocalPlaneSamples e = pixel_energy_samples(optics, g, s, half, f, otf);
       m.core.assign(static_cast<std::size_t>(offsets * offsets * box * box), 0.0f);
-      sample_pixel_energy(optics, g, s, half, f, otf, [&](std::int64_t jx, std::int64_t jy, double v) {
-        for (const auto& [iy, dy] : entries[static_cast<std::size_t>(jy + half)])
-          for (const auto& [ix, dx] : entries[static_cast<std::size_t>(jx + half)])
-            m.core[static_cast<std::size_t>((iy * offsets + ix) * box * box + (dy + c) * box + dx + c)] =
-                static_cast<float>(v);
+      gather(e, s, offsets, 1, c, [&](std::int64_t ix, std::int64_t iy, std::int64_t dx, std::int64_t dy, double v) {
+        m.core[static_cast<std::size_t>((iy * offsets + ix) * box * box + (dy + c) * box + dx + c)] =
+            static_cast<float>(v);
       });
     }
   }
@@ -264,22 +300,21 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
     const std::int64_t s = PointSourceModel::tail_steps, offsets = s + 1, half = H * s + s, window = 2 * H + 1;
     const bool direct = static_cast<double>(tail_bytes(H)) <= budget / 4;
     if (direct) m.tail.assign(static_cast<std::size_t>(offsets * offsets * window * window), 0.0f);
-    const auto entries = entries_of_samples(half, s, offsets, 0, H);
     FocalPlaneSamples e0;
     e0.size = window;
     e0.step_x_cm = g.pitch_x_cm;
     e0.step_y_cm = g.pitch_y_cm;
     e0.values.assign(static_cast<std::size_t>(window * window), 0.0);
-    sample_pixel_energy(optics, g, s, half, f, otf, [&](std::int64_t jx, std::int64_t jy, double v) {
-      if (jx % s == 0 && jy % s == 0 && std::abs(jx) <= s * H && std::abs(jy) <= s * H)
-        e0.values[static_cast<std::size_t>((jy / s + H) * window + jx / s + H)] = v;
-      if (!direct) return;
-      for (const auto& [iy, dy] : entries[static_cast<std::size_t>(jy + half)])
-        for (const auto& [ix, dx] : entries[static_cast<std::size_t>(jx + half)])
-          if (std::abs(dx) > c || std::abs(dy) > c)  // the core box is the core's
-            m.tail[static_cast<std::size_t>((iy * offsets + ix) * window * window + (dy + H) * window + dx + H)] =
-                static_cast<float>(v);
-    });
+    const FocalPlaneSamples e = pixel_energy_samples(optics, g, s, half, f, otf);
+    for (std::int64_t dy = -H; dy <= H; ++dy)  // phi = 0: sample j = d s
+      for (std::int64_t dx = -H; dx <= H; ++dx)
+        e0.values[static_cast<std::size_t>((dy + H) * window + dx + H)] = e.at(dx * s, dy * s);
+    if (direct)
+      gather(e, s, offsets, 0, H, [&](std::int64_t ix, std::int64_t iy, std::int64_t dx, std::int64_t dy, double v) {
+        if (std::abs(dx) > c || std::abs(dy) > c)  // the core box is the core's
+          m.tail[static_cast<std::size_t>((iy * offsets + ix) * window * window + (dy + H) * window + dx + H)] =
+              static_cast<float>(v);
+      });
     if (m.corners)
       half_pixel_corner_terms(*m.corners, m.pixel_x_lf, m.pixel_y_lf, H,
                               [&](std::int64_t ix, std::int64_t iy, std::int64_t dx, std::int64_t dy, double v) {

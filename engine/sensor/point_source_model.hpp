@@ -25,7 +25,10 @@
 // period of at least twice the table's extent and 64 (lambda F# / pitch)^(1/3)
 // pixels (one FFT per table, or m x m interleaved ones at m times the step
 // where a 2048-point FFT would not reach that period): the copies of the PSF
-// that alias into a table then hold below 1e-6 of the energy per pixel.
+// that alias into a table then hold below 1e-6 of the energy per pixel. The
+// FFT is the smallest even size with factors 2, 3, 5, 7 that holds that
+// period (point_table_fft_sizes fitted; power_of_two: the next power of
+// two, as before, up to 4x the points).
 // (energy_on_detector's own period is its window plus 9 steps: a window
 // near psf_grid_size wraps the energy beyond it back in, 1e-3 for a
 // Nyquist-sampled sensor's 511-pixel window at the default 512.)
@@ -51,9 +54,9 @@
 // where the 2-D fold takes 0.2 s at 18 lambda F# and seconds from 140 on.
 // With point_wide_pixels product (as before): the plain product, from 32
 // lambda F#.
-// Build: one FFT of up to 2048^2 points per table, 0.2-0.7 s for the
-// sensors above on a 2-core machine (more for pixels wider than about 50
-// lambda F#: seconds at 140 lambda F#).
+// Build: one FFT of up to 2048^2 points per table, 50-60 ms for the sensors
+// above on a 2-core machine (0.1-0.2 s at power_of_two sizes; a few ms for
+// a 64 x 64 array of 0.8 lambda F# pixels).
 #pragma once
 #include <cstdint>
 #include <memory>

@@ -35,6 +35,9 @@ struct PsfNumerics {
   // once by a caller that folds many times for the same optics (only its
   // size is checked); null: each fold makes its own.
   const std::vector<double>* otf_table = nullptr;
+  // fft_size may be any even size in [64, 4096] (the point-source tables fit
+  // it to their period); otherwise a power of two (psf_grid_size).
+  bool fitted_fft_size = false;
   explicit PsfNumerics(const Fidelity& f)
       : fft_size(f.psf_grid_size),
         otf_table_size(f.otf_table_size),

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Regression snapshot of the engine's outputs on the bundled scenarios.
 
-  snapshot.py take BUILD_DIR OUT_DIR      # frames (FITS, truth) and every data provider
+  snapshot.py take BUILD_DIR OUT_DIR [--sensor-parameter KEY=VALUE ...]
+                                          # frames (FITS, truth) and every data provider
   snapshot.py compare OLD_DIR NEW_DIR [--rtol 1e-12]
 
 `take` runs the `eoir` CLI of BUILD_DIR on every scenario of scenarios/validation
@@ -10,7 +11,8 @@ and with exact band integration), and `eoir report` of every provider group for
 every sensor (and every target object) at several times. `compare` reports
 the largest relative difference of every number (FITS pixels, truth, report
 values) and exits 1 if any exceeds --rtol. Used to show that a refactor leaves
-results unchanged.
+results unchanged. `--sensor-parameter` sets a parameter on every sensor of
+every scenario (e.g. point_narrow_tables=fft, to compare an option's old path).
 """
 import glob, json, os, subprocess, sys
 import numpy as np
@@ -49,7 +51,15 @@ def iso_plus(iso, seconds):
     return (t + timedelta(seconds=seconds)).strftime('%Y-%m-%dT%H:%M:%SZ')
 
 
-def take(build, out):
+def json_or_text(pair):
+    """(key, value) with the value parsed as JSON if it is (a number, true), else the text."""
+    try:
+        return pair[0], json.loads(pair[1])
+    except ValueError:
+        return pair[0], pair[1]
+
+
+def take(build, out, sensor_parameters=None):
     eoir = os.path.join(build, 'bin', 'eoir')
     groups = [g.strip() for g in run([eoir, 'groups']).splitlines() if g.strip() and not g.startswith(' ')]
     groups = [g.split('  ')[0] for g in groups if g.startswith('EOIR')]
@@ -57,15 +67,17 @@ def take(build, out):
         [os.path.join(ROOT, 'scenarios/demo/default.json')]
     for path in scenarios:
         try:
-            take_scenario(eoir, groups, path, out)
+            take_scenario(eoir, groups, path, out, sensor_parameters or {})
         except SystemExit as e:  # one scenario that cannot run does not stop the others
             print(os.path.basename(path), 'FAILED:', str(e).splitlines()[-1] if str(e) else '')
 
 
-def take_scenario(eoir, groups, path, out):
+def take_scenario(eoir, groups, path, out, sensor_parameters):
     if True:
         name = os.path.splitext(os.path.basename(path))[0]
         doc = json.load(open(path))
+        for s in doc['sensors']:
+            s.setdefault('parameters', {}).update(sensor_parameters)
         start, step = doc['start'], float(doc.get('step_s', 60))
         stop_s = 2 * step if doc['stop'] != start else 0
         stop = min(iso_plus(start, stop_s), doc['stop'])  # ISO strings of one form sort as times
@@ -170,7 +182,8 @@ def compare(old, new, rtol):
 
 if __name__ == '__main__':
     if len(sys.argv) >= 4 and sys.argv[1] == 'take':
-        take(sys.argv[2], sys.argv[3])
+        pairs = [sys.argv[i + 1] for i, a in enumerate(sys.argv) if a == '--sensor-parameter']
+        take(sys.argv[2], sys.argv[3], dict(json_or_text(p.split('=', 1)) for p in pairs))
     elif len(sys.argv) >= 4 and sys.argv[1] == 'compare':
         rtol = float(sys.argv[sys.argv.index('--rtol') + 1]) if '--rtol' in sys.argv else 1e-12
         sys.exit(compare(sys.argv[2], sys.argv[3], rtol))

@@ -54,8 +54,8 @@
 // where the 2-D fold takes 0.2 s at 18 lambda F# and seconds from 140 on.
 // With point_wide_pixels product (as before): the plain product, from 32
 // lambda F#.
-// Build: one FFT of up to 2048^2 points per table, 50-60 ms for the sensors
-// above on a 2-core machine (0.1-0.2 s at power_of_two sizes; a few ms for
+// Build: one FFT of up to 2048^2 points per table, 45-65 ms for the sensors
+// above on a 2-core machine (70-90 ms at power_of_two sizes; about 2 ms for
 // a 64 x 64 array of 0.8 lambda F# pixels).
 #pragma once
 #include <cstdint>

@@ -124,7 +124,7 @@ FocalPlaneSamples integrated_psf(const OpticsModel& optics, double cell_x_cm, do
   };
 
   // The transform's arrays, kept per thread up to kKeptFftSize^2 points
-  // (25 MB at most): a fresh pair costs a table build its page faults, a
+  // (17 MB at most): a fresh pair costs a table build its page faults, a
   // quarter of its time.
   struct Arrays {
     fftw::ComplexBuffer in;

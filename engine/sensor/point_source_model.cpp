@@ -134,35 +134,26 @@ FocalPlaneSamples pixel_energy_samples(const OpticsModel& optics, const geometry
   return e;
 }
 
+// The sample j of pixel_energy_samples (or of a line-spread function on
+// the same grid) that holds E(d - phi_i) for pixel d at the table's offset
+// phi_i = -1/2 + (i - shift) / steps: j = d steps + floor(steps / 2) - (i - shift).
+std::int64_t offset_sample(std::int64_t i, std::int64_t d, std::int64_t steps, std::int64_t shift) {
+  return d * steps + steps / 2 - (i - shift);
+}
+
 // put(i_x, i_y, d_x, d_y, E(d - phi_i)) for offsets i in [0, offsets) and
-// pixels |d| <= reach: the sample j = d steps + floor(steps / 2) - (i - shift)
-// of pixel_energy_samples (the table's offset phi_i = -1/2 + (i - shift) / steps).
+// pixels |d| <= reach, from pixel_energy_samples.
 template <class Put>
 void gather(const FocalPlaneSamples& e, std::int64_t steps, std::int64_t offsets, std::int64_t shift,
             std::int64_t reach, Put&& put) {
   const std::int64_t half = e.half();
-  const auto sample = [&](std::int64_t i, std::int64_t d) { return d * steps + steps / 2 - (i - shift) + half; };
+  const auto sample = [&](std::int64_t i, std::int64_t d) { return offset_sample(i, d, steps, shift) + half; };
   for (std::int64_t iy = 0; iy < offsets; ++iy)
     for (std::int64_t ix = 0; ix < offsets; ++ix)
       for (std::int64_t dy = -reach; dy <= reach; ++dy) {
         const double* row = &e.values[static_cast<std::size_t>(sample(iy, dy) * e.size)];
         for (std::int64_t dx = -reach; dx <= reach; ++dx) put(ix, iy, dx, dy, row[sample(ix, dx)]);
       }
-}
-
-// The table entries that hold sample j along one axis: offset index i and
-// pixel d with j = d S + floor(S / 2) - (i - shift), i in [0, offsets), |d| <= reach.
-std::vector<std::vector<std::pair<std::int64_t, std::int64_t>>> entries_of_samples(std::int64_t half, std::int64_t s,
-                                                                                    std::int64_t offsets,
-                                                                                    std::int64_t shift,
-                                                                                    std::int64_t reach) {
-  std::vector<std::vector<std::pair<std::int64_t, std::int64_t>>> out(static_cast<std::size_t>(2 * half + 1));
-  for (std::int64_t d = -reach; d <= reach; ++d)
-    for (std::int64_t i = 0; i < offsets; ++i) {
-      const std::int64_t j = d * s + s / 2 - (i - shift);
-      out[static_cast<std::size_t>(j + half)].emplace_back(i, d);
-    }
-  return out;
 }
 
 // The corner terms of G for the window's pixels |d| <= h at the half-pixel
@@ -263,7 +254,6 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
   {
     const std::int64_t s = m.core_steps, offsets = s + 3, half = c * s + s + 1, box = 2 * c + 1;
     if (m.separable) {
-      const auto entries = entries_of_samples(half, s, offsets, 1, c);
       // One line-spread function per axis (the 1-D tables hold S + 3 offsets
       // of 2c + 1 pixels: no memory bound needed).
       const double delta = s % 2 ? 0.5 : 0.0;
@@ -274,10 +264,11 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
         const double fine = pitch_cm / static_cast<double>(s);
         const std::vector<double> e =
             pixel_integrated_lsf(optics, pitch_cm, fine, half, delta * fine, period_px * pitch_cm, otf);
-        table.assign(static_cast<std::size_t>(offsets * box), 0.0);
-        for (std::int64_t j = -half; j <= half; ++j)
-          for (const auto& [i, d] : entries[static_cast<std::size_t>(j + half)])
-            table[static_cast<std::size_t>(i * box + d + c)] = e[static_cast<std::size_t>(j + half)];
+        table.resize(static_cast<std::size_t>(offsets * box));
+        for (std::int64_t i = 0; i < offsets; ++i)
+          for (std::int64_t d = -c; d <= c; ++d)
+            table[static_cast<std::size_t>(i * box + d + c)] =
+                e[static_cast<std::size_t>(offset_sample(i, d, s, 1) + half)];
       };
       axis(g.pitch_x_cm, m.core_x);
       if (g.pitch_y_cm == g.pitch_x_cm)

@@ -54,6 +54,27 @@ const BandPlanckTable::Node* BandPlanckTable::block(std::size_t b) const {
   return nodes.release();
 }
 
+double BandPlanckTable::blend(double wa, const BandPlanckTable& a, double wb, const BandPlanckTable& b,
+                              double temperature_K) {
+  const auto separately = [&] { return wa * a.radiance(temperature_K) + wb * b.radiance(temperature_K); };
+  if (!(temperature_K > min_temperature_K && temperature_K < max_temperature_K)) return separately();
+  const double s = (1.0 / temperature_K - a.u_min_) / node_spacing_per_K;
+  const auto k = static_cast<std::size_t>(s);
+  const std::size_t blk = k / nodes_per_block;
+  if (blk >= a.block_count_) return separately();
+  const Node* na = a.block(blk) + (k - blk * nodes_per_block);
+  const Node* nb = b.block(blk) + (k - blk * nodes_per_block);
+  const double t = s - static_cast<double>(k), t2 = t * t, t3 = t2 * t;
+  const double h01 = 3 * t2 - 2 * t3, h10 = t3 - 2 * t2 + t, h11 = t3 - t2;  // as radiance()
+  const double delta_a = h01 * na[0].log_ratio + h10 * na[0].slope_per_node + h11 * na[1].slope_per_node;
+  const double delta_b = h01 * nb[0].log_ratio + h10 * nb[0].slope_per_node + h11 * nb[1].slope_per_node;
+  const double x = delta_b - delta_a;
+  const double ratio =
+      std::fabs(x) < 1e-3 ? 1.0 + x * (1.0 + 0.5 * x * (1.0 + x / 3.0 * (1.0 + 0.25 * x))) : std::exp(x);
+  const double f = std::exp(delta_a) * (wa * na[0].f + wb * nb[0].f * ratio);
+  return std::isfinite(f) ? f : separately();  // (a node where f underflows: NaN)
+}
+
 double BandPlanckTable::radiance(double temperature_K) const {
   if (!(temperature_K > min_temperature_K && temperature_K < max_temperature_K)) return direct(temperature_K);
   const double s = (1.0 / temperature_K - u_min_) / node_spacing_per_K;

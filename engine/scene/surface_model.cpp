@@ -220,7 +220,7 @@ double SurfaceModel::emission_radiance(const SurfacePoint& point) const {
   double L = 0;
   if (f < 1.0) {
     const double T = temperature_K(point);
-    L = (1.0 - f) * ((1.0 - s) * view_->gray_body_radiance(T, 0.0) + s * point.spectrum->emission_radiance(T));
+    L = (1.0 - f) * point.spectrum->scaled_emission_radiance(s, T);
   }
   if (f > 0.0) L += f * cloud_emission_;
   return L;

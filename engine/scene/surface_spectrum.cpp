@@ -58,6 +58,13 @@ bool SurfaceSpectrum::emissivity(std::vector<double>& weights, double& scale) co
   return true;
 }
 
+double SurfaceSpectrum::scaled_emission_radiance(double scale, double temperature_K) const {
+  if (emission_table_ && view_->black_body && view_->integration != BandIntegration::exact)
+    return radiometry::BandPlanckTable::blend(1.0 - scale, *view_->black_body, scale, *emission_table_,
+                                              temperature_K);
+  return (1.0 - scale) * view_->gray_body_radiance(temperature_K, 0.0) + scale * emission_radiance(temperature_K);
+}
+
 double SurfaceSpectrum::emission_radiance(double temperature_K) const {
   if (gray_) return view_->gray_body_radiance(temperature_K, gray_reflectance_);
   if (emission_table_) return emission_table_->radiance(temperature_K);

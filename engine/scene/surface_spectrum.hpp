@@ -30,6 +30,10 @@ class SurfaceSpectrum {
   void add_emission(double temperature_K, std::vector<double>& out) const;
   // Its band integral (eq. 48), W cm^-2 sr^-1.
   double emission_radiance(double temperature_K) const;
+  // The same with its SRF scaled by s (emissivity 1 - s SRF, a land cover
+  // under the brightness map): (1 - s) B(T) + s eps B(T) band-integrated, one
+  // table look-up where both are tables (BandPlanckTable::blend).
+  double scaled_emission_radiance(double scale, double temperature_K) const;
   // Its emission as scale x the weights of an L(T) table (eps = scale x
   // weights[i] at the grid's wavelengths: 1 - SRF, or a gray body's eps
   // times ones), for tables of that emission through a path; false where

@@ -47,6 +47,44 @@ TEST(BandPlanckTable, InterpolatesTheSumTo1e12) {
   }
 }
 
+// blend (a land cover under the brightness map: (1 - s) B + s eps B with one
+// exp): against the two direct sums within 1e-12 over the same bands and
+// temperatures, for weights s in [0, 1]; within 1e-14 of the two look-ups
+// (also at 12-20 K, where the visible band underflows); off the table and at
+// NaN the two look-ups' sum.
+TEST(BandPlanckTable, BlendOfTwoTablesIsTheirSumWithOneExp) {
+  const SpectralBand bands[] = {{0.45, 0.75, 10}, {3.0, 5.0, 10}, {8.0, 12.0, 10}, {0.3, 14.0, 100}};
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> log_T(std::log(30.0), std::log(1200.0)), unit(0.0, 1.0);
+  for (const SpectralBand& b : bands) {
+    std::vector<double> eps;  // 1 - SRF of a land cover
+    for (std::int64_t i = 0; i < b.intervals; ++i)
+      eps.push_back(0.9 - 0.4 * std::abs(std::sin(0.7 * static_cast<double>(i))));
+    const BandPlanckTable black(b, midpoints(b), std::vector<double>(static_cast<std::size_t>(b.intervals), 1.0));
+    const BandPlanckTable own(b, midpoints(b), eps);
+    double worst_direct = 0, worst_lookups = 0;
+    for (int k = 0; k < 20000; ++k) {
+      const double T = std::exp(log_T(rng)), s = unit(rng);
+      const double expected = (1.0 - s) * black.direct(T) + s * own.direct(T);
+      if (expected < 1e-290) continue;
+      const double got = BandPlanckTable::blend(1.0 - s, black, s, own, T);
+      worst_direct = std::max(worst_direct, std::abs(got / expected - 1.0));
+      const double lookups = (1.0 - s) * black.radiance(T) + s * own.radiance(T);
+      worst_lookups = std::max(worst_lookups, std::abs(got / lookups - 1.0));
+    }
+    EXPECT_LT(worst_direct, 1e-12) << b.low_um << "-" << b.high_um << " um";
+    EXPECT_LT(worst_lookups, 1e-14) << b.low_um << "-" << b.high_um << " um";
+    for (double T : {5.0, 1200.0, 3000.0})  // off the table: the look-ups' sum
+      EXPECT_EQ(BandPlanckTable::blend(0.3, black, 0.7, own, T), 0.3 * black.radiance(T) + 0.7 * own.radiance(T))
+          << T;
+    for (double T : {12.0, 20.0}) {  // tiny or underflowing (the direct sum there) in the visible
+      const double sum = 0.3 * black.radiance(T) + 0.7 * own.radiance(T);
+      EXPECT_LE(std::abs(BandPlanckTable::blend(0.3, black, 0.7, own, T) - sum), 1e-14 * sum) << T;
+    }
+    EXPECT_TRUE(std::isnan(BandPlanckTable::blend(0.3, black, 0.7, own, std::nan(""))));
+  }
+}
+
 TEST(BandPlanckTable, OffTheTableAndUnderflowAreTheDirectSum) {
   const SpectralBand b{0.45, 0.75, 10};
   const BandPlanckTable table(b, midpoints(b), std::vector<double>(10, 1.0));

@@ -6,7 +6,7 @@
   snapshot.py compare OLD_DIR NEW_DIR [--rtol 1e-12]
 
 `take` runs the `eoir` CLI of BUILD_DIR on every scenario of scenarios/validation
-and scenarios/demo: `eoir run` for the first frames (and again in smooth mode
+and scenarios/demo: `eoir run` for the first frames (and again in smooth and bitmap modes
 and with exact band integration), and `eoir report` of every provider group for
 every sensor (and every target object) at several times. `compare` reports
 the largest relative difference of every number (FITS pixels, truth, report
@@ -82,7 +82,8 @@ def take_scenario(eoir, groups, path, out, sensor_parameters):
         stop_s = 2 * step if doc['stop'] != start else 0
         stop = min(iso_plus(start, stop_s), doc['stop'])  # ISO strings of one form sort as times
         variants = {'base': doc}
-        for mode, key, value in (('smooth', 'scene_mode', 'smooth'), ('exact', 'band_integration', 'exact')):
+        for mode, key, value in (('smooth', 'scene_mode', 'smooth'), ('bitmap', 'scene_mode', 'bitmap'),
+                                 ('exact', 'band_integration', 'exact')):
             v = json.loads(json.dumps(doc))
             for s in v['sensors']:
                 s.setdefault('parameters', {})[key] = value

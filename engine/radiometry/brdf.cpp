@@ -253,7 +253,7 @@ double Brdf::Lobe::normalization_H(double cos_incidence) const noexcept {
 double Brdf::value(double cos_incidence, double cos_exitance, double cos_light_observer) const noexcept {
   if (!(cos_incidence > 0.0 && cos_exitance > 0.0 && std::isfinite(cos_light_observer))) return 0.0;
   if (lunar_)
-    return 2.0 * kInvPi * lunar_surface_phase(std::acos(std::clamp(cos_light_observer, -1.0, 1.0))) /
+    return 2.0 * kInvPi * lunar_surface_phase_of_cos(cos_light_observer) /
            (cos_incidence + cos_exitance);
   double brdf_per_sr = diffuse_per_sr_;
   for (const Lobe& lobe : lobes_) {

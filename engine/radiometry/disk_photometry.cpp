@@ -94,6 +94,64 @@ double lunar_surface_phase(double phase_angle_rad) {
   return brightness_of_magnitudes(lunar_phase_magnitude(g / kDeg)) / lommel_seeliger_sphere_phase(g);
 }
 
+namespace {
+
+// A law of the phase angle g on [0, kLunarLawLimitDeg) against t = sin(g / 2)
+// = sqrt((1 - cos g) / 2): cubic Hermite between 32,768 nodes, slopes from
+// fourth-order differences at an eighth of the spacing (central, one-sided
+// at the two ends: the law is read only on [0, limit]; their error adds
+// below 1e-15). Within 1e-14 of the law where it is smooth in t
+// (disk_photometry_test); a call costs a square root, not an acos, an exp,
+// a tan and a log. For the Moon's light on every Earth sample and the
+// Moon's own samples.
+class HalfAngleTable {
+ public:
+  static constexpr int kNodes = 32768;
+  template <class Law>
+  explicit HalfAngleTable(Law&& law)
+      : last_t_(std::sin(0.5 * kLunarLawLimitDeg * kDeg)), per_node_(kNodes / last_t_) {
+    const double h = last_t_ / kNodes, d = h / 8;
+    const auto at_t = [&](double t) { return law(2.0 * std::asin(t)); };
+    for (int k = 0; k <= kNodes; ++k) {
+      const double t = k == kNodes ? last_t_ : k * h;
+      f_[static_cast<std::size_t>(k)] = at_t(t);
+      double slope = 0;
+      if (k < 2 || k > kNodes - 2) {  // (-25 f0 + 48 f1 - 36 f2 + 16 f3 - 3 f4) / 12, toward the inside
+        const double s = k < 2 ? d : -d;
+        slope = (-25.0 * at_t(t) + 48.0 * at_t(t + s) - 36.0 * at_t(t + 2 * s) + 16.0 * at_t(t + 3 * s) -
+                 3.0 * at_t(t + 4 * s)) /
+                (12.0 * s);
+      } else {
+        slope = (8.0 * (at_t(t + d) - at_t(t - d)) - (at_t(t + 2 * d) - at_t(t - 2 * d))) / (12.0 * d);
+      }
+      slope_[static_cast<std::size_t>(k)] = slope * h;
+    }
+  }
+  // The law at t in [0, last_t()).
+  double at(double t) const {
+    const double s = t * per_node_;
+    const auto k = std::min(static_cast<std::size_t>(s), static_cast<std::size_t>(kNodes - 1));
+    const double u = s - static_cast<double>(k), u2 = u * u, u3 = u2 * u;
+    return (2 * u3 - 3 * u2 + 1) * f_[k] + (u3 - 2 * u2 + u) * slope_[k] + (3 * u2 - 2 * u3) * f_[k + 1] +
+           (u3 - u2) * slope_[k + 1];
+  }
+  double last_t() const { return last_t_; }
+
+ private:
+  double last_t_, per_node_;
+  std::array<double, kNodes + 1> f_{}, slope_{};  // the law and its slope in t times the node spacing
+};
+
+}  // namespace
+
+double lunar_surface_phase_of_cos(double cos_g) {
+  // Tabulated where it is smooth in t = sin(g / 2) (g ln g at 0: from t = 1e-3, g = 0.11 deg).
+  static const auto table = std::make_unique<HalfAngleTable>([](double g) { return lunar_surface_phase(g); });
+  const double t = std::sqrt(std::max(0.0, 0.5 * (1.0 - cos_g)));
+  if (t >= 1e-3 && t < table->last_t()) return table->at(t);
+  return lunar_surface_phase(std::acos(std::clamp(cos_g, -1.0, 1.0)));
+}
+
 double lunar_surface_phase_max() {
   static const double most = [] {
     double m = 0;
@@ -231,56 +289,13 @@ double DiskPhotometry::phase(const DiscView& view) const {
 
 double DiskPhotometry::geometric_albedo_per_srf() const { return law_ == DiskPhaseLaw::moon ? 1.0 : 2.0 / 3.0; }
 
-namespace {
-
-// Allen's lunar law, 10^(-0.4 Delta V(psi)) up to kLunarLawLimitDeg, against
-// t = sin(psi / 2) = sqrt((1 - cos psi) / 2): cubic Hermite between 16,384
-// nodes with the law's exact derivative, within 1e-14 of it (the law is
-// smooth in t there; disk_photometry_test). A sample then costs a square
-// root, not an acos and an exp (the Moon's light on every Earth sample).
-class LunarLawTable {
- public:
-  static constexpr int kNodes = 16384;
-  LunarLawTable() : last_t_(std::sin(0.5 * kLunarLawLimitDeg * kDeg)), per_node_(kNodes / last_t_) {
-    const double h = last_t_ / kNodes;
-    for (int k = 0; k <= kNodes; ++k) {
-      const double t = k == kNodes ? last_t_ : k * h;
-      const double g = 2.0 * std::asin(t) / kDeg;  // psi, deg
-      const double f = brightness_of_magnitudes(lunar_phase_magnitude(g));
-      // dF/dt = F (-0.4 ln 10) dDeltaV/dg dg/dpsi dpsi/dt, dpsi/dt = 2 / sqrt(1 - t^2).
-      const double dv_dg = kAllenLinearMagPerDeg + 4.0 * kAllenQuarticMagPerDeg4 * g * g * g;
-      const double d = f * (-0.4 * constants::ln10) * dv_dg / kDeg * 2.0 / std::sqrt(1.0 - t * t);
-      f_[static_cast<std::size_t>(k)] = f;
-      slope_[static_cast<std::size_t>(k)] = d * h;
-    }
-  }
-  // The law at t in [0, last_t()).
-  double at(double t) const {
-    const double s = t * per_node_;
-    const auto k = std::min(static_cast<std::size_t>(s), static_cast<std::size_t>(kNodes - 1));
-    const double u = s - static_cast<double>(k), u2 = u * u, u3 = u2 * u;
-    return (2 * u3 - 3 * u2 + 1) * f_[k] + (u3 - 2 * u2 + u) * slope_[k] + (3 * u2 - 2 * u3) * f_[k + 1] +
-           (u3 - u2) * slope_[k + 1];
-  }
-  double last_t() const { return last_t_; }
-
- private:
-  double last_t_, per_node_;
-  std::array<double, kNodes + 1> f_{}, slope_{};  // F and dF/dt times the node spacing
-};
-
-const LunarLawTable& lunar_law_table() {
-  static const auto table = std::make_unique<LunarLawTable>();
-  return *table;
-}
-
-}  // namespace
-
 double DiskPhotometry::phase(double cos_psi) const {
   if (law_ == DiskPhaseLaw::lambertian_sphere) return lambertian_sphere_phase(cos_psi);
-  if (law_ == DiskPhaseLaw::moon) {  // the table from psi = 1e-9 rad to the law's limit
+  if (law_ == DiskPhaseLaw::moon) {  // Allen's law tabulated from psi = 1e-9 rad to its limit
+    static const auto table = std::make_unique<HalfAngleTable>(
+        [](double g) { return brightness_of_magnitudes(lunar_phase_magnitude(g / kDeg)); });
     const double t = std::sqrt(std::max(0.0, 0.5 * (1.0 - cos_psi)));
-    if (t >= 0.5e-9 && t < lunar_law_table().last_t()) return lunar_law_table().at(t);
+    if (t >= 0.5e-9 && t < table->last_t()) return table->at(t);
   }
   const double psi = std::acos(std::clamp(cos_psi, -1.0, 1.0));
   if (law_ == DiskPhaseLaw::moon) {

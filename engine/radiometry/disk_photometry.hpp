@@ -62,6 +62,8 @@ double lunar_phase_magnitude(double phase_angle_deg);
 // and its largest value over [0, pi] (sampled every 0.1 deg once).
 double lunar_surface_phase(double phase_angle_rad);
 double lunar_surface_phase_max();
+// The same from cos g (clamped to [-1, 1]), tabulated: within 1e-14 of it.
+double lunar_surface_phase_of_cos(double cos_g);
 
 // Mallama & Hilton (2018): V(1, alpha) [mag] of a planet at 1 au from the
 // Sun and the observer, alpha in degrees within [0, upper limit]; and the

@@ -54,21 +54,32 @@ const BandPlanckTable::Node* BandPlanckTable::block(std::size_t b) const {
   return nodes.release();
 }
 
+// The node below T and the offset t in [0, 1) past it; null off the table.
+const BandPlanckTable::Node* BandPlanckTable::node_below(double temperature_K, double& t) const {
+  if (!(temperature_K > min_temperature_K && temperature_K < max_temperature_K)) return nullptr;
+  const double s = (1.0 / temperature_K - u_min_) / node_spacing_per_K;
+  const auto k = static_cast<std::size_t>(s);
+  const std::size_t b = k / nodes_per_block;
+  if (b >= block_count_) return nullptr;
+  t = s - static_cast<double>(k);
+  return block(b) + (k - b * nodes_per_block);
+}
+
+// ln(f(T) / f at the node below): cubic Hermite on [0, 1] (h00 + h01 = 1).
+double BandPlanckTable::log_ratio_at(const Node* nodes, double t) {
+  const double t2 = t * t, t3 = t2 * t;
+  return (3 * t2 - 2 * t3) * nodes[0].log_ratio + (t3 - 2 * t2 + t) * nodes[0].slope_per_node +
+         (t3 - t2) * nodes[1].slope_per_node;
+}
+
 double BandPlanckTable::blend(double wa, const BandPlanckTable& a, double wb, const BandPlanckTable& b,
                               double temperature_K) {
   const auto separately = [&] { return wa * a.radiance(temperature_K) + wb * b.radiance(temperature_K); };
-  if (!(temperature_K > min_temperature_K && temperature_K < max_temperature_K)) return separately();
-  const double s = (1.0 / temperature_K - a.u_min_) / node_spacing_per_K;
-  const auto k = static_cast<std::size_t>(s);
-  const std::size_t blk = k / nodes_per_block;
-  if (blk >= a.block_count_) return separately();
-  const Node* na = a.block(blk) + (k - blk * nodes_per_block);
-  const Node* nb = b.block(blk) + (k - blk * nodes_per_block);
-  const double t = s - static_cast<double>(k), t2 = t * t, t3 = t2 * t;
-  const double h01 = 3 * t2 - 2 * t3, h10 = t3 - 2 * t2 + t, h11 = t3 - t2;  // as radiance()
-  const double delta_a = h01 * na[0].log_ratio + h10 * na[0].slope_per_node + h11 * na[1].slope_per_node;
-  const double delta_b = h01 * nb[0].log_ratio + h10 * nb[0].slope_per_node + h11 * nb[1].slope_per_node;
-  const double x = delta_b - delta_a;
+  double t = 0;
+  const Node* na = a.node_below(temperature_K, t);
+  if (!na) return separately();
+  const Node* nb = b.node_below(temperature_K, t);  // (the same nodes: one u grid for every table)
+  const double delta_a = log_ratio_at(na, t), x = log_ratio_at(nb, t) - delta_a;
   const double ratio =
       std::fabs(x) < 1e-3 ? 1.0 + x * (1.0 + 0.5 * x * (1.0 + x / 3.0 * (1.0 + 0.25 * x))) : std::exp(x);
   const double f = std::exp(delta_a) * (wa * na[0].f + wb * nb[0].f * ratio);
@@ -76,18 +87,10 @@ double BandPlanckTable::blend(double wa, const BandPlanckTable& a, double wb, co
 }
 
 double BandPlanckTable::radiance(double temperature_K) const {
-  if (!(temperature_K > min_temperature_K && temperature_K < max_temperature_K)) return direct(temperature_K);
-  const double s = (1.0 / temperature_K - u_min_) / node_spacing_per_K;
-  const auto k = static_cast<std::size_t>(s);
-  const std::size_t b = k / nodes_per_block;
-  if (b >= block_count_) return direct(temperature_K);
-  const Node* nodes = block(b) + (k - b * nodes_per_block);
-  const double t = s - static_cast<double>(k);
-  // Cubic Hermite basis on [0, 1], relative to the node below (h00 + h01 = 1).
-  const double t2 = t * t, t3 = t2 * t;
-  const double delta = (3 * t2 - 2 * t3) * nodes[0].log_ratio + (t3 - 2 * t2 + t) * nodes[0].slope_per_node +
-                       (t3 - t2) * nodes[1].slope_per_node;
-  const double f = nodes[0].f * std::exp(delta);
+  double t = 0;
+  const Node* nodes = node_below(temperature_K, t);
+  if (!nodes) return direct(temperature_K);
+  const double f = nodes[0].f * std::exp(log_ratio_at(nodes, t));
   if (std::isnan(f)) return direct(temperature_K);  // a node where f underflows
   return f;
 }

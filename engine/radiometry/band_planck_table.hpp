@@ -55,6 +55,8 @@ class BandPlanckTable {
   };
   Node node(double u) const;
   const Node* block(std::size_t b) const;
+  const Node* node_below(double temperature_K, double& t) const;
+  static double log_ratio_at(const Node* nodes, double t);
 
   SpectralBand band_;
   std::vector<double> wavelengths_um_, weights_;

@@ -87,8 +87,9 @@ FocalPlaneSamples integrated_psf(const OpticsModel& optics, double cell_x_cm, do
   const std::int64_t fft_size = numerics.fft_size;
   if (numerics.fitted_fft_size ? !(fft_size >= 64 && fft_size <= 4096 && fft_size % 2 == 0)
                                : !valid_psf_grid_size(fft_size))
-    throw Error(Status::out_of_range, "psf_grid_size: must be a power of two in [64, 4096], got " +
-                                          std::to_string(fft_size));
+    throw Error(Status::out_of_range, std::string(numerics.fitted_fft_size ? "psf table FFT size: must be even"
+                                                                           : "psf_grid_size: must be a power of two") +
+                                          " in [64, 4096], got " + std::to_string(fft_size));
   if (size < 1 || size % 2 == 0)
     throw Error(Status::out_of_range, "psf window: must be odd and >= 1, got " + std::to_string(size));
   const std::int64_t n = fft_size;

@@ -84,7 +84,7 @@ double taper(double r, double a) {
   return 1.0 - t * t * (3.0 - 2.0 * t);
 }
 
-std::vector<HaloLevel> halo_levels(const FocalPlaneSamples& e0, std::int64_t taper_start_px) {
+std::vector<HaloLevel> halo_levels(const FocalPlaneSamples& e0, std::int64_t taper_start_px, bool separable_spread) {
   const std::int64_t half = e0.half(), a = std::max<std::int64_t>(1, taper_start_px);
   if (half <= a) return {};  // w_1 = 1 on the whole window: nothing beyond the core
   std::int64_t count = 1;
@@ -121,21 +121,52 @@ std::vector<HaloLevel> halo_levels(const FocalPlaneSamples& e0, std::int64_t tap
           // (Where the outer taper is zero so is the inner one, and t = 0.)
           std::int64_t reach_d = half;
           while (reach_d > 0 && axis[static_cast<std::size_t>(reach_d + half)].outer == 0) --reach_d;
-          for (std::int64_t dy = -reach_d; dy <= reach_d; ++dy) {
-            const Axis& ay = axis[static_cast<std::size_t>(dy + half)];
-            for (std::int64_t dx = -reach_d; dx <= reach_d; ++dx) {
-              const Axis& ax = axis[static_cast<std::size_t>(dx + half)];
-              const double inner = ax.inner * ay.inner;
-              const double outer = last ? 1.0 : ax.outer * ay.outer;
-              const double t = e0.at(dx, dy) * (outer - inner) / (hd * hd);
-              if (t == 0) continue;
+          const auto term = [&](const Axis& ax, const Axis& ay, std::int64_t dx, std::int64_t dy) {
+            const double inner = ax.inner * ay.inner;
+            const double outer = last ? 1.0 : ax.outer * ay.outer;
+            return e0.at(dx, dy) * (outer - inner) / (hd * hd);
+          };
+          if (!separable_spread) {  // node by node
+            for (std::int64_t dy = -reach_d; dy <= reach_d; ++dy) {
+              const Axis& ay = axis[static_cast<std::size_t>(dy + half)];
+              for (std::int64_t dx = -reach_d; dx <= reach_d; ++dx) {
+                const Axis& ax = axis[static_cast<std::size_t>(dx + half)];
+                const double t = term(ax, ay, dx, dy);
+                if (t == 0) continue;
+                for (int by = 0; by < 4; ++by) {
+                  const double wy = ay.w[by];
+                  double* row = &k[static_cast<std::size_t>((ay.j0 - 1 + by + r0) * side0 + ax.j0 - 1 + r0)];
+                  for (int bx = 0; bx < 4; ++bx) {
+                    const double w = wy * ax.w[bx];
+                    if (w != 0) row[bx] += t * w;
+                  }
+                }
+              }
+            }
+          } else {
+            // The weights are a product of x and y ones: each row dy's terms
+            // spread along x first (into `spread`), then the row along y
+            // (the same sums in another order, in ~1/3 of the operations).
+            std::vector<double> spread(static_cast<std::size_t>(side0));
+            for (std::int64_t dy = -reach_d; dy <= reach_d; ++dy) {
+              const Axis& ay = axis[static_cast<std::size_t>(dy + half)];
+              std::fill(spread.begin(), spread.end(), 0.0);
+              bool any = false;
+              for (std::int64_t dx = -reach_d; dx <= reach_d; ++dx) {
+                const Axis& ax = axis[static_cast<std::size_t>(dx + half)];
+                const double t = term(ax, ay, dx, dy);
+                if (t == 0) continue;
+                any = true;
+                double* to = &spread[static_cast<std::size_t>(ax.j0 - 1 + r0)];
+                for (int bx = 0; bx < 4; ++bx) to[bx] += t * ax.w[bx];
+              }
+              if (!any) continue;
               for (int by = 0; by < 4; ++by) {
                 const double wy = ay.w[by];
-                double* row = &k[static_cast<std::size_t>((ay.j0 - 1 + by + r0) * side0 + ax.j0 - 1 + r0)];
-                for (int bx = 0; bx < 4; ++bx) {
-                  const double w = wy * ax.w[bx];
-                  if (w != 0) row[bx] += t * w;
-                }
+                if (wy == 0) continue;
+                double* __restrict row = &k[static_cast<std::size_t>((ay.j0 - 1 + by + r0) * side0)];
+                const double* __restrict from = spread.data();
+                for (std::int64_t j = 0; j < side0; ++j) row[j] += wy * from[j];
               }
             }
           }

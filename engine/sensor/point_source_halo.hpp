@@ -43,8 +43,10 @@ struct HaloLevel {
 
 // The levels for E0 = energy_on_detector at zero offset on its window
 // (|d| <= e0.half()), beyond the taper that starts at `taper_start_px` (a,
-// >= 1): empty when the window ends before a.
-std::vector<HaloLevel> halo_levels(const FocalPlaneSamples& e0, std::int64_t taper_start_px);
+// >= 1): empty when the window ends before a. separable_spread: each
+// term spread along x, then y (point_table_fft_sizes fitted); false: node by
+// node, the sums in their order before it (power_of_two: bit for bit).
+std::vector<HaloLevel> halo_levels(const FocalPlaneSamples& e0, std::int64_t taper_start_px, bool separable_spread);
 
 // One frame's grids over a width x height pixel image.
 class HaloGrids {

@@ -314,7 +314,7 @@ PointSourceModel build_point_source_model(const OpticsModel& optics, const geome
                                   m.tail[static_cast<std::size_t>((iy * offsets + ix) * window * window +
                                                                   (dy + H) * window + dx + H)] += static_cast<float>(v);
                               });
-    m.halo = halo_levels(e0, m.taper_start);
+    m.halo = halo_levels(e0, m.taper_start, f.point_table_fft_sizes == TableFftSizes::fitted);
   }
   m.streak_steps_per_pixel_x =
       std::max(f.streak_steps_per_pixel, f.streak_steps_per_lambda_f * g.pitch_x_cm / lambda_f_cm);

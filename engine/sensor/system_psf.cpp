@@ -78,6 +78,48 @@ std::int64_t subdivisions_for(const OpticsModel& optics, double step_cm, std::in
   return std::max<std::int64_t>(1, std::min(nyquist, n / period_steps));
 }
 
+// The inverse of the half spectrum `in` (n x (n/2 + 1), row-major; its
+// columns transformed in place) at the window's rows and columns only:
+// along y for every column, then along x for the rows the window reads;
+// out[r * size + c] = the real sample (rows[r], cols[c]). Both passes in
+// parallel (columns in blocks of kColumnBlock, which keeps each block's
+// first element as aligned as `in`). The same transform as the 2-D c2r,
+// rounding aside, in about (1 + size / n) / 2 of its work.
+void window_rows_c2r(fftw_complex* in, std::int64_t n, const std::vector<std::int64_t>& rows,
+                     const std::vector<std::int64_t>& cols, double* out) {
+  constexpr std::int64_t kColumnBlock = 8;
+  const std::int64_t nc = n / 2 + 1, blocks = (nc + kColumnBlock - 1) / kColumnBlock;
+  const auto width = static_cast<int>(nc);
+  parallel_ranges(
+      blocks, 0,
+      [&](std::int64_t b0, std::int64_t b1) {
+        const fftw_plan whole = fftw::columns(static_cast<int>(n), kColumnBlock, width, FFTW_BACKWARD);
+        for (std::int64_t b = b0; b < b1; ++b) {
+          const std::int64_t first = b * kColumnBlock, count = std::min(kColumnBlock, nc - first);
+          const fftw_plan plan = count == kColumnBlock
+                                     ? whole
+                                     : fftw::columns(static_cast<int>(n), static_cast<int>(count), width, FFTW_BACKWARD);
+          fftw_execute_dft(plan, in + first, in + first);
+        }
+      },
+      2);
+  const auto size = static_cast<std::int64_t>(cols.size());
+  const fftw_plan backward = fftw::row_c2r(static_cast<int>(n));
+  parallel_ranges(
+      size, 0,
+      [&](std::int64_t r0, std::int64_t r1) {
+        const fftw::ComplexBuffer buffer = fftw::complex_buffer(static_cast<std::size_t>(nc));  // aligned as planned
+        double* const real = reinterpret_cast<double*>(buffer.get());
+        for (std::int64_t r = r0; r < r1; ++r) {
+          std::copy_n(&in[static_cast<std::size_t>(rows[static_cast<std::size_t>(r)] * nc)][0], 2 * nc, real);
+          fftw_execute_dft_c2r(backward, buffer.get(), real);
+          double* to = out + r * size;
+          for (std::int64_t c = 0; c < size; ++c) to[c] = real[cols[static_cast<std::size_t>(c)]];
+        }
+      },
+      16);
+}
+
 // The core: the PSF convolved with a cell_x x cell_y box (a unit-area delta
 // when cell_* = 0), shifted by (offset_x, offset_y), sampled at multiples of
 // (step_x, step_y) in a window of odd `size`.
@@ -137,9 +179,12 @@ FocalPlaneSamples integrated_psf(const OpticsModel& optics, double cell_x_cm, do
   Arrays& arrays = n <= kKeptFftSize ? kept : fresh;
   if (arrays.n < n) {
     arrays.in = fftw::complex_buffer(static_cast<std::size_t>(n * nc));
-    arrays.out = fftw::real_buffer(static_cast<std::size_t>(n * n));
+    arrays.out.reset();
     arrays.n = n;
   }
+  // (fitted tables transform the window's rows only: no n x n output)
+  if (!numerics.fitted_fft_size && !arrays.out)
+    arrays.out = fftw::real_buffer(static_cast<std::size_t>(arrays.n * arrays.n));
   fftw_complex* const in = arrays.in.get();
   double* const out = arrays.out.get();
   // Sum over the frequency grid times d xi_x d xi_y = 1 / (n^2 dx dy): the
@@ -179,20 +224,26 @@ FocalPlaneSamples integrated_psf(const OpticsModel& optics, double cell_x_cm, do
         }
       },
       kFoldRowsPerThread);
-  // Thread-safe: a kept plan executed on this call's own aligned arrays.
-  fftw_execute_dft_c2r(fftw::c2r_2d(static_cast<int>(n), static_cast<int>(n)), in, out);
-
   FocalPlaneSamples result;
   result.size = size;
   result.step_x_cm = step_x_cm;
   result.step_y_cm = step_y_cm;
   result.values.resize(static_cast<std::size_t>(size * size));
   const std::int64_t half = size / 2;
-  std::vector<std::int64_t> cols(static_cast<std::size_t>(size));
-  for (std::int64_t ix = -half; ix <= half; ++ix) cols[static_cast<std::size_t>(ix + half)] = ((ix * kx) % n + n) % n;
-  for (std::int64_t iy = -half; iy <= half; ++iy) {
-    const double* row = out + ((iy * ky) % n + n) % n * n;
-    double* to = &result.values[static_cast<std::size_t>((iy + half) * size)];
+  std::vector<std::int64_t> cols(static_cast<std::size_t>(size)), rows(static_cast<std::size_t>(size));
+  for (std::int64_t i = -half; i <= half; ++i) {
+    cols[static_cast<std::size_t>(i + half)] = ((i * kx) % n + n) % n;
+    rows[static_cast<std::size_t>(i + half)] = ((i * ky) % n + n) % n;
+  }
+  if (numerics.fitted_fft_size) {
+    window_rows_c2r(in, n, rows, cols, result.values.data());
+    return result;
+  }
+  // Thread-safe: a kept plan executed on this call's own aligned arrays.
+  fftw_execute_dft_c2r(fftw::c2r_2d(static_cast<int>(n), static_cast<int>(n)), in, out);
+  for (std::int64_t iy = 0; iy < size; ++iy) {
+    const double* row = out + rows[static_cast<std::size_t>(iy)] * n;
+    double* to = &result.values[static_cast<std::size_t>(iy * size)];
     for (std::int64_t i = 0; i < size; ++i) to[i] = row[cols[static_cast<std::size_t>(i)]];
   }
   return result;

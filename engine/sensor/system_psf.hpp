@@ -36,7 +36,8 @@ struct PsfNumerics {
   // size is checked); null: each fold makes its own.
   const std::vector<double>* otf_table = nullptr;
   // fft_size may be any even size in [64, 4096] (the point-source tables fit
-  // it to their period); otherwise a power of two (psf_grid_size).
+  // it to their period), and the inverse transform computes the window's
+  // rows only; otherwise a power of two (psf_grid_size), the whole 2-D c2r.
   bool fitted_fft_size = false;
   explicit PsfNumerics(const Fidelity& f)
       : fft_size(f.psf_grid_size),

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "point_source_sensors.hpp"
+#include "sensor/point_source_halo.hpp"
 #include "sensor/point_source_render.hpp"
 #include "sensor/sensor_model.hpp"
 #include "sensor/system_psf.hpp"
@@ -168,4 +169,32 @@ TEST(Spec_5_11_2_PointSourceModel, AutomaticTailFollowsTheCost) {
     }
   EXPECT_EQ(render_point_sources(m, few, 512, 512, image), eoir::PointTail::direct);
   EXPECT_EQ(render_point_sources(m, many, 512, 512, image), eoir::PointTail::multilevel);
+}
+
+// The multilevel tail's kernels (point_source_halo.hpp) with each term
+// spread along x, then y (point_table_fft_sizes fitted) hold the sums the
+// node-by-node scatter (power_of_two) does, in another order: the same
+// kernels within rounding, on the spec 7.6 Table 3 sensor's E0 window.
+TEST(Spec_5_11_2_PointSourceModel, SeparableHaloSpreadIsTheNodeByNodeScatter) {
+  const auto sensor = resolve_sensor(table3());
+  const PointSourceModel& m = sensor->point_sources();
+  ASSERT_GT(m.window_half, m.taper_start);
+  const FocalPlaneSamples e0 = energy_on_detector(sensor->optics, sensor->grid.pitch_x_cm, sensor->grid.pitch_y_cm,
+                                                  2 * m.window_half + 1, 0.0, 0.0, 512);
+  const std::vector<HaloLevel> spread = halo_levels(e0, m.taper_start, true);
+  const std::vector<HaloLevel> scatter = halo_levels(e0, m.taper_start, false);
+  ASSERT_EQ(spread.size(), scatter.size());
+  ASSERT_GE(spread.size(), 2u);
+  double worst = 0, largest = 0;
+  for (std::size_t l = 0; l < spread.size(); ++l) {
+    ASSERT_EQ(spread[l].reach_nodes, scatter[l].reach_nodes) << "level " << l;
+    ASSERT_EQ(spread[l].kernel.size(), scatter[l].kernel.size());
+    for (std::size_t i = 0; i < spread[l].kernel.size(); ++i) {
+      largest = std::max(largest, std::abs(scatter[l].kernel[i]));
+      worst = std::max(worst, std::abs(spread[l].kernel[i] - scatter[l].kernel[i]));
+    }
+  }
+  std::cout << "  " << spread.size() << " levels: largest difference " << worst / largest << " of the largest node\n";
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LT(worst, 1e-14 * largest);
 }

@@ -163,9 +163,10 @@ const std::vector<Spec>& fidelity_properties() {
     t.push_back(enum_property<F, TableFftSizes>(
         "point_table_fft_sizes",
         "Point sources: FFT sizes of the 2-D tables (pixels up to point_quadrant_lambda_f): fitted (the smallest "
-        "even size with factors 2, 3, 5, 7 that holds the table's period, up to 4 times fewer points: a fresh "
-        "sensor's tables 2-4 times faster) or power_of_two (the next power of two, as before; the tables bit for "
-        "bit as they were, their totals within the same 1e-3 of the exact path)",
+        "even size with factors 2, 3, 5, 7 that holds the table's period, up to 4 times fewer points, its inverse "
+        "at the window's rows only and the tail's halo kernels spread by axis: a fresh sensor's tables 2-4 times "
+        "faster) or power_of_two (the next power of two, as before; the tables bit for bit as they were, their "
+        "totals within the same 1e-3 of the exact path)",
         [](F& f) -> auto& { return f.point_table_fft_sizes; }, table_fft_sizes_names(), true));
     t.push_back(number_property<F>(
         "point_quadrant_lambda_f", "lambda F#",

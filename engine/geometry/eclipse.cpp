@@ -269,8 +269,14 @@ double solar_disk_hidden_fraction(const Vec3& point_m, const Vec3& sun_centre_m,
 
 double solar_disk_visible_fraction(const Vec3& point_m, const Vec3& sun_centre_m, double sun_radius_m,
                                    const Occulter* occulters, std::size_t count) {
+  if (count == 0) {  // nothing to hide it: the inputs checked, no geometry
+    check_finite(point_m, "eclipse point_m");
+    check_finite(sun_centre_m, "eclipse sun_centre_m");
+    check_radius(sun_radius_m, "eclipse sun_radius_m");
+    return 1.0;
+  }
   const SunView sun = make_sun_view(point_m, sun_centre_m, sun_radius_m);
-  if (count > 0 && occulters == nullptr) throw Error(Status::null_argument, "eclipse occulters: null");
+  if (occulters == nullptr) throw Error(Status::null_argument, "eclipse occulters: null");
   for (std::size_t i = 0; i < count; ++i) check_occulter(occulters[i]);
   if (sun.distance_m <= sun_radius_m) return 1.0;
 

@@ -12,6 +12,7 @@ SpectralView SpectralView::make(double low_um, double high_um, std::int64_t inte
   v.integration = integration;
   v.quadrature = quadrature;
   v.sample_wavelengths_um = v.band.sample_wavelengths_um(quadrature);
+  v.interval_um = v.band.interval_um();
   v.black_body = std::make_shared<const BandPlanckTable>(
       v.band, v.sample_wavelengths_um, std::vector<double>(v.sample_wavelengths_um.size(), 1.0));
   return v;
@@ -26,11 +27,16 @@ SpectralView SpectralView::through(const SpectralView& view, std::vector<double>
 }
 
 double SpectralView::integrate(const std::vector<double>& spectral_values) const {
-  if (transmittance.empty()) return integrate_spectral_samples(band, spectral_values);
+  // (a view not made by make, or a vector of another length: the checked
+  // sum, which names what is wrong)
+  if (!(interval_um > 0.0) || spectral_values.size() != static_cast<std::size_t>(band.intervals))
+    return integrate_spectral_samples(band, spectral_values);
+  if (transmittance.empty())
+    return integrate_spectral_samples(interval_um, spectral_values.data(), spectral_values.size());
   thread_local std::vector<double> weighted;  // per-sample scratch: no allocation per call
   weighted.resize(spectral_values.size());
   for (std::size_t i = 0; i < weighted.size(); ++i) weighted[i] = spectral_values[i] * transmittance[i];
-  return integrate_spectral_samples(band, weighted);
+  return integrate_spectral_samples(interval_um, weighted.data(), weighted.size());
 }
 
 void SpectralView::add_gray_body_spectrum(double temperature_K, double reflectance, std::vector<double>& out) const {

@@ -16,6 +16,7 @@ struct SpectralView {
   BandIntegration integration = BandIntegration::grid;
   SpectralQuadrature quadrature = SpectralQuadrature::interval_midpoint;
   std::vector<double> sample_wavelengths_um;  // where spectral vectors are evaluated
+  double interval_um = 0.0;  // band.interval_um(), set by make (integrate's weight: no division per call)
   // The black body's band radiance on the grid (grid integration), shared by
   // copies of the view and every gray body.
   std::shared_ptr<const BandPlanckTable> black_body;

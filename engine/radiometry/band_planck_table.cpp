@@ -57,8 +57,7 @@ const BandPlanckTable::Node* BandPlanckTable::block(std::size_t b) const {
 // The node below T and the offset t in [0, 1) past it; null off the table.
 const BandPlanckTable::Node* BandPlanckTable::node_below(double temperature_K, double& t) const {
   if (!(temperature_K > min_temperature_K && temperature_K < max_temperature_K)) return nullptr;
-  constexpr double nodes_per_u = 1.0 / node_spacing_per_K;  // (a product, not a division per look-up)
-  const double s = (1.0 / temperature_K - u_min_) * nodes_per_u;
+  const double s = (1.0 / temperature_K - u_min_) / node_spacing_per_K;
   const auto k = static_cast<std::size_t>(s);
   const std::size_t b = k / nodes_per_block;
   if (b >= block_count_) return nullptr;

@@ -50,8 +50,7 @@ double wrap_hour_angle_deg(double h) {
 double local_solar_time_from_eot_h(double utc_hours, double longitude_deg, double equation_of_time_min) {
   require_finite(utc_hours, "utc_hours");
   require_finite(longitude_deg, "longitude_deg");
-  constexpr double hours_per_deg = 1.0 / 15.0, hours_per_min = 1.0 / 60.0;  // (products: no division per sample)
-  return wrap(utc_hours + longitude_deg * hours_per_deg + equation_of_time_min * hours_per_min, kHoursPerDay);
+  return wrap(utc_hours + longitude_deg / 15.0 + equation_of_time_min / 60.0, kHoursPerDay);
 }
 
 void check_body(const AirlessThermal& body) {

@@ -305,7 +305,7 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
   // away, half of every globe, costs no square root and division.)
   if (w.sun.object != id && to_sun.dot(n) > 0) {
     const double d = to_sun.norm();
-    const Vec3 I = to_sun * (1.0 / d);
+    const Vec3 I = to_sun / d;
     const double cos_i = I.dot(n);
     if (cos_i > 0) {
       const double f = sun_fraction(p, near);
@@ -350,9 +350,7 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     // A disc below (eq. 7; an area source too while it subtends less than
     // half area_source_solid_angle_sr here): first the sign of cos_i, then
     // whether it can matter here at all.
-    // (one square root and one division for the distance, omega and I)
-    const double d = to_src.norm(), inverse_d = 1.0 / d;
-    const double omega = constants::pi * src.radius_m * src.radius_m * (inverse_d * inverse_d);
+    const double omega = constants::pi * src.radius_m * src.radius_m / to_src.squaredNorm();
     if (!src.area_source || omega < 0.5 * w.view.fidelity.area_source_solid_angle_sr) {
       if (!(to_src.dot(n) > 0)) continue;  // (cos_i <= 0 below, but for rounding)
       // Its bound here: dOmega x the BRDF's largest N.L value x its light
@@ -364,8 +362,9 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
       while (i < bound.size() && scale * bound[i] <= out[i]) ++i;
       if (!bound.empty() && i == bound.size()) continue;
     }
+    const double d = to_src.norm();
     if (!(d > src.radius_m)) continue;
-    const Vec3 I = to_src * inverse_d;
+    const Vec3 I = to_src / d;
     if (src.area_source && omega > w.view.fidelity.area_source_solid_angle_sr) {
       for (const AreaSourcePatch& a : area_source(k)) {
         const double c = a.direction.dot(n);

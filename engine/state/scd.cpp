@@ -1,7 +1,10 @@
 #include "state/scd.hpp"
 
+#include <cstdint>
+#include <limits>
 #include <set>
 #include <sstream>
+#include <type_traits>
 #include <vector>
 
 #include "core/error.hpp"
@@ -33,10 +36,32 @@ void check_fields(const json& j, const std::string& where, const std::set<std::s
     if (!j.contains(r)) corrupt(where + "." + r, "missing");
 }
 
+// An integral field must be a JSON integer within T's range (nlohmann would
+// convert a float such as 1e112 by a cast that is undefined out of range).
+template <class T>
+T integer_value(const json& v, const std::string& field) {
+  using limits = std::numeric_limits<T>;
+  if (v.is_number_unsigned()) {
+    const auto u = v.get<std::uint64_t>();
+    if (u <= static_cast<std::uint64_t>(limits::max())) return static_cast<T>(u);
+  } else if (v.is_number_integer()) {
+    const auto i = v.get<std::int64_t>();
+    if (limits::is_signed ? i >= static_cast<std::int64_t>(limits::min()) && i <= static_cast<std::int64_t>(limits::max())
+                          : i >= 0)
+      return static_cast<T>(i);
+  } else {
+    corrupt(field, "missing or of the wrong type");
+  }
+  corrupt(field, "integer out of range [" + std::to_string(limits::min()) + ", " + std::to_string(limits::max()) + "]");
+}
+
 template <class T>
 T field(const json& j, const std::string& key, const std::string& where) {
   try {
-    return j.at(key).get<T>();
+    if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>)
+      return integer_value<T>(j.at(key), where + "." + key);
+    else
+      return j.at(key).get<T>();
   } catch (const json::exception&) {
     corrupt(where + "." + key, "missing or of the wrong type");
   }

@@ -45,12 +45,17 @@ std::unique_ptr<RasterLevel> RasterLevel::load(const std::string& sidecar) {
   try {
     if (j.at("format").get<std::string>() != "eoir-raster") corrupt(sidecar + ": format", "must be eoir-raster");
     if (j.at("registration").get<std::string>() != "cell") corrupt(sidecar + ": registration", "must be cell");
-    r->width_ = j.at("width").get<std::int64_t>();
-    r->height_ = j.at("height").get<std::int64_t>();
+    // (integers only: a float such as 1e112 has no int64 to convert to)
+    const auto integer = [&](const char* key) {
+      if (!j.at(key).is_number_integer()) corrupt(sidecar + ": " + key, "must be an integer");
+      return j.at(key).get<std::int64_t>();
+    };
+    r->width_ = integer("width");
+    r->height_ = integer("height");
     r->lon_west_deg_ = j.at("lon_west_deg").get<double>();
     r->lat_north_deg_ = j.at("lat_north_deg").get<double>();
     r->cell_deg_ = j.at("cell_deg").get<double>();
-    r->cells_per_degree_ = j.value("cells_per_degree", std::int64_t{0});
+    r->cells_per_degree_ = j.contains("cells_per_degree") ? integer("cells_per_degree") : 0;
     r->value_scale_ = j.value("value_scale", 1.0);
     r->value_offset_ = j.value("value_offset", 0.0);
     const std::string encoding = j.at("encoding").get<std::string>();

@@ -109,6 +109,28 @@ int main(void) {
   free(bad);
   FAILS(eoir_sensor_load(e, "Cam", at("name.json")), EOIR_ERR_CORRUPT_FILE, "sensor.name: missing or of the wrong type");
 
+  /* an integer field given as a huge float (found by fuzz.sensor_load: the
+   * conversion was undefined) or out of its type's range */
+  bad = replaced(sensor, "\"version\": 1", "\"version\": 1.1e112");
+  CHECK(strcmp(bad, sensor) != 0);
+  write_text(at("version.json"), bad);
+  free(bad);
+  FAILS(eoir_sensor_load(e, "Cam", at("version.json")), EOIR_ERR_CORRUPT_FILE, "sensor.version: missing or of the wrong type");
+  {  /* the seed's digits replaced by -1 */
+    const char* seed = strstr(scd, "\"seed\": ");
+    const char* end = seed ? seed + strlen("\"seed\": ") + strspn(seed + strlen("\"seed\": "), "0123456789") : NULL;
+    char* digits = (char*)malloc(64);
+    CHECK(end != NULL && digits != NULL && end - seed < 60);
+    memcpy(digits, seed, (size_t)(end - seed));
+    digits[end - seed] = '\0';
+    bad = replaced(scd, digits, "\"seed\": -1");
+    free(digits);
+  }
+  CHECK(strcmp(bad, scd) != 0);
+  write_text(at("seed.scd"), bad);
+  free(bad);
+  FAILS(eoir_state_load(e, at("seed.scd")), EOIR_ERR_CORRUPT_FILE, "scd.engine.seed: integer out of range [0, ");
+
   /* a key given twice */
   bad = replaced(sensor, "\"f_number\": ", "\"f_number\": 2.0, \"f_number\": ");
   write_text(at("duplicate.json"), bad);

@@ -203,10 +203,14 @@ Occultation occult(const SunView& sun, const Occulter& occ) {
   return out;
 }
 
-SunView make_sun_view(const Vec3& point_m, const Vec3& sun_centre_m, double sun_radius_m) {
+void check_sun_inputs(const Vec3& point_m, const Vec3& sun_centre_m, double sun_radius_m) {
   check_finite(point_m, "eclipse point_m");
   check_finite(sun_centre_m, "eclipse sun_centre_m");
   check_radius(sun_radius_m, "eclipse sun_radius_m");
+}
+
+SunView make_sun_view(const Vec3& point_m, const Vec3& sun_centre_m, double sun_radius_m) {
+  check_sun_inputs(point_m, sun_centre_m, sun_radius_m);
   SunView v;
   v.point_m = point_m;
   const Vec3 s = sun_centre_m - point_m;
@@ -270,9 +274,7 @@ double solar_disk_hidden_fraction(const Vec3& point_m, const Vec3& sun_centre_m,
 double solar_disk_visible_fraction(const Vec3& point_m, const Vec3& sun_centre_m, double sun_radius_m,
                                    const Occulter* occulters, std::size_t count) {
   if (count == 0) {  // nothing to hide it: the inputs checked, no geometry
-    check_finite(point_m, "eclipse point_m");
-    check_finite(sun_centre_m, "eclipse sun_centre_m");
-    check_radius(sun_radius_m, "eclipse sun_radius_m");
+    check_sun_inputs(point_m, sun_centre_m, sun_radius_m);
     return 1.0;
   }
   const SunView sun = make_sun_view(point_m, sun_centre_m, sun_radius_m);

@@ -50,7 +50,7 @@ T integer_value(const json& v, const std::string& field) {
                           : i >= 0)
       return static_cast<T>(i);
   } else {
-    corrupt(field, "missing or of the wrong type");
+    corrupt(field, "expected an integer");
   }
   corrupt(field, "integer out of range [" + std::to_string(limits::min()) + ", " + std::to_string(limits::max()) + "]");
 }
@@ -92,8 +92,7 @@ Value json_to_value(const json& j, ValueType type, const std::string& where) {
       if (!j.is_number()) corrupt(where, "expected a number");
       return j.get<double>();
     case ValueType::integer:
-      if (!j.is_number_integer()) corrupt(where, "expected an integer");
-      return j.get<std::int64_t>();
+      return integer_value<std::int64_t>(j, where);
     case ValueType::boolean:
       if (!j.is_boolean()) corrupt(where, "expected true or false");
       return j.get<bool>();

@@ -115,7 +115,7 @@ int main(void) {
   CHECK(strcmp(bad, sensor) != 0);
   write_text(at("version.json"), bad);
   free(bad);
-  FAILS(eoir_sensor_load(e, "Cam", at("version.json")), EOIR_ERR_CORRUPT_FILE, "sensor.version: missing or of the wrong type");
+  FAILS(eoir_sensor_load(e, "Cam", at("version.json")), EOIR_ERR_CORRUPT_FILE, "sensor.version: expected an integer");
   {  /* the seed's digits replaced by -1 */
     const char* seed = strstr(scd, "\"seed\": ");
     const char* end = seed ? seed + strlen("\"seed\": ") + strspn(seed + strlen("\"seed\": "), "0123456789") : NULL;

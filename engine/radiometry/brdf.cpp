@@ -45,6 +45,9 @@ struct GaussLegendre {
 
 // e^-700 ~ 1e-304: a lobe this far down contributes nothing.
 constexpr double kNegligibleExponent = -700.0;
+// A lobe's term below this fraction of the diffuse part is left out of
+// value(): a change below rounding (1e-17 relative).
+constexpr double kNegligibleLobe = 1e-17;
 
 // Normalization table sizes (intervals in N.L over [0, 1]).
 constexpr double kIntervalsPerLobeWidth = 6.0;
@@ -220,8 +223,8 @@ Brdf::Brdf(const BrdfParameters& parameters) : parameters_(parameters) {
   // (e^(kappa (cos - 1)) <= 1): per interval of H's table, its upper N.L over
   // the least H of its cubic (at the ends and stationary points).
   max_projected_value_per_sr_ = diffuse_per_sr_;
-  for (const Lobe& lobe : lobes_) {
-    double most = 0;
+  for (Lobe& lobe : lobes_) {
+    double most = 0, least_H = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < lobe.cubic.size(); ++i) {
       const auto& c = lobe.cubic[i];
       const auto at = [&c](double t) { return c[0] + t * (c[1] + t * (c[2] + t * c[3])); };
@@ -236,8 +239,16 @@ Brdf::Brdf(const BrdfParameters& parameters) : parameters_(parameters) {
       }
       const double upper_cos = static_cast<double>(i + 1) / lobe.intervals_per_unit_cos;
       most = std::max(most, least > 0.0 ? upper_cos * lobe.weight / least : std::numeric_limits<double>::infinity());
+      least_H = std::min(least_H, least);
     }
     max_projected_value_per_sr_ += most;
+    // The lobe's term weight e^x / H is below kNegligibleLobe of the diffuse
+    // part (and so of value()) wherever x < ln(kNegligibleLobe diffuse H_min
+    // / weight): no exp there.
+    lobe.negligible_exponent = kNegligibleExponent;
+    if (diffuse_per_sr_ > 0.0 && least_H > 0.0 && std::isfinite(least_H))
+      lobe.negligible_exponent =
+          std::max(kNegligibleExponent, std::log(kNegligibleLobe * diffuse_per_sr_ * least_H / lobe.weight));
   }
 }
 
@@ -261,7 +272,7 @@ double Brdf::value(double cos_incidence, double cos_exitance, double cos_light_o
     const double cos_to_axis =
         lobe.backscatter ? cos_light_observer : 2.0 * cos_incidence * cos_exitance - cos_light_observer;
     const double exponent = lobe.kappa * (std::min(cos_to_axis, 1.0) - 1.0);
-    if (exponent < kNegligibleExponent) continue;  // also skips slow subnormal exp()
+    if (exponent < lobe.negligible_exponent) continue;  // (also skips slow subnormal exp())
     brdf_per_sr += lobe.weight * std::exp(exponent) / lobe.normalization_H(cos_incidence);
   }
   return brdf_per_sr;

@@ -105,6 +105,7 @@ class Brdf {
     bool backscatter = false;
     double intervals_per_unit_cos = 0.0;
     std::vector<std::array<double, 4>> cubic;  // per interval: H = c0 + c1 t + c2 t^2 + c3 t^3
+    double negligible_exponent = 0.0;  // kappa (cos - 1) below it: the term left out (set with the lobes)
     double normalization_H(double cos_incidence) const noexcept;
   };
 

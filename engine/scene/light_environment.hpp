@@ -9,6 +9,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "geometry/eclipse.hpp"
@@ -42,6 +43,9 @@ struct LightSpectra {
   // Moon's, a Lambertian sphere's): at least its light per dOmega at any
   // phase angle; empty for other laws (no bound kept).
   std::vector<double> bound;
+  // bound's band integral (eq. 48), W cm^-2 sr^-1 per dOmega; infinity
+  // where no bound is kept.
+  double bound_band_W_cm2_sr = std::numeric_limits<double>::infinity();
 };
 
 

@@ -250,8 +250,17 @@ std::size_t shade_rows(const World& world, std::int64_t lo, std::int64_t hi, std
         // Samples shaded at their own points: their surface points first,
         // the map cells of all of them asked of the memory together (scattered
         // over maps of tens of MB, each would otherwise wait on its own).
+        // (located an object's run of samples at a time: vector maths over the run)
         thread_local SurfacePoint points[geometry::GridTile::kMaxSamples];
         bool own_point[geometry::GridTile::kMaxSamples];
+        SurfacePoint* run[geometry::GridTile::kMaxSamples];
+        std::size_t run_length = 0;
+        const WorldObject* run_object = nullptr;
+        const auto locate_run = [&] {
+          run_object->surface->locate(run, run_length);
+          for (std::size_t j = 0; j < run_length; ++j) run_object->surface->prefetch_maps(*run[j]);
+          run_length = 0;
+        };
         for (int k = 0; k < tile.count; ++k) {
           own_point[k] = false;
           if (tile.object[k] < 0) continue;
@@ -259,12 +268,32 @@ std::size_t shade_rows(const World& world, std::int64_t lo, std::int64_t hi, std
           if (o.plain() || !o.shades_each_sample()) continue;
           const Vec3 point_body =
               o.seen.body_to_frame.transpose() * (tile.range_m[k] * tile.direction[k] - o.seen.position_m);
-          points[k] = o.surface->located(SurfaceSite{tile.part[k], point_body, o.direction_to_body(tile.normal_frame[k])});
-          o.surface->prefetch_maps(points[k]);
+          points[k] =
+              o.surface->unlocated(SurfaceSite{tile.part[k], point_body, o.direction_to_body(tile.normal_frame[k])});
           own_point[k] = true;
+          if (run_length > 0 && run_object != &o) locate_run();
+          run_object = &o;
+          run[run_length++] = &points[k];
         }
+        if (run_length > 0) locate_run();
         for (int k = 0; k < tile.count; ++k)
           if (own_point[k]) world.objects[static_cast<std::size_t>(tile.object[k])]->surface->read_maps(points[k]);
+        // Their radiance an object's run at a time (effective_radiances).
+        double own_radiance[geometry::GridTile::kMaxSamples];
+        for (int k = 0; k < tile.count;) {
+          if (!own_point[k]) {
+            ++k;
+            continue;
+          }
+          const std::int32_t object = tile.object[k];
+          const WorldObject& o = *world.objects[static_cast<std::size_t>(object)];
+          int run_end = k;
+          run_length = 0;
+          while (run_end < tile.count && own_point[run_end] && tile.object[run_end] == object)
+            run[run_length++] = &points[run_end++];
+          o.effective_radiances(run, run_length, casters_near(object, o), own_radiance + k);
+          k = run_end;
+        }
         for (int k = 0; k < tile.count; ++k) {
           const std::int64_t c = tile.column[k], r = tile.row[k];
           const std::int32_t object = tile.object[k], part = tile.part[k];
@@ -282,9 +311,7 @@ std::size_t shade_rows(const World& world, std::int64_t lo, std::int64_t hi, std
             continue;
           }
           if (own_point[k]) {
-            const SurfaceSite& site = points[k].site;
-            radiance[i] = o.effective_radiance(part, site.point_body_m, site.normal_body, true, casters_near(object, o),
-                                               &points[k]);
+            radiance[i] = own_radiance[k];
             continue;
           }
           const Vec3 point_body = o.seen.body_to_frame.transpose() * (tile.range_m[k] * d - o.seen.position_m);

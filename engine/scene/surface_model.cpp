@@ -6,32 +6,70 @@
 #include <limits>
 
 #include "core/constants.hpp"
+#include "core/vector_math.hpp"
 #include "scene/thermal_models.hpp"
 
 namespace eoir::scene {
 
-void Geography::locate(const Vec3& p, SurfacePoint& point) const {
-  const double rho = std::sqrt(p.x() * p.x() + p.y() * p.y());
-  point.longitude_deg = std::atan2(p.y(), p.x()) * constants::deg_per_rad;
-  // The latitude as atan2(u, v), its sine and cosine u / |(u, v)|, v / |(u, v)|.
-  const auto set_latitude = [&point](double u, double v) {
-    point.latitude_deg = std::atan2(u, v) * constants::deg_per_rad;
-    const double r = std::sqrt(u * u + v * v);
-    point.sin_latitude = r > 0 ? u / r : 0.0;
-    point.cos_latitude = r > 0 ? v / r : 1.0;
-  };
-  if (!geodetic) return set_latitude(p.z(), rho);
-  // On the spheroid (a ray's hit) the geodetic latitude is the normal's
-  // elevation, tan(lat) = (a/c)^2 z / rho; off it (a patch centre) WGS84's
-  // geodetic inverse (GeographicLib).
+void Geography::locate(SurfacePoint* const* points, std::size_t n) const {
+  // Each point's longitude atan2(y, x) and latitude atan2(u, v); the angles
+  // of a batch at once (vector maths, core/vector_math.hpp), one point's by
+  // libm. (The two may differ by rounding: a patch centre of a central body
+  // lies on its maps' cell edges, where rounding picks the cell, so points
+  // located one by one keep libm's angles.)
+  constexpr std::size_t kBatch = 64;
+  double y[2 * kBatch], x[2 * kBatch], angle[2 * kBatch];
+  bool off_surface[kBatch];
   const double a = equatorial_radius_m, c = polar_radius_m;
-  const double on_surface = (rho / a) * (rho / a) + (p.z() / c) * (p.z() / c) - 1.0;
-  if (std::fabs(on_surface) <= 1e-12) return set_latitude(a * a * p.z(), c * c * rho);
-  double h = 0;
-  GeographicLib::Geocentric(a, (a - c) / a).Reverse(p.x(), p.y(), p.z(), point.latitude_deg, point.longitude_deg, h);
-  const double lat = point.latitude_deg * constants::rad_per_deg;
-  point.sin_latitude = std::sin(lat);
-  point.cos_latitude = std::cos(lat);
+  for (std::size_t first = 0; first < n; first += kBatch) {
+    const std::size_t m = std::min(kBatch, n - first);
+    for (std::size_t k = 0; k < m; ++k) {
+      const Vec3& p = points[first + k]->site.point_body_m;
+      const double rho = std::sqrt(p.x() * p.x() + p.y() * p.y());
+      y[k] = p.y();
+      x[k] = p.x();
+      y[kBatch + k] = p.z();  // planetocentric: atan2(z, rho)
+      x[kBatch + k] = rho;
+      off_surface[k] = false;
+      if (!geodetic) continue;
+      // On the spheroid (a ray's hit) the geodetic latitude is the normal's
+      // elevation, tan(lat) = (a/c)^2 z / rho; off it (a patch centre)
+      // WGS84's geodetic inverse (GeographicLib), below.
+      const double on_surface = (rho / a) * (rho / a) + (p.z() / c) * (p.z() / c) - 1.0;
+      off_surface[k] = !(std::fabs(on_surface) <= 1e-12);
+      y[kBatch + k] = a * a * p.z();
+      x[kBatch + k] = c * c * rho;
+    }
+    if (m < kBatch) {  // the latitudes' arguments follow the longitudes'
+      std::copy_n(y + kBatch, m, y + m);
+      std::copy_n(x + kBatch, m, x + m);
+    }
+    if (n > 1) {
+      vector_math::atan2(y, x, angle, 2 * m);
+    } else {
+      angle[0] = std::atan2(y[0], x[0]);
+      angle[1] = std::atan2(y[1], x[1]);
+    }
+    for (std::size_t k = 0; k < m; ++k) {
+      SurfacePoint& point = *points[first + k];
+      if (off_surface[k]) {
+        const Vec3& p = point.site.point_body_m;
+        double h = 0;
+        GeographicLib::Geocentric(a, (a - c) / a)
+            .Reverse(p.x(), p.y(), p.z(), point.latitude_deg, point.longitude_deg, h);
+        const double lat = point.latitude_deg * constants::rad_per_deg;
+        point.sin_latitude = std::sin(lat);
+        point.cos_latitude = std::cos(lat);
+        continue;
+      }
+      point.longitude_deg = angle[k] * constants::deg_per_rad;
+      // The latitude's sine and cosine u / |(u, v)|, v / |(u, v)|.
+      const double u = y[m + k], v = x[m + k], r = std::sqrt(u * u + v * v);
+      point.latitude_deg = angle[m + k] * constants::deg_per_rad;
+      point.sin_latitude = r > 0 ? u / r : 0.0;
+      point.cos_latitude = r > 0 ? v / r : 1.0;
+    }
+  }
 }
 
 SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal, std::vector<double> self_radiance,
@@ -142,10 +180,9 @@ SurfacePoint SurfaceModel::at(const SurfaceSite& site) const {
 }
 
 SurfacePoint SurfaceModel::located(const SurfaceSite& site) const {
-  SurfacePoint point{site, parts_[index(site.part)].spectrum};
-  const Geography& g = geography_;
-  if (g.bitmap() || g.clouds || (g.climatology && g.land_mask))
-    g.locate(site.point_body_m, point);
+  SurfacePoint point = unlocated(site);
+  SurfacePoint* one = &point;
+  locate(&one, 1);
   return point;
 }
 
@@ -176,15 +213,17 @@ void SurfaceModel::read_maps(SurfacePoint& point) const {
   }
 }
 
-double SurfaceModel::temperature_K(const SurfacePoint& point) const {
+TemperatureTerm SurfaceModel::temperature_term(const SurfacePoint& point) const {
   const PartSurface& part = parts_[index(point.site.part)];
-  if (part.emits_only) return part.temperature_K;  // a plume keeps its own, whatever the body's thermal model
+  // (a plume keeps its own, whatever the body's thermal model)
+  if (part.emits_only) return TemperatureTerm::constant(part.temperature_K);
   const Geography& g = geography_;
-  if (!g.climatology || !g.land_mask) return thermal_.at(point.site.normal_body, part.temperature_K);
+  if (!g.climatology || !g.land_mask)
+    return TemperatureTerm::constant(thermal_.at(point.site.normal_body, part.temperature_K));
   const auto kind = g.land_mask->at(point.latitude_deg, point.longitude_deg) ? universe::SurfaceKind::land
                                                                              : universe::SurfaceKind::water;
-  return g.climatology_now.tabulated_temperature_K(kind, point.latitude_deg, point.sin_latitude,
-                                                   point.cos_latitude, point.longitude_deg);
+  return g.climatology_now.latitude_table(kind).temperature_term(point.latitude_deg, point.sin_latitude,
+                                                                 point.cos_latitude, point.longitude_deg);
 }
 
 void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& out) const {
@@ -213,17 +252,19 @@ void SurfaceModel::add_emission(const SurfacePoint& point, std::vector<double>& 
     out[i] += (1.0 - f) * ((1.0 - s) * black[i] + s * surface[i]) + f * cloud[i];
 }
 
-double SurfaceModel::emission_radiance(const SurfacePoint& point) const {
+template <class TemperatureK>
+double SurfaceModel::emission_radiance(const SurfacePoint& point, TemperatureK temperature) const {
   if (!varying() || !parts_[index(point.site.part)].self_radiance.empty()) return part_radiance(point.site.part);
   const double f = point.cloud_fraction, s = point.reflectance_scale;
-  if (f == 0.0 && s == 1.0) return point.spectrum->emission_radiance(temperature_K(point));
+  if (f == 0.0 && s == 1.0) return point.spectrum->emission_radiance(temperature());
   double L = 0;
-  if (f < 1.0) {
-    const double T = temperature_K(point);
-    L = (1.0 - f) * point.spectrum->scaled_emission_radiance(s, T);
-  }
+  if (f < 1.0) L = (1.0 - f) * point.spectrum->scaled_emission_radiance(s, temperature());
   if (f > 0.0) L += f * cloud_emission_;
   return L;
+}
+
+double SurfaceModel::emission_radiance(const SurfacePoint& point) const {
+  return emission_radiance(point, [&] { return temperature_K(point); });
 }
 
 void SurfaceModel::add_srf(const SurfacePoint& point, double weight, std::vector<double>& srf) const {
@@ -236,17 +277,36 @@ void SurfaceModel::add_srf(const SurfacePoint& point, double weight, std::vector
     for (std::size_t i = 0; i < srf.size(); ++i) srf[i] += weight * f * geography_.cloud_spectrum->srf()[i];
 }
 
-double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point) const {
+template <class TemperatureK>
+double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point, TemperatureK temperature) const {
   const PartSurface& part = parts_[index(point.site.part)];
   if (!part.self_radiance.empty()) return part_radiance(point.site.part);
-  if (part.emits_only) return emission_radiance(point);  // (outside the L(T) table's range)
+  if (part.emits_only) return emission_radiance(point, temperature);  // (outside the L(T) table's range)
   if (!thermal_.subsolar || table_.empty() || geography_.bitmap() || geography_.climatology || geography_.clouds)
-    return emission_radiance(point);
+    return emission_radiance(point, temperature);
   const auto& row = table_[index(point.site.part)];
   const double last = static_cast<double>(row.size() - 1);
-  const double u = std::clamp((temperature_K(point) - table_T0_) / table_dT_, 0.0, last);
+  const double u = std::clamp((temperature() - table_T0_) / table_dT_, 0.0, last);
   const auto k = std::min(static_cast<std::size_t>(u), row.size() - 2);
   return row[k] + (u - static_cast<double>(k)) * (row[k + 1] - row[k]);
+}
+
+double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point) const {
+  return emission_radiance_interpolated(point, [&] { return temperature_K(point); });
+}
+
+void SurfaceModel::emission_radiances_interpolated(const SurfacePoint* const* points, std::size_t n,
+                                                   double* out) const {
+  constexpr std::size_t kBatch = 64;
+  TemperatureTerm terms[kBatch];
+  double T[kBatch];
+  for (std::size_t first = 0; first < n; first += kBatch) {
+    const std::size_t m = std::min(kBatch, n - first);
+    for (std::size_t k = 0; k < m; ++k) terms[k] = temperature_term(*points[first + k]);
+    temperature_terms_K(terms, m, T);
+    for (std::size_t k = 0; k < m; ++k)
+      out[first + k] = emission_radiance_interpolated(*points[first + k], [&] { return T[k]; });
+  }
 }
 
 }  // namespace eoir::scene

@@ -73,8 +73,9 @@ struct Geography {
   const universe::RasterLevel* land_mask = nullptr;
   const universe::SurfaceClimatology* climatology = nullptr;
   ClimatologyInstant climatology_now;  // the tables and the Sun at the frame's time
-  // The latitude (geodetic on the Earth), its sine and cosine, and the longitude of a point.
-  void locate(const Vec3& point_body_m, SurfacePoint& point) const;
+  // The latitude (geodetic on the Earth), its sine and cosine, and the
+  // longitude of each point's site (site.point_body_m).
+  void locate(SurfacePoint* const* points, std::size_t n) const;
   bool bitmap() const { return land_cover || albedo; }
 };
 
@@ -94,10 +95,24 @@ class SurfaceModel {
   // asked of the memory together: the point's coordinates (located), the
   // cells it reads asked for (prefetch_maps), then read (read_maps).
   SurfacePoint located(const SurfaceSite& site) const;
+  // Whether located reads the point's coordinates (maps, clouds or a
+  // climatology), and the same for many points at once (points made by
+  // unlocated: their site and spectrum).
+  bool locates() const {
+    const Geography& g = geography_;
+    return g.bitmap() || g.clouds || (g.climatology && g.land_mask);
+  }
+  SurfacePoint unlocated(const SurfaceSite& site) const {
+    return SurfacePoint{site, parts_[index(site.part)].spectrum};
+  }
+  void locate(SurfacePoint* const* points, std::size_t n) const {
+    if (locates()) geography_.locate(points, n);
+  }
   void prefetch_maps(const SurfacePoint& point) const;
   void read_maps(SurfacePoint& point) const;
   // The temperature there (the thermal model or the climatology).
-  double temperature_K(const SurfacePoint& point) const;
+  double temperature_K(const SurfacePoint& point) const { return temperature_term(point).value_K(); }
+  TemperatureTerm temperature_term(const SurfacePoint& point) const;
   // Some part (or map class) reflects light in the band.
   bool reflects() const { return reflects_; }
   bool reflects(const SurfacePoint& point) const {
@@ -116,6 +131,14 @@ class SurfaceModel {
   // The greatest height above the surface at which reflect raises a point
   // (the cloud top's; 0 without clouds).
   double layer_height_m() const { return geography_.clouds ? geography_.cloud_height_m : 0.0; }
+  // At least the point's SRF (its layers blended) at any wavelength.
+  double srf_bound(const SurfacePoint& point) const {
+    const double f = point.cloud_fraction;
+    double most = 0.0;
+    if (f < 1.0 && point.spectrum->reflects()) most = (1.0 - f) * point.reflectance_scale * point.spectrum->max_srf();
+    if (f > 0.0) most += f * geography_.cloud_spectrum->max_srf();
+    return most;
+  }
   // Adds weight x the point's SRF (its layers blended) to `srf`.
   void add_srf(const SurfacePoint& point, double weight, std::vector<double>& srf) const;
   // The temperature or the material varies over a part.
@@ -134,6 +157,8 @@ class SurfaceModel {
   void add_emission(const SurfacePoint& point, std::vector<double>& out) const;
   double emission_radiance(const SurfacePoint& point) const;
   double emission_radiance_interpolated(const SurfacePoint& point) const;
+  // The same at many points, their temperatures taken together (temperature_terms_K).
+  void emission_radiances_interpolated(const SurfacePoint* const* points, std::size_t n, double* out) const;
   // At least emission_radiance and emission_radiance_interpolated anywhere
   // on the surface (infinity for a tabulated radiance).
   double emission_bound() const { return emission_bound_; }
@@ -151,6 +176,12 @@ class SurfaceModel {
   const Geography& geography() const { return geography_; }
 
  private:
+  // emission_radiance(_interpolated) with the point's temperature from
+  // temperature() (called only where it is needed).
+  template <class TemperatureK>
+  double emission_radiance(const SurfacePoint& point, TemperatureK temperature) const;
+  template <class TemperatureK>
+  double emission_radiance_interpolated(const SurfacePoint& point, TemperatureK temperature) const;
   static std::size_t index(std::int32_t part) { return static_cast<std::size_t>(part < 0 ? 0 : part); }
   std::vector<PartSurface> parts_;
   ThermalField thermal_;

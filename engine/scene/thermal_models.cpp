@@ -8,6 +8,7 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "core/vector_math.hpp"
 
 namespace eoir::scene {
 namespace {
@@ -326,17 +327,54 @@ double DiurnalCycle::from_sunrise_h(double local_solar_time_h) const {
   return sunrise_h_ + wrap(local_solar_time_h - sunrise_h_, kHoursPerDay);  // [t_sr, t_sr + 24)
 }
 
-double DiurnalCycle::temperature_at_K(double u) const {
+double TemperatureTerm::value_K() const {
+  switch (function) {
+    case Function::cos: return offset_K + scale_K * std::cos(argument);
+    case Function::exp: return offset_K + scale_K * std::exp(argument);
+    case Function::none: break;
+  }
+  return offset_K;
+}
+
+void temperature_terms_K(const TemperatureTerm* terms, std::size_t n, double* out_K) {
+  constexpr std::size_t kBatch = 64;
+  double argument[2][kBatch], value[2][kBatch];
+  std::size_t at[2][kBatch];
+  for (std::size_t first = 0; first < n; first += kBatch) {
+    const std::size_t m = std::min(kBatch, n - first);
+    std::size_t count[2] = {0, 0};  // cosines, exponentials
+    for (std::size_t k = 0; k < m; ++k) {
+      const TemperatureTerm& t = terms[first + k];
+      if (t.function == TemperatureTerm::Function::none) {
+        out_K[first + k] = t.offset_K;
+        continue;
+      }
+      const int f = t.function == TemperatureTerm::Function::cos ? 0 : 1;
+      argument[f][count[f]] = t.argument;
+      at[f][count[f]++] = first + k;
+    }
+    vector_math::cos(argument[0], value[0], count[0]);
+    vector_math::exp(argument[1], value[1], count[1]);
+    for (int f = 0; f < 2; ++f)
+      for (std::size_t j = 0; j < count[f]; ++j) {
+        const TemperatureTerm& t = terms[at[f][j]];
+        out_K[at[f][j]] = t.offset_K + t.scale_K * value[f][j];
+      }
+  }
+}
+
+TemperatureTerm DiurnalCycle::temperature_term_at(double u) const {
+  using F = TemperatureTerm::Function;
   const double range_K = t_max_K_ - t_min_K_;
-  if (range_K <= 0.0) return t_min_K_;
-  if (u <= sunset_h_) return t_min_K_ + range_K * std::cos(pi * (u - time_of_max_h_) / half_period_h_);
+  if (range_K <= 0.0) return TemperatureTerm::constant(t_min_K_);
+  if (u <= sunset_h_) return {t_min_K_, range_K, pi * (u - time_of_max_h_) / half_period_h_, F::cos};
   const double since_sunset_h = u - sunset_h_;
   if (linear_night_) {
     const double night_h = kHoursPerDay - (sunset_h_ - sunrise_h_);
-    return sunset_K_ - (sunset_K_ - t_min_K_) * std::min(since_sunset_h / night_h, 1.0);
+    return TemperatureTerm::constant(sunset_K_ - (sunset_K_ - t_min_K_) * std::min(since_sunset_h / night_h, 1.0));
   }
-  if (decay_h_ <= 0.0) return t_min_K_;
-  return asymptote_K_ + (sunset_K_ - asymptote_K_) * std::exp(-since_sunset_h / decay_h_);
+  if (decay_h_ <= 0.0) return TemperatureTerm::constant(t_min_K_);
+  return {asymptote_K_, sunset_K_ - asymptote_K_, -since_sunset_h / decay_h_, F::exp};
 }
 
 double surface_temperature_K(const universe::SurfaceClimatology& climatology, universe::SurfaceKind kind,
@@ -385,12 +423,6 @@ const DiurnalLatitudeTable& ClimatologyInstant::latitude_table(universe::Surface
                                                                calendar_.utc_hours, equation_of_time_min_);
   });
   return *tables_->table[k];
-}
-
-double ClimatologyInstant::tabulated_temperature_K(universe::SurfaceKind kind, double latitude_deg,
-                                                   double sin_latitude, double cos_latitude,
-                                                   double longitude_deg) const {
-  return latitude_table(kind).temperature_K(latitude_deg, sin_latitude, cos_latitude, longitude_deg);
 }
 
 bool DiurnalLatitudeTable::interpolates(double latitude_deg) const { return stencil(latitude_deg).regular; }
@@ -490,14 +522,14 @@ DiurnalLatitudeTable::Stencil DiurnalLatitudeTable::stencil(double latitude_deg)
   return {n, t - static_cast<double>(k0), n[0].regular && n[1].regular && n[2].regular && n[3].regular};
 }
 
-double DiurnalLatitudeTable::temperature_K(double latitude_deg, double sin_latitude, double cos_latitude,
-                                           double longitude_deg) const {
+TemperatureTerm DiurnalLatitudeTable::temperature_term(double latitude_deg, double sin_latitude,
+                                                      double cos_latitude, double longitude_deg) const {
   const double local_h = local_solar_time_from_eot_h(utc_hours_, longitude_deg, equation_of_time_min_);
   const Stencil st = stencil(latitude_deg);
   if (!st.regular) {
     const universe::DailyExtremes x = day_.at(latitude_deg);
-    return DiurnalCycle::temperature_K(x.t_min_K, x.t_max_K, at_latitude(sun_, sin_latitude, cos_latitude), shape_,
-                                       local_h);
+    return TemperatureTerm::constant(DiurnalCycle::temperature_K(
+        x.t_min_K, x.t_max_K, at_latitude(sun_, sin_latitude, cos_latitude), shape_, local_h));
   }
   const Node* n = st.nodes;
   // Lagrange weights of the nodes at 0, 1, 2, 3 for x in [0, 3].
@@ -522,7 +554,7 @@ double DiurnalLatitudeTable::temperature_K(double latitude_deg, double sin_latit
     cycle.asymptote_K_ = at(&Node::asymptote_K);
     cycle.decay_h_ = at(&Node::decay_h);
   }
-  return cycle.temperature_at_K(u);
+  return cycle.temperature_term_at(u);
 }
 
 // ---- 2. Airless central bodies ----------------------------------------------

@@ -75,6 +75,8 @@
 #pragma once
 #include <Eigen/Core>
 #include <algorithm>
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -144,6 +146,20 @@ struct DiurnalShape {
 // night decay (DiurnalCycle), to rounding. Throws out_of_range outside (0, 1).
 double night_decay_root(double r);
 
+// A temperature as offset + scale f(argument), f a cosine, an exponential
+// or nothing (the offset alone), so that the cosines and exponentials of many
+// points are taken together (temperature_terms_K).
+struct TemperatureTerm {
+  enum class Function : std::uint8_t { none, cos, exp };
+  double offset_K = 0.0, scale_K = 0.0, argument = 0.0;
+  Function function = Function::none;
+  static TemperatureTerm constant(double temperature_K) { return {temperature_K, 0.0, 0.0, Function::none}; }
+  double value_K() const;  // (libm)
+};
+// out_K[i] = terms[i].value_K() to rounding: the batch's cosines and
+// exponentials by vector maths (core/vector_math.hpp).
+void temperature_terms_K(const TemperatureTerm* terms, std::size_t n, double* out_K);
+
 class DiurnalCycle {
  public:
   // Throws out_of_range for non-finite arguments, t_min_K > t_max_K or a
@@ -177,7 +193,8 @@ class DiurnalCycle {
   double temperature_solving_night_K(double local_solar_time_h);
   void solve_night();
   double from_sunrise_h(double local_solar_time_h) const;  // the local time in [t_sr, t_sr + 24) h
-  double temperature_at_K(double from_sunrise_h) const;
+  double temperature_at_K(double from_sunrise_h) const { return temperature_term_at(from_sunrise_h).value_K(); }
+  TemperatureTerm temperature_term_at(double from_sunrise_h) const;
 
   double t_min_K_ = 0.0, t_max_K_ = 0.0;
   double sunrise_h_ = 6.0, sunset_h_ = 18.0, time_of_max_h_ = 13.5, half_period_h_ = 15.0;
@@ -211,7 +228,11 @@ class DiurnalLatitudeTable {
  public:
   DiurnalLatitudeTable(const universe::ClimatologyDay& day, const SunPathAngles& sun, const DiurnalShape& shape,
                        double utc_hours, double equation_of_time_min);
-  double temperature_K(double latitude_deg, double sin_latitude, double cos_latitude, double longitude_deg) const;
+  double temperature_K(double latitude_deg, double sin_latitude, double cos_latitude, double longitude_deg) const {
+    return temperature_term(latitude_deg, sin_latitude, cos_latitude, longitude_deg).value_K();
+  }
+  TemperatureTerm temperature_term(double latitude_deg, double sin_latitude, double cos_latitude,
+                                   double longitude_deg) const;
   std::size_t nodes() const { return nodes_.size(); }
   std::size_t regular_nodes() const;  // nodes whose stencils may interpolate
   bool interpolates(double latitude_deg) const;  // false: the exact cycle there
@@ -265,7 +286,9 @@ class ClimatologyInstant {
   // temperature_K from the kind's DiurnalLatitudeTable, made on first use
   // (its segments too) and shared by copies of this instant.
   double tabulated_temperature_K(universe::SurfaceKind kind, double latitude_deg, double sin_latitude,
-                                 double cos_latitude, double longitude_deg) const;
+                                 double cos_latitude, double longitude_deg) const {
+    return latitude_table(kind).temperature_K(latitude_deg, sin_latitude, cos_latitude, longitude_deg);
+  }
   const DiurnalLatitudeTable& latitude_table(universe::SurfaceKind kind) const;
 
  private:

@@ -296,7 +296,7 @@ void WorldObject::shadow_casters_near(const Vec3& centre_frame_m, double radius_
 
 void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const Vec3& toward,
                                            const radiometry::Brdf& brdf, bool sun_only, std::vector<double>& out,
-                                           const ShadowCasters* near) const {
+                                           const ShadowCasters* near, double negligible_W_cm2_sr) const {
   const World& w = *world_;
   const std::size_t count = out.size();
   // The Sun (eq. 6): E = L_tab dOmega_sun, times the visible fraction of its disc.
@@ -356,7 +356,10 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
       // Its bound here: dOmega x the BRDF's largest N.L value x its light
       // at any phase, against kNegligibleAtPoint of the point's irradiance
       // so far (the Sun's by day), wavelength by wavelength.
-      const std::vector<double>& bound = source.light_spectra().bound;
+      const LightSpectra& spectra = source.light_spectra();
+      const std::vector<double>& bound = spectra.bound;
+      // (and against negligible_W_cm2_sr: the same bound, band-integrated)
+      if (omega * brdf.max_projected_value_per_sr() * spectra.bound_band_W_cm2_sr < negligible_W_cm2_sr) continue;
       const double scale = omega * brdf.max_projected_value_per_sr() / kNegligibleAtPoint;
       std::size_t i = 0;
       while (i < bound.size() && scale * bound[i] <= out[i]) ++i;
@@ -383,6 +386,7 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     if (visible <= 0) continue;
     const double g = omega * visible * cos_i * brdf.value(I, toward, n);
     const LightSpectra& spectra = source.light_spectra();
+    if (g * spectra.bound_band_W_cm2_sr < negligible_W_cm2_sr) continue;
     if (!spectra.reflects) {  // eclipsed or black: no phase to weigh
       for (std::size_t i = 0; i < count; ++i) out[i] += g * spectra.emitted[i];
       continue;
@@ -446,6 +450,7 @@ const LightSpectra& WorldObject::light_spectra() const {
         (disk_photometry.law() == radiometry::DiskPhaseLaw::moon && !disk_photometry.has_face_terms())) {
       light_spectra_.bound.resize(n);
       for (std::size_t i = 0; i < n; ++i) light_spectra_.bound[i] = light_spectra_.reflected[i] + emitted[i];
+      light_spectra_.bound_band_W_cm2_sr = w.view.spectral.integrate(light_spectra_.bound);
     }
   });
   return light_spectra_;
@@ -543,15 +548,40 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
     return w.view.spectral.integrate(L) + emitted + w.atmosphere.scatter_band(d);
   }
   const SurfacePoint point = surface_point ? *surface_point : surface->at(SurfaceSite{part, point_body_m, normal_body});
+  const auto emission = [&] {
+    return interpolated ? surface->emission_radiance_interpolated(point) : surface->emission_radiance(point);
+  };
+  bool emits = true;
+  if (emission_first_) {
+    const double emitted = emission();
+    const double reflected = reflected_radiance(point, near, emits, emitted);
+    return emits ? emitted + reflected + path_radiance_W_cm2_sr_ : reflected + path_radiance_W_cm2_sr_;
+  }
+  const double reflected = reflected_radiance(point, near, emits, 0.0);
+  if (!emits) return reflected + path_radiance_W_cm2_sr_;
+  return emission() + reflected + path_radiance_W_cm2_sr_;
+}
+
+double WorldObject::reflected_radiance(const SurfacePoint& point, const ShadowCasters* near, bool& emits,
+                                       double emitted_W_cm2_sr) const {
   double reflected = 0;
   if (surface->reflects(point)) {
-    const Vec3 p = to_frame(point_body_m), n = placed.body_to_frame * normal_body, toward = -p.normalized();
+    // The eq. 7 sources whose light here cannot reach kNegligible / (the
+    // number of sources) of the point's own emission (given:
+    // emitted_W_cm2_sr) are left out: all of them together, less than
+    // kNegligible of it (the point's layers pass at most srf_bound of each).
+    const double negligible =
+        emitted_W_cm2_sr > 0 ? kNegligible / static_cast<double>(world_->lights.size()) * emitted_W_cm2_sr /
+                                   surface->srf_bound(point)
+                             : 0.0;
+    const Vec3 p = to_frame(point.site.point_body_m), n = placed.body_to_frame * point.site.normal_body,
+               toward = -p.normalized();
     thread_local std::vector<double> E, L;  // per-sample scratch: no allocation per call
     L.resize(world_->view.spectral.sample_wavelengths_um.size());
     surface->reflect(
         point,
         [&](const radiometry::Brdf& brdf, double height_m, std::vector<double>& into) {
-          add_reflected_irradiance(p + height_m * n, n, toward, brdf, false, into, near);
+          add_reflected_irradiance(p + height_m * n, n, toward, brdf, false, into, near, negligible);
         },
         L, E);
     reflected = view().integrate(L);
@@ -559,9 +589,52 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
   // Self-emission that cannot reach kNegligible of the reflected
   // light (a visible band by day: B(0.75 um, 380 K) ~ 1e-22 of the Sun's) is
   // left out: it would change the sum by less than that, relative.
-  if (reflected > surface->emission_bound() / kNegligible) return reflected + path_radiance_W_cm2_sr_;
-  return (interpolated ? surface->emission_radiance_interpolated(point) : surface->emission_radiance(point)) +
-         reflected + path_radiance_W_cm2_sr_;
+  emits = !(reflected > surface->emission_bound() / kNegligible);
+  return reflected;
+}
+
+void WorldObject::effective_radiances(SurfacePoint* const* points, std::size_t n, const ShadowCasters* near,
+                                      double* out) const {
+  if (under_atmosphere_) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const SurfaceSite& site = points[k]->site;
+      out[k] = effective_radiance(site.part, site.point_body_m, site.normal_body, true, near, points[k]);
+    }
+    return;
+  }
+  // (their temperatures together)
+  if (emission_first_) {
+    surface->emission_radiances_interpolated(points, n, out);
+    for (std::size_t k = 0; k < n; ++k) {
+      bool emits = true;
+      const double reflected = reflected_radiance(*points[k], near, emits, out[k]);
+      out[k] = emits ? out[k] + reflected + path_radiance_W_cm2_sr_ : reflected + path_radiance_W_cm2_sr_;
+    }
+    return;
+  }
+  // The reflected light point by point, then the emission of those it can
+  // matter for.
+  constexpr std::size_t kBatch = 64;
+  const SurfacePoint* emitting[kBatch];
+  std::size_t at[kBatch];
+  double reflected[kBatch], emitted[kBatch];
+  for (std::size_t first = 0; first < n; first += kBatch) {
+    const std::size_t m = std::min(kBatch, n - first);
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < m; ++k) {
+      bool emits = true;
+      reflected[k] = reflected_radiance(*points[first + k], near, emits, 0.0);
+      if (!emits) {
+        out[first + k] = reflected[k] + path_radiance_W_cm2_sr_;
+        continue;
+      }
+      emitting[count] = points[first + k];
+      at[count++] = k;
+    }
+    surface->emission_radiances_interpolated(emitting, count, emitted);
+    for (std::size_t j = 0; j < count; ++j)
+      out[first + at[j]] = emitted[j] + reflected[at[j]] + path_radiance_W_cm2_sr_;
+  }
 }
 
 double WorldObject::patch_radiance(std::int32_t patch) const {
@@ -1495,10 +1568,12 @@ std::shared_ptr<const World> build_world(const universe::Universe& universe, con
     w->negligible_light_.assign(world->lights.size(), 0);
     const double floor = w->surface->emission_floor(), reflection = w->surface->reflection_bound_per_sr();
     const bool against_emission = floor > 0 && std::isfinite(reflection) && w->surface->reflects();
-    if (!against_emission && !many_objects) continue;
     const double sunlight =
         universe::sun_projected_solid_angle_sr((world->sun.position_m - w->placed.position_m).norm()) *
         sun_band_radiance;
+    // (sunlight reflected at its brightest cannot make the emission negligible)
+    w->emission_first_ = !(reflection * sunlight > w->surface->emission_bound() / kNegligible);
+    if (!against_emission && !many_objects) continue;
     for (std::size_t j = 0; j < world->lights.size(); ++j) {
       const ObjectLight& light = world->lights[j];
       if (light.object == w->id) continue;

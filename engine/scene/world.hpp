@@ -349,6 +349,10 @@ class WorldObject {
   double effective_radiance(std::int32_t part, const Vec3& point_body_m, const Vec3& normal_body,
                             bool interpolated = false, const ShadowCasters* near = nullptr,
                             const SurfacePoint* surface_point = nullptr) const;
+  // effective_radiance(site, interpolated, near, point) of many located
+  // points (surface->at's) of a region with shadow casters `near`: the
+  // emission's temperatures taken together.
+  void effective_radiances(SurfacePoint* const* points, std::size_t n, const ShadowCasters* near, double* out) const;
   // The effective radiance a sample ending at point_body_m on `part`, with
   // the outward normal hit_normal_body there (the ray caster's), sees, as the
   // scene mode says (spec 4.2): a part's value for plain surfaces; the value
@@ -433,6 +437,12 @@ class WorldObject {
   friend std::shared_ptr<const World> build_world(const universe::Universe&, const universe::Library&,
                                                   const EngineTime&, const universe::Object&, const ViewDefinition&,
                                                   WorldCache*, const std::set<std::string>*);
+  // effective_radiance's reflected light at a located point out of any
+  // atmosphere; emits: its emission can reach kNegligible of it.
+  // emitted_W_cm2_sr: the point's emission if known (else 0), against which
+  // eq. 7 sources that cannot matter are left out.
+  double reflected_radiance(const SurfacePoint& point, const ShadowCasters* near, bool& emits,
+                            double emitted_W_cm2_sr) const;
   struct AreaSourcePatch {
     Vec3 direction;              // from the receiver toward the patch, observer frame
     double solid_angle_sr = 0;   // projected solid angle at the receiver
@@ -463,7 +473,7 @@ class WorldObject {
   // Adds sum_i E_i (I_i . N) BRDF(I_i, N, O) at a point (eq. 4's bracket).
   void add_reflected_irradiance(const Vec3& point_frame, const Vec3& normal_frame, const Vec3& toward,
                                 const radiometry::Brdf& brdf, bool sun_only, std::vector<double>& out,
-                                const ShadowCasters* near = nullptr) const;
+                                const ShadowCasters* near = nullptr, double negligible_W_cm2_sr = 0.0) const;
   const World* world_ = nullptr;
   std::unique_ptr<radiometry::SpectralView> seen_through_;  // the atmosphere's T_out, if its path crosses air
   std::vector<double> sun_transmittance_;  // eq. 9's T_in of the Sun's light at the centre; empty: 1
@@ -471,6 +481,10 @@ class WorldObject {
   std::vector<double> path_scatter_;       // of which L_scatter
   double path_radiance_W_cm2_sr_ = 0;      // its band integral (eq. 48)
   bool under_atmosphere_ = false;          // the Earth: its points see World::atmosphere.surface's paths
+  // Its emission is found before its reflected light (the band's emission
+  // can never be left out beside sunlight: the thermal infrared), so that
+  // sources negligible beside it are not evaluated.
+  bool emission_first_ = false;
   std::int32_t light_ = -1;  // index in World::lights, -1 if not a source
   std::vector<std::vector<geometry::Occulter>> occulters_;  // per light (0 the Sun, 1 + k lights[k]): may shade it
   std::vector<const WorldObject*> part_shadows_;  // vehicles that may shade it from the Sun, by their parts

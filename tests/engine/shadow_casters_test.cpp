@@ -1,6 +1,6 @@
 // The frame's occultation tests see, per tile of samples, only the bodies
 // whose shadow can reach the tile (WorldObject::shadow_casters_near): every
-// sample must shade exactly as against all of the object's occulters
+// sample must shade as against all of the object's occulters (to rounding)
 // (spec 4.1.5.3, eqs. 4 and 6: the Sun's visible fraction at the point).
 #include <gtest/gtest.h>
 
@@ -53,7 +53,7 @@ std::unique_ptr<eoir::Engine> shadow_scene() {
 }
 }  // namespace
 
-TEST(ShadowCasters, TilesShadeExactlyAsAgainstEveryOcculter) {
+TEST(ShadowCasters, TilesShadeAsAgainstEveryOcculter) {
   auto e = shadow_scene();
   const eoir::Frame& f = e->render("Sensor");
   const eoir::scene::World& w = *f.world;
@@ -80,7 +80,10 @@ TEST(ShadowCasters, TilesShadeExactlyAsAgainstEveryOcculter) {
       const Vec3 point_body = earth.seen.body_to_frame.transpose() * (point_frame - earth.seen.position_m);
       // Against all of the Earth's occulters (no tile's list).
       const double all = earth.radiance_at(hit.part, point_body, earth.direction_to_body(hit.normal_frame), hit.facet);
-      EXPECT_EQ(radiance[i], all) << "sample (" << c << ", " << r << ")";
+      // (to rounding: the frame takes a tile's latitudes and temperatures by
+      // vector maths, radiance_at by libm, core/vector_math.hpp; a caster
+      // missing from the tile's list would change a shadowed sample by far more)
+      EXPECT_NEAR(radiance[i], all, 1e-12 * all) << "sample (" << c << ", " << r << ")";
       ++compared;
       const double fraction = earth.sun_fraction(point_frame);
       if (fraction > 0 && fraction < 1) ++penumbra;

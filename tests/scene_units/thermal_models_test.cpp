@@ -402,6 +402,42 @@ TEST(ThermalEarth, LatitudeTableAcrossTheSwitchesToTheExactCycle) {
                 now.temperature_K(SurfaceKind::water, lat, lat < 0 ? -1.0 : 1.0, 0.0, 10.0), 1e-9);
 }
 
+// Many points' temperatures at once (temperature_terms_K: the batch's
+// cosines and exponentials by vector maths, core/vector_math.hpp) are each
+// point's temperature_K to rounding (glibc's 4 ulp bound on both functions,
+// carried through T = offset + scale f: a few parts in 1e16 of T), a
+// constant term exactly; each branch occurs (day, night decay, the exact
+// cycle's constants near the poles).
+TEST(ThermalEarth, TemperatureTermsOfABatchAreEachPointsTemperature) {
+  CalendarInstant c;
+  c.day_of_year = 172.5;
+  c.utc_hours = 7.2;
+  const ClimatologyInstant now(climatology(), c);
+  const DiurnalLatitudeTable& table = now.latitude_table(SurfaceKind::land);
+  std::vector<TemperatureTerm> terms;
+  for (double lat = -89.5; lat <= 89.5; lat += 0.37)
+    for (double lon = -180.0; lon < 180.0; lon += 7.3) {
+      const double s = std::sin(lat * kPi / 180.0), co = std::cos(lat * kPi / 180.0);
+      terms.push_back(table.temperature_term(lat, s, co, lon));
+    }
+  int counts[3] = {0, 0, 0};
+  for (const TemperatureTerm& t : terms) ++counts[static_cast<int>(t.function)];
+  EXPECT_GT(counts[static_cast<int>(TemperatureTerm::Function::none)], 100);
+  EXPECT_GT(counts[static_cast<int>(TemperatureTerm::Function::cos)], 1000);
+  EXPECT_GT(counts[static_cast<int>(TemperatureTerm::Function::exp)], 1000);
+  std::vector<double> batch(terms.size());
+  temperature_terms_K(terms.data(), terms.size(), batch.data());
+  double worst = 0;
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    const double one = terms[i].value_K();
+    if (terms[i].function == TemperatureTerm::Function::none) {
+      EXPECT_EQ(batch[i], one);
+    }
+    worst = std::max(worst, std::fabs(batch[i] - one) / one);
+  }
+  EXPECT_LT(worst, 1e-14);
+}
+
 // ---- 2. Airless central bodies ----------------------------------------------
 
 TEST(ThermalAirless, SolarDayLengths) {

@@ -369,6 +369,20 @@ void cast_tile_near_one_object(const ObjectData& od, const std::vector<const Par
       for (int i = 0; i < n; ++i) d_part[i] = to_part * d[i];
     else
       for (int i = 0; i < n; ++i) d_part[i] = p.part_to_frame.transpose() * d[i];
+    if (p.geom.kind == ShapeKind::sphere || p.geom.kind == ShapeKind::oblate) {  // (the Earth's tiles: 4 rays at once)
+      bool hit[kMax];
+      double t[kMax];
+      Vec3 nn[kMax];
+      intersect_spheroid_rays(p.geom, p.origin_part_m, d_part, n, best, hit, t, nn);
+      for (int i = 0; i < n; ++i)
+        if (hit[i]) {
+          best[i] = t[i];
+          best_part[i] = static_cast<int>(b->part);
+          best_facet[i] = -1;
+          normal_part[i] = nn[i];
+        }
+      continue;
+    }
     if (p.geom.kind != ShapeKind::mesh) {
       for (int i = 0; i < n; ++i) {
         double t = 0;

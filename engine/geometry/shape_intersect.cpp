@@ -14,6 +14,11 @@
 #include <cmath>
 #include <limits>
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define EOIR_AVX_SPHEROID 1
+#endif
+
 #include "core/constants.hpp"
 #include "core/error.hpp"
 
@@ -266,6 +271,95 @@ bool intersect_shape(const ShapeGeom& g, const Vec3& origin_m, const Vec3& dir, 
   if (!hit) return false;
   t_m = t0 + t;
   return t_m > t_min && t_m < t_max;
+}
+
+namespace {
+
+#ifdef EOIR_AVX_SPHEROID
+const bool kHasAvx = __builtin_cpu_supports("avx");
+
+// (x x + y y) + z z, as Eigen's squaredNorm of a 3-vector.
+__attribute__((target("avx"))) inline __m256d norm2(__m256d x, __m256d y, __m256d z) {
+  return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(x, x), _mm256_mul_pd(y, y)), _mm256_mul_pd(z, z));
+}
+
+// intersect_shape's closest approach and hit_spheroid on rays i .. i + 3,
+// lane by lane the scalar code's operations (Eigen's 3-vector dot product
+// and norm sum (x + y) + z).
+__attribute__((target("avx"))) void spheroid_rays4(double a, double c, const Vec3& origin, const Vec3* dir,
+                                                   const double* t_max, bool* hit, double* t_m, Vec3* normal) {
+  const __m256d dx = _mm256_set_pd(dir[3].x(), dir[2].x(), dir[1].x(), dir[0].x());
+  const __m256d dy = _mm256_set_pd(dir[3].y(), dir[2].y(), dir[1].y(), dir[0].y());
+  const __m256d dz = _mm256_set_pd(dir[3].z(), dir[2].z(), dir[1].z(), dir[0].z());
+  const __m256d ox0 = _mm256_set1_pd(origin.x()), oy0 = _mm256_set1_pd(origin.y()), oz0 = _mm256_set1_pd(origin.z());
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  // t0 = -origin.d; o = origin + t0 d; [lo, hi) = [0 - t0, t_max - t0)
+  const __m256d dot =
+      _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ox0, dx), _mm256_mul_pd(oy0, dy)), _mm256_mul_pd(oz0, dz));
+  const __m256d sign = _mm256_set1_pd(-0.0);
+  const __m256d t0 = _mm256_xor_pd(dot, sign);
+  const __m256d ox = _mm256_add_pd(ox0, _mm256_mul_pd(t0, dx)), oy = _mm256_add_pd(oy0, _mm256_mul_pd(t0, dy)),
+                oz = _mm256_add_pd(oz0, _mm256_mul_pd(t0, dz));
+  const __m256d tmax = _mm256_loadu_pd(t_max);
+  const __m256d lo = _mm256_sub_pd(zero, t0), hi = _mm256_sub_pd(tmax, t0);
+  const double inv_a_s = 1.0 / a, inv_c_s = 1.0 / c;
+  const __m256d inv_a = _mm256_set1_pd(inv_a_s), inv_c = _mm256_set1_pd(inv_c_s);
+  const __m256d osx = _mm256_mul_pd(ox, inv_a), osy = _mm256_mul_pd(oy, inv_a), osz = _mm256_mul_pd(oz, inv_c);
+  const __m256d dsx = _mm256_mul_pd(dx, inv_a), dsy = _mm256_mul_pd(dy, inv_a), dsz = _mm256_mul_pd(dz, inv_c);
+  const __m256d len = _mm256_sqrt_pd(norm2(dsx, dsy, dsz));
+  const __m256d inv_len = _mm256_div_pd(one, len);
+  const __m256d dhx = _mm256_mul_pd(dsx, inv_len), dhy = _mm256_mul_pd(dsy, inv_len), dhz = _mm256_mul_pd(dsz, inv_len);
+  const __m256d b =
+      _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(osx, dhx), _mm256_mul_pd(osy, dhy)), _mm256_mul_pd(osz, dhz));
+  const __m256d lx = _mm256_sub_pd(osx, _mm256_mul_pd(b, dhx)), ly = _mm256_sub_pd(osy, _mm256_mul_pd(b, dhy)),
+                lz = _mm256_sub_pd(osz, _mm256_mul_pd(b, dhz));
+  const __m256d ll = _mm256_sqrt_pd(norm2(lx, ly, lz));
+  const __m256d disc = _mm256_mul_pd(_mm256_sub_pd(one, ll), _mm256_add_pd(one, ll));
+  const __m256d real = _mm256_cmp_pd(disc, zero, _CMP_GE_OQ);  // (NaN: false)
+  // q = -(b + copysign(sqrt(disc), b))
+  const __m256d root = _mm256_or_pd(_mm256_andnot_pd(sign, _mm256_sqrt_pd(disc)), _mm256_and_pd(sign, b));
+  const __m256d q = _mm256_xor_pd(_mm256_add_pd(b, root), sign);
+  const __m256d cc = _mm256_sub_pd(norm2(osx, osy, osz), one);
+  // entry = q != 0 ? std::min(q, cc / q) : q, std::min(x, y) being y < x ? y : x
+  const __m256d ratio = _mm256_div_pd(cc, q);
+  const __m256d smaller = _mm256_blendv_pd(q, ratio, _mm256_cmp_pd(ratio, q, _CMP_LT_OQ));
+  const __m256d entry = _mm256_blendv_pd(q, smaller, _mm256_cmp_pd(q, zero, _CMP_NEQ_UQ));
+  const __m256d tt = _mm256_mul_pd(entry, inv_len);
+  const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(tt, lo, _CMP_GT_OQ), _mm256_cmp_pd(tt, hi, _CMP_LT_OQ));
+  const __m256d px = _mm256_add_pd(ox, _mm256_mul_pd(tt, dx)), py = _mm256_add_pd(oy, _mm256_mul_pd(tt, dy)),
+                pz = _mm256_add_pd(oz, _mm256_mul_pd(tt, dz));
+  const __m256d gaa = _mm256_set1_pd(inv_a_s * inv_a_s), gcc = _mm256_set1_pd(inv_c_s * inv_c_s);
+  const __m256d gx = _mm256_mul_pd(px, gaa), gy = _mm256_mul_pd(py, gaa), gz = _mm256_mul_pd(pz, gcc);
+  const __m256d inv_g = _mm256_div_pd(one, _mm256_sqrt_pd(norm2(gx, gy, gz)));
+  const __m256d t = _mm256_add_pd(t0, tt);  // t_m = t0 + t
+  const __m256d in_range = _mm256_and_pd(_mm256_cmp_pd(t, zero, _CMP_GT_OQ), _mm256_cmp_pd(t, tmax, _CMP_LT_OQ));
+  const int mask = _mm256_movemask_pd(_mm256_and_pd(_mm256_and_pd(real, inside), in_range));
+  alignas(32) double tv[4], nx[4], ny[4], nz[4];
+  _mm256_store_pd(tv, t);
+  _mm256_store_pd(nx, _mm256_mul_pd(gx, inv_g));
+  _mm256_store_pd(ny, _mm256_mul_pd(gy, inv_g));
+  _mm256_store_pd(nz, _mm256_mul_pd(gz, inv_g));
+  for (int k = 0; k < 4; ++k) {
+    hit[k] = (mask >> k) & 1;
+    if (!hit[k]) continue;
+    t_m[k] = tv[k];
+    normal[k] = Vec3(nx[k], ny[k], nz[k]);
+  }
+}
+#endif
+
+}  // namespace
+
+void intersect_spheroid_rays(const ShapeGeom& g, const Vec3& origin_m, const Vec3* dir, int n, const double* t_max,
+                             bool* hit, double* t_m, Vec3* normal) {
+  if (g.kind != ShapeKind::sphere && g.kind != ShapeKind::oblate)
+    throw Error(Status::internal, "intersect_spheroid_rays: not a sphere or spheroid");
+  int i = 0;
+#ifdef EOIR_AVX_SPHEROID
+  if (kHasAvx)
+    for (; i + 4 <= n; i += 4) spheroid_rays4(g.a_m, g.c_m, origin_m, dir + i, t_max + i, hit + i, t_m + i, normal + i);
+#endif
+  for (; i < n; ++i) hit[i] = intersect_shape(g, origin_m, dir[i], 0.0, t_max[i], t_m[i], normal[i]);
 }
 
 bool shape_contains(const ShapeGeom& g, const Vec3& p) {

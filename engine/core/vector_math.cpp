@@ -6,9 +6,9 @@
 #include <immintrin.h>
 #define EOIR_LIBMVEC 1
 // glibc's AVX2 variants (x86_64 vector function ABI, 'd' = AVX2, 4 lanes).
-extern "C" __m256d _ZGVdN4vv_atan2(__m256d, __m256d);
-extern "C" __m256d _ZGVdN4v_exp(__m256d);
-extern "C" __m256d _ZGVdN4v_cos(__m256d);
+extern "C" __attribute__((target("avx2,fma"))) __m256d _ZGVdN4vv_atan2(__m256d, __m256d);
+extern "C" __attribute__((target("avx2,fma"))) __m256d _ZGVdN4v_exp(__m256d);
+extern "C" __attribute__((target("avx2,fma"))) __m256d _ZGVdN4v_cos(__m256d);
 #endif
 
 namespace eoir::vector_math {
@@ -16,7 +16,10 @@ namespace eoir::vector_math {
 namespace {
 
 #ifdef EOIR_LIBMVEC
-const bool kHasAvx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+const bool kHasAvx2 = [] {
+  __builtin_cpu_init();  // (this may run before the library's own initialisers)
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+}();
 
 enum class Unary { exp, cos };
 
@@ -52,13 +55,9 @@ __attribute__((target("avx2,fma"))) void atan2_avx2(const double* y, const doubl
   _mm256_store_pd(r, _ZGVdN4vv_atan2(_mm256_load_pd(a), _mm256_load_pd(b)));
   for (std::size_t k = 0; i + k < n; ++k) out[i + k] = r[k];
 }
-#else
-constexpr bool kHasAvx2 = false;
 #endif
 
 }  // namespace
-
-bool vectorized() { return kHasAvx2; }
 
 void atan2(const double* y, const double* x, double* out, std::size_t n) {
 #ifdef EOIR_LIBMVEC

@@ -2,8 +2,8 @@
 // doubles at a time with AVX2 and FMA) where the processor has them, else libm
 // element by element. Both are within 4 ulp of the correctly rounded value
 // (glibc's bound), so a result differs between machines by rounding only.
-// For the scene's per-sample chains (a tile's latitudes, temperatures and
-// Planck look-ups): each costs a fifth of libm's scalar call.
+// For the scene's per-sample chains (a tile's latitudes and temperatures):
+// each costs a fifth of libm's scalar call.
 #pragma once
 
 #include <cstddef>
@@ -16,8 +16,5 @@ void atan2(const double* y, const double* x, double* out, std::size_t n);
 void exp(const double* x, double* out, std::size_t n);
 // out[i] = cos(x[i]), x in radians.
 void cos(const double* x, double* out, std::size_t n);
-
-// Whether the vector path runs on this processor (AVX2 and FMA).
-bool vectorized();
 
 }  // namespace eoir::vector_math

@@ -276,7 +276,10 @@ bool intersect_shape(const ShapeGeom& g, const Vec3& origin_m, const Vec3& dir, 
 namespace {
 
 #ifdef EOIR_AVX_SPHEROID
-const bool kHasAvx = __builtin_cpu_supports("avx");
+const bool kHasAvx = [] {
+  __builtin_cpu_init();  // (this may run before the library's own initialisers)
+  return __builtin_cpu_supports("avx") != 0;
+}();
 
 // (x x + y y) + z z, as Eigen's squaredNorm of a 3-vector.
 __attribute__((target("avx"))) inline __m256d norm2(__m256d x, __m256d y, __m256d z) {

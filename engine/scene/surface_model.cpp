@@ -295,8 +295,8 @@ double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point) c
   return emission_radiance_interpolated(point, [&] { return temperature_K(point); });
 }
 
-void SurfaceModel::emission_radiances_interpolated(const SurfacePoint* const* points, std::size_t n,
-                                                   double* out) const {
+void SurfaceModel::emission_radiances(const SurfacePoint* const* points, std::size_t n, bool interpolated,
+                                      double* out) const {
   constexpr std::size_t kBatch = 64;
   TemperatureTerm terms[kBatch];
   double T[kBatch];
@@ -304,8 +304,11 @@ void SurfaceModel::emission_radiances_interpolated(const SurfacePoint* const* po
     const std::size_t m = std::min(kBatch, n - first);
     for (std::size_t k = 0; k < m; ++k) terms[k] = temperature_term(*points[first + k]);
     temperature_terms_K(terms, m, T);
-    for (std::size_t k = 0; k < m; ++k)
-      out[first + k] = emission_radiance_interpolated(*points[first + k], [&] { return T[k]; });
+    for (std::size_t k = 0; k < m; ++k) {
+      const auto temperature = [&] { return T[k]; };
+      out[first + k] = interpolated ? emission_radiance_interpolated(*points[first + k], temperature)
+                                    : emission_radiance(*points[first + k], temperature);
+    }
   }
 }
 

@@ -157,8 +157,9 @@ class SurfaceModel {
   void add_emission(const SurfacePoint& point, std::vector<double>& out) const;
   double emission_radiance(const SurfacePoint& point) const;
   double emission_radiance_interpolated(const SurfacePoint& point) const;
-  // The same at many points, their temperatures taken together (temperature_terms_K).
-  void emission_radiances_interpolated(const SurfacePoint* const* points, std::size_t n, double* out) const;
+  // Either (interpolated or not) at many points, their temperatures taken
+  // together (temperature_terms_K).
+  void emission_radiances(const SurfacePoint* const* points, std::size_t n, bool interpolated, double* out) const;
   // At least emission_radiance and emission_radiance_interpolated anywhere
   // on the surface (infinity for a tabulated radiance).
   double emission_bound() const { return emission_bound_; }

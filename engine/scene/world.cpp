@@ -548,18 +548,10 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
     return w.view.spectral.integrate(L) + emitted + w.atmosphere.scatter_band(d);
   }
   const SurfacePoint point = surface_point ? *surface_point : surface->at(SurfaceSite{part, point_body_m, normal_body});
-  const auto emission = [&] {
-    return interpolated ? surface->emission_radiance_interpolated(point) : surface->emission_radiance(point);
-  };
-  bool emits = true;
-  if (emission_first_) {
-    const double emitted = emission();
-    const double reflected = reflected_radiance(point, near, emits, emitted);
-    return emits ? emitted + reflected + path_radiance_W_cm2_sr_ : reflected + path_radiance_W_cm2_sr_;
-  }
-  const double reflected = reflected_radiance(point, near, emits, 0.0);
-  if (!emits) return reflected + path_radiance_W_cm2_sr_;
-  return emission() + reflected + path_radiance_W_cm2_sr_;
+  const SurfacePoint* one = &point;
+  double L = 0;
+  effective_radiances(&one, 1, near, &L, interpolated);
+  return L;
 }
 
 double WorldObject::reflected_radiance(const SurfacePoint& point, const ShadowCasters* near, bool& emits,
@@ -593,18 +585,18 @@ double WorldObject::reflected_radiance(const SurfacePoint& point, const ShadowCa
   return reflected;
 }
 
-void WorldObject::effective_radiances(SurfacePoint* const* points, std::size_t n, const ShadowCasters* near,
-                                      double* out) const {
+void WorldObject::effective_radiances(const SurfacePoint* const* points, std::size_t n, const ShadowCasters* near,
+                                      double* out, bool interpolated) const {
   if (under_atmosphere_) {
     for (std::size_t k = 0; k < n; ++k) {
       const SurfaceSite& site = points[k]->site;
-      out[k] = effective_radiance(site.part, site.point_body_m, site.normal_body, true, near, points[k]);
+      out[k] = effective_radiance(site.part, site.point_body_m, site.normal_body, interpolated, near, points[k]);
     }
     return;
   }
   // (their temperatures together)
   if (emission_first_) {
-    surface->emission_radiances_interpolated(points, n, out);
+    surface->emission_radiances(points, n, interpolated, out);
     for (std::size_t k = 0; k < n; ++k) {
       bool emits = true;
       const double reflected = reflected_radiance(*points[k], near, emits, out[k]);
@@ -631,7 +623,7 @@ void WorldObject::effective_radiances(SurfacePoint* const* points, std::size_t n
       emitting[count] = points[first + k];
       at[count++] = k;
     }
-    surface->emission_radiances_interpolated(emitting, count, emitted);
+    surface->emission_radiances(emitting, count, interpolated, emitted);
     for (std::size_t j = 0; j < count; ++j)
       out[first + at[j]] = emitted[j] + reflected[at[j]] + path_radiance_W_cm2_sr_;
   }

@@ -352,7 +352,8 @@ class WorldObject {
   // effective_radiance(site, interpolated, near, point) of many located
   // points (surface->at's) of a region with shadow casters `near`: the
   // emission's temperatures taken together.
-  void effective_radiances(SurfacePoint* const* points, std::size_t n, const ShadowCasters* near, double* out) const;
+  void effective_radiances(const SurfacePoint* const* points, std::size_t n, const ShadowCasters* near, double* out,
+                           bool interpolated = true) const;
   // The effective radiance a sample ending at point_body_m on `part`, with
   // the outward normal hit_normal_body there (the ray caster's), sees, as the
   // scene mode says (spec 4.2): a part's value for plain surfaces; the value

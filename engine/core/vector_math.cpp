@@ -2,7 +2,9 @@
 
 #include <cmath>
 
-#if defined(__x86_64__) && defined(__GNUC__)
+// (GCC only: clang's calls of the two-argument variant gave wrong lanes in
+// the sanitizer build, so clang builds take libm.)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #include <immintrin.h>
 #define EOIR_LIBMVEC 1
 // glibc's AVX2 variants (x86_64 vector function ABI, 'd' = AVX2, 4 lanes).

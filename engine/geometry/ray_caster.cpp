@@ -25,6 +25,7 @@
 #include "core/error.hpp"
 #include "core/parallel_ranges.hpp"
 #include "geometry/embree_device.hpp"
+#include "geometry/sample_grid.hpp"
 #include "geometry/scene_geometry.hpp"
 #include "geometry/shape_intersect.hpp"
 
@@ -448,6 +449,22 @@ void RayCaster::cast_grid_tiles(std::int64_t width, std::int64_t height,
                                 const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
                                 const std::function<void(const GridTile&)>& emit_tile, unsigned threads,
                                 const RayQuery& query) const {
+  cast_tiles(width, height, direction, emit_tile, threads, query);
+}
+
+void RayCaster::cast_grid_tiles(std::int64_t width, std::int64_t height, const TangentGrid& directions,
+                                const std::function<void(const GridTile&)>& emit_tile, unsigned threads,
+                                const RayQuery& query) const {
+  const auto direction = [&directions](std::int64_t c, std::int64_t r) -> Vec3 {
+    return directions.body_to_frame * SampleGrid::direction_of_tangents(directions.tan_x[c], directions.tan_y[r]);
+  };
+  cast_tiles(width, height, direction, emit_tile, threads, query);
+}
+
+template <class Direction>
+void RayCaster::cast_tiles(std::int64_t width, std::int64_t height, const Direction& direction,
+                           const std::function<void(const GridTile&)>& emit_tile, unsigned threads,
+                           const RayQuery& query) const {
   if (!impl_->scene) throw Error(Status::not_allowed, "ray caster: cast before build");
   if (width <= 0 || height <= 0) return;
   const auto& objects = impl_->objects;

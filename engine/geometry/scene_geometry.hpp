@@ -152,12 +152,27 @@ class RayCaster {
                        const std::function<Vec3(std::int64_t, std::int64_t)>& direction,
                        const std::function<void(const GridTile&)>& emit_tile, unsigned threads = 0,
                        const RayQuery& query = {}) const;
+  // The same for a pinhole grid given by its tangents: ray (c, r) along
+  // body_to_frame * (tan_x[c], tan_y[r], 1) normalized (SampleGrid's
+  // direction_of_tangents), computed in place rather than called per ray.
+  struct TangentGrid {
+    const double* tan_x = nullptr;
+    const double* tan_y = nullptr;
+    Mat3 body_to_frame = Mat3::Identity();
+  };
+  void cast_grid_tiles(std::int64_t width, std::int64_t height, const TangentGrid& directions,
+                       const std::function<void(const GridTile&)>& emit_tile, unsigned threads = 0,
+                       const RayQuery& query = {}) const;
   // True if any surface lies along `direction` closer than range_m.
   bool occluded(const Vec3& direction, double range_m, const RayQuery& query = {}) const;
 
  private:
   struct Impl;
   Impl* impl_;
+  template <class Direction>
+  void cast_tiles(std::int64_t width, std::int64_t height, const Direction& direction,
+                  const std::function<void(const GridTile&)>& emit_tile, unsigned threads,
+                  const RayQuery& query) const;
 };
 
 }  // namespace eoir::geometry

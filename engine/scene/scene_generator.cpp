@@ -180,13 +180,12 @@ std::size_t shade_rows(const World& world, std::int64_t lo, std::int64_t hi, std
   radiance.resize(count);
   // (r: the grid's row; cast_grid's rows count from lo)
   const auto direction = [&](std::int64_t c, std::int64_t r) { return world.sample_direction(c, r); };
-  // The directions of rows [lo, hi) from tangents made once per column and row.
+  // The directions of rows [lo, hi) from tangents made once per column and
+  // row (RayCaster::TangentGrid: the observer's axes times
+  // SampleGrid::direction_of_tangents, sample_direction's value).
   std::vector<double> tan_x(static_cast<std::size_t>(w)), tan_y(static_cast<std::size_t>(hi - lo));
   for (std::int64_t c = 0; c < w; ++c) tan_x[static_cast<std::size_t>(c)] = grid.tan_x(static_cast<double>(c));
   for (std::int64_t r = lo; r < hi; ++r) tan_y[static_cast<std::size_t>(r - lo)] = grid.tan_y(static_cast<double>(r));
-  const auto local_direction = [&](std::int64_t c, std::int64_t r) {
-    return world.sample_direction_of_tangents(tan_x[static_cast<std::size_t>(c)], tan_y[static_cast<std::size_t>(r)]);
-  };
   const bool sky_varies = world.atmosphere.sky != nullptr;  // under the atmosphere, with the line of sight
   const double background = world.sky.background_radiance_W_cm2_sr;
   // The sky under the atmosphere on a coarse grid (every kSkyStep-th
@@ -226,7 +225,7 @@ std::size_t shade_rows(const World& world, std::int64_t lo, std::int64_t hi, std
   };
   const geometry::RayQuery extended{geometry::ray_mask_extended, -1};
   world.caster.cast_grid_tiles(
-      w, hi - lo, local_direction,
+      w, hi - lo, geometry::RayCaster::TangentGrid{tan_x.data(), tan_y.data(), world.observer.body_to_j2000},
       [&](const geometry::GridTile& tile) {
         // The shadow casters near the tile's points on each shaded object
         // (a tile sees one or a few): occultation tests for only those.

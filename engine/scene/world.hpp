@@ -524,10 +524,6 @@ class World {
   const Fidelity& fidelity() const { return view.fidelity; }
   // Direction of sample (c, r) of the full grid, J2000 axes.
   Vec3 sample_direction(double c, double r) const { return observer.body_to_j2000 * view.grid.direction_body(c, r); }
-  // The same from the grid's tan_x(c) and tan_y(r).
-  Vec3 sample_direction_of_tangents(double tan_x, double tan_y) const {
-    return observer.body_to_j2000 * geometry::SampleGrid::direction_of_tangents(tan_x, tan_y);
-  }
   // nullptr if the world holds no object of that name (culled by kind, shape
   // none, no state, or the sensor's parent).
   const WorldObject* find(const std::string& name) const;

@@ -291,10 +291,6 @@ double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point, T
   return row[k] + (u - static_cast<double>(k)) * (row[k + 1] - row[k]);
 }
 
-double SurfaceModel::emission_radiance_interpolated(const SurfacePoint& point) const {
-  return emission_radiance_interpolated(point, [&] { return temperature_K(point); });
-}
-
 void SurfaceModel::emission_radiances(const SurfacePoint* const* points, std::size_t n, bool interpolated,
                                       double* out) const {
   constexpr std::size_t kBatch = 64;
@@ -302,7 +298,12 @@ void SurfaceModel::emission_radiances(const SurfacePoint* const* points, std::si
   double T[kBatch];
   for (std::size_t first = 0; first < n; first += kBatch) {
     const std::size_t m = std::min(kBatch, n - first);
-    for (std::size_t k = 0; k < m; ++k) terms[k] = temperature_term(*points[first + k]);
+    // (only where the emission reads a temperature: a varying surface's parts
+    // without a tabulated radiance, as emission_radiance)
+    for (std::size_t k = 0; k < m; ++k)
+      terms[k] = varying() && parts_[index(points[first + k]->site.part)].self_radiance.empty()
+                     ? temperature_term(*points[first + k])
+                     : TemperatureTerm::constant(0.0);
     temperature_terms_K(terms, m, T);
     for (std::size_t k = 0; k < m; ++k) {
       const auto temperature = [&] { return T[k]; };

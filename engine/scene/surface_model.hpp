@@ -152,15 +152,14 @@ class SurfaceModel {
   bool tabulated() const { return !self_radiance_.empty(); }
 
   // Self-emission eps B(T) (or the tabulated radiance) at the view's
-  // wavelengths added to `out`, its band integral (eq. 48; exact where the
-  // view says), and the same through the L(T) table.
+  // wavelengths added to `out`, and its band integral (eq. 48; exact where
+  // the view says).
   void add_emission(const SurfacePoint& point, std::vector<double>& out) const;
   double emission_radiance(const SurfacePoint& point) const;
-  double emission_radiance_interpolated(const SurfacePoint& point) const;
-  // Either (interpolated or not) at many points, their temperatures taken
-  // together (temperature_terms_K).
+  // The same, or through the L(T) table (interpolated), at many points,
+  // their temperatures taken together (temperature_terms_K).
   void emission_radiances(const SurfacePoint* const* points, std::size_t n, bool interpolated, double* out) const;
-  // At least emission_radiance and emission_radiance_interpolated anywhere
+  // At least emission_radiance(s), interpolated or not, anywhere
   // on the surface (infinity for a tabulated radiance).
   double emission_bound() const { return emission_bound_; }
   // At most emission_radiance anywhere on the surface: its materials at the

@@ -368,8 +368,12 @@ void cast_tile_near_one_object(const ObjectData& od, const std::vector<const Par
     const Mat3 to_part = p.part_to_frame.transpose();
     if (any_mesh)
       for (int i = 0; i < n; ++i) d_part[i] = to_part * d[i];
-    else
-      for (int i = 0; i < n; ++i) d_part[i] = p.part_to_frame.transpose() * d[i];
+    else  // (Eigen's transposed product written out, the same sums in the same order: its
+          // result, stored a component at a time, is not reloaded as a pair)
+      for (int i = 0; i < n; ++i)
+        for (int k = 0; k < 3; ++k)
+          d_part[i][k] = (p.part_to_frame(0, k) * d[i].x() + p.part_to_frame(1, k) * d[i].y()) +
+                         p.part_to_frame(2, k) * d[i].z();
     if (p.geom.kind == ShapeKind::sphere || p.geom.kind == ShapeKind::oblate) {  // (the Earth's tiles: 4 rays at once)
       bool hit[kMax];
       double t[kMax];

@@ -453,7 +453,11 @@ constexpr double kMaxNightDecayRatio = 0.9;
 
 DiurnalLatitudeTable::DiurnalLatitudeTable(const universe::ClimatologyDay& day, const SunPathAngles& sun,
                                            const DiurnalShape& shape, double utc_hours, double equation_of_time_min)
-    : day_(day), sun_(sun), shape_(shape), utc_hours_(utc_hours), equation_of_time_min_(equation_of_time_min) {
+    : day_(day),
+      sun_(sun),
+      shape_(shape),
+      utc_hours_(utc_hours),
+      equation_of_time_h_(equation_of_time_min / 60.0) {
   // Segments between -90, the band centres and 90 deg.
   std::vector<double> edges{-90.0};
   for (double c : day.band_centres_deg())
@@ -463,7 +467,7 @@ DiurnalLatitudeTable::DiurnalLatitudeTable(const universe::ClimatologyDay& day, 
   for (std::size_t s = 0; s + 1 < edges.size(); ++s) {
     const double width = edges[s + 1] - edges[s];
     const auto intervals = std::max<std::int64_t>(3, static_cast<std::int64_t>(std::ceil(width / kTableStep_deg - 1e-9)));
-    segments_.push_back({edges[s], width, intervals, count});
+    segments_.push_back({edges[s], width, intervals, count, static_cast<double>(intervals) / width});
     segment_tops_deg_.push_back(edges[s + 1]);
     count += intervals + 1;
   }
@@ -516,7 +520,7 @@ DiurnalLatitudeTable::Stencil DiurnalLatitudeTable::stencil(double latitude_deg)
   while (s + 1 < segments_.size() && latitude_deg > segment_tops_deg_[s]) ++s;
   segment_built_[s].call([&] { build_segment(s); });
   const Segment& g = segments_[s];
-  const double t = std::clamp((latitude_deg - g.low_deg) / g.width_deg, 0.0, 1.0) * static_cast<double>(g.intervals);
+  const double t = std::clamp((latitude_deg - g.low_deg) * g.intervals_per_deg, 0.0, static_cast<double>(g.intervals));
   const std::int64_t k0 = std::clamp<std::int64_t>(static_cast<std::int64_t>(t) - 1, 0, g.intervals - 3);
   const Node* n = &nodes_[static_cast<std::size_t>(g.first_node + k0)];
   return {n, t - static_cast<double>(k0), n[0].regular && n[1].regular && n[2].regular && n[3].regular};
@@ -524,7 +528,9 @@ DiurnalLatitudeTable::Stencil DiurnalLatitudeTable::stencil(double latitude_deg)
 
 TemperatureTerm DiurnalLatitudeTable::temperature_term(double latitude_deg, double sin_latitude,
                                                       double cos_latitude, double longitude_deg) const {
-  const double local_h = local_solar_time_from_eot_h(utc_hours_, longitude_deg, equation_of_time_min_);
+  // (local_solar_time_from_eot_h with the equation of time in hours made once)
+  require_finite(longitude_deg, "longitude_deg");
+  const double local_h = wrap(utc_hours_ + longitude_deg / 15.0 + equation_of_time_h_, kHoursPerDay);
   const Stencil st = stencil(latitude_deg);
   if (!st.regular) {
     const universe::DailyExtremes x = day_.at(latitude_deg);
@@ -535,7 +541,8 @@ TemperatureTerm DiurnalLatitudeTable::temperature_term(double latitude_deg, doub
   // Lagrange weights of the nodes at 0, 1, 2, 3 for x in [0, 3].
   const double x = st.x;
   const double a = x - 1.0, b = x - 2.0, c = x - 3.0;
-  const double w0 = -a * b * c / 6.0, w1 = x * b * c / 2.0, w2 = -x * a * c / 2.0, w3 = x * a * b / 6.0;
+  constexpr double kSixth = 1.0 / 6.0;
+  const double w0 = -a * b * c * kSixth, w1 = x * b * c * 0.5, w2 = -x * a * c * 0.5, w3 = x * a * b * kSixth;
   const auto at = [&](double Node::*field) {
     return w0 * n[0].*field + w1 * n[1].*field + w2 * n[2].*field + w3 * n[3].*field;
   };

@@ -251,11 +251,12 @@ class DiurnalLatitudeTable {
   struct Segment {
     double low_deg, width_deg;
     std::int64_t intervals, first_node;
+    double intervals_per_deg;  // intervals / width_deg
   };
   universe::ClimatologyDay day_;
   SunPathAngles sun_;
   DiurnalShape shape_;
-  double utc_hours_, equation_of_time_min_;
+  double utc_hours_, equation_of_time_h_;  // (the equation of time in hours)
   std::vector<Segment> segments_;
   std::vector<double> segment_tops_deg_;
   std::uint16_t segment_of_degree_[181] = {};  // by latitude + 90 deg, whole degrees

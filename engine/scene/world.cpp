@@ -350,22 +350,25 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     // A disc below (eq. 7; an area source too while it subtends less than
     // half area_source_solid_angle_sr here): first the sign of cos_i, then
     // whether it can matter here at all.
-    const double omega = constants::pi * src.radius_m * src.radius_m / to_src.squaredNorm();
-    if (!src.area_source || omega < 0.5 * w.view.fidelity.area_source_solid_angle_sr) {
+    const double distance2_m2 = to_src.squaredNorm(), disc_m2 = constants::pi * src.radius_m * src.radius_m;
+    if (!src.area_source || disc_m2 < 0.5 * w.view.fidelity.area_source_solid_angle_sr * distance2_m2) {
       if (!(to_src.dot(n) > 0)) continue;  // (cos_i <= 0 below, but for rounding)
       // Its bound here: dOmega x the BRDF's largest N.L value x its light
       // at any phase, against kNegligibleAtPoint of the point's irradiance
       // so far (the Sun's by day), wavelength by wavelength.
       const LightSpectra& spectra = source.light_spectra();
       const std::vector<double>& bound = spectra.bound;
-      // (and against negligible_W_cm2_sr: the same bound, band-integrated)
-      if (omega * brdf.max_projected_value_per_sr() * spectra.bound_band_W_cm2_sr < negligible_W_cm2_sr) continue;
-      const double scale = omega * brdf.max_projected_value_per_sr() / kNegligibleAtPoint;
+      // (and against negligible_W_cm2_sr: the same bound, band-integrated;
+      // times the squared distance, no division for a light left out)
+      if (disc_m2 * brdf.max_projected_value_per_sr() * spectra.bound_band_W_cm2_sr <
+          negligible_W_cm2_sr * distance2_m2)
+        continue;
+      const double scale = disc_m2 / distance2_m2 * brdf.max_projected_value_per_sr() / kNegligibleAtPoint;
       std::size_t i = 0;
       while (i < bound.size() && scale * bound[i] <= out[i]) ++i;
       if (!bound.empty() && i == bound.size()) continue;
     }
-    const double d = to_src.norm();
+    const double d = to_src.norm(), omega = disc_m2 / distance2_m2;
     if (!(d > src.radius_m)) continue;
     const Vec3 I = to_src / d;
     if (src.area_source && omega > w.view.fidelity.area_source_solid_angle_sr) {

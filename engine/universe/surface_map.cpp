@@ -1,5 +1,6 @@
 #include "universe/surface_map.hpp"
 
+#include <sys/mman.h>
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 #include "core/error.hpp"
 #include "core/read_file.hpp"
@@ -34,9 +36,13 @@ json read_json(const std::string& path) {
 }
 }  // namespace
 
+namespace {
+// The kernel's huge page on x86-64 (2 MiB): a level's block starts on one.
+constexpr std::size_t kHugePageBytes = std::size_t{1} << 21;
+}  // namespace
+
 RasterLevel::~RasterLevel() {
-  if (!rows_) return;
-  for (std::int64_t i = 0; i < height_; ++i) delete[] rows_[static_cast<std::size_t>(i)].load();
+  if (mapping_) ::munmap(mapping_, mapped_bytes_);
 }
 
 std::unique_ptr<RasterLevel> RasterLevel::load(const std::string& sidecar) {
@@ -84,18 +90,59 @@ std::unique_ptr<RasterLevel> RasterLevel::load(const std::string& sidecar) {
     r->offsets_.resize(static_cast<std::size_t>(r->height_ + 1));
     data.read(reinterpret_cast<char*>(r->offsets_.data()), static_cast<std::streamsize>(8 * r->offsets_.size()));
     if (!data || r->offsets_.back() != size) corrupt(r->data_path_, "truncated row table");
+    if (r->offsets_.front() < 16 + 8 * r->offsets_.size() ||
+        !std::is_sorted(r->offsets_.begin(), r->offsets_.end()))
+      corrupt(r->data_path_, "row offsets out of order");
   } else if (size != static_cast<std::uint64_t>(r->width_ * r->height_)) {
     corrupt(r->data_path_, "size is not width x height bytes");
   }
+  // Address space for every cell (pages are committed as rows are written:
+  // MAP_NORESERVE), asked to be backed by huge pages.
+  const std::size_t bytes = static_cast<std::size_t>(r->width_) * static_cast<std::size_t>(r->height_);
+  r->mapped_bytes_ = bytes + kHugePageBytes;
+  void* m = ::mmap(nullptr, r->mapped_bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+  if (m == MAP_FAILED)
+    throw Error(Status::limit_exceeded, sidecar + ": width x height (" + std::to_string(bytes) +
+                                            " bytes) exceeds the address space the system grants");
+  r->mapping_ = m;
+  const auto start = (reinterpret_cast<std::uintptr_t>(m) + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
+  r->cells_ = reinterpret_cast<std::uint8_t*>(start);
+#ifdef MADV_HUGEPAGE
+  ::madvise(r->cells_, (bytes + kHugePageBytes - 1) & ~(kHugePageBytes - 1), MADV_HUGEPAGE);  // (advice only)
+#endif
   r->rows_ = std::make_unique<std::atomic<const std::uint8_t*>[]>(static_cast<std::size_t>(r->height_));
-  for (std::int64_t i = 0; i < r->height_; ++i) r->rows_[static_cast<std::size_t>(i)].store(nullptr);
+  r->claimed_ = std::make_unique<std::atomic<bool>[]>(static_cast<std::size_t>(r->height_));
+  for (std::int64_t i = 0; i < r->height_; ++i) {
+    r->rows_[static_cast<std::size_t>(i)].store(nullptr);
+    r->claimed_[static_cast<std::size_t>(i)].store(false);
+  }
   return r;
 }
 
 const std::uint8_t* RasterLevel::decode_row(std::int64_t i) const {
-  std::atomic<const std::uint8_t*>& slot = rows_[static_cast<std::size_t>(i)];
+  const auto k = static_cast<std::size_t>(i);
+  std::uint8_t* into = cells_ + k * static_cast<std::size_t>(width_);
+  // One thread decodes a row; the others wait for it (a failed decode
+  // releases its claim).
+  for (;;) {
+    if (const std::uint8_t* ready = rows_[k].load(std::memory_order_acquire)) return ready;
+    if (!claimed_[k].exchange(true, std::memory_order_acq_rel)) {
+      try {
+        read_row(i, into);
+      } catch (...) {
+        claimed_[k].store(false, std::memory_order_release);
+        throw;
+      }
+      rows_[k].store(into, std::memory_order_release);
+      return into;
+    }
+    std::this_thread::yield();
+  }
+}
+
+void RasterLevel::read_row(std::int64_t i, std::uint8_t* into) const {
   const auto width = static_cast<std::size_t>(width_);
-  std::unique_ptr<std::uint8_t[]> decoded(new std::uint8_t[width]());
+  std::fill_n(into, width, std::uint8_t{0});  // (cells a short file leaves out read 0)
   std::ifstream f(data_path_, std::ios::binary);
   if (rle_) {
     const auto begin = offsets_[static_cast<std::size_t>(i)], end = offsets_[static_cast<std::size_t>(i + 1)];
@@ -105,16 +152,13 @@ const std::uint8_t* RasterLevel::decode_row(std::int64_t i) const {
     std::size_t x = 0;
     for (std::size_t k = 0; k + 2 < runs.size() && x < width; k += 3) {
       const std::size_t n = std::min<std::size_t>(runs[k + 1] | (runs[k + 2] << 8), width - x);
-      std::fill_n(decoded.get() + x, n, runs[k]);
+      std::fill_n(into + x, n, runs[k]);
       x += n;
     }
   } else {
     f.seekg(static_cast<std::streamoff>(i * width_));
-    f.read(reinterpret_cast<char*>(decoded.get()), static_cast<std::streamsize>(width_));
+    f.read(reinterpret_cast<char*>(into), static_cast<std::streamsize>(width_));
   }
-  const std::uint8_t* expected = nullptr;
-  if (slot.compare_exchange_strong(expected, decoded.get(), std::memory_order_acq_rel)) return decoded.release();
-  return expected;  // another thread decoded it first
 }
 
 void RasterLevel::cell(double latitude_deg, double longitude_deg, std::int64_t& i, std::int64_t& j) const {

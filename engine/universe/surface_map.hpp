@@ -4,7 +4,10 @@
 // pyramid of levels sharing one registration (cell: rows north to south from
 // lat_north, columns east from lon_west); the level used is the coarsest whose
 // cell is not larger than the ground sample distance. Rows of the fine
-// levels are decoded on first use (thread-safe).
+// levels are decoded on first use (thread-safe) into one block of address
+// space per level, backed by the kernel's huge pages where it has them: a
+// frame's samples read scattered rows, and 4 KiB pages cost a page walk per
+// sample (a nested one in a virtual machine).
 #pragma once
 #include <atomic>
 #include <cstdint>
@@ -41,6 +44,8 @@ class RasterLevel {
     return decode_row(i);
   }
   const std::uint8_t* decode_row(std::int64_t i) const;
+  // Reads row i into its place in cells_.
+  void read_row(std::int64_t i, std::uint8_t* into) const;
   // The row and column of the cell holding (lat, lon).
   void cell(double latitude_deg, double longitude_deg, std::int64_t& i, std::int64_t& j) const;
   std::string data_path_;
@@ -49,7 +54,13 @@ class RasterLevel {
   double lon_west_deg_ = -180, lat_north_deg_ = 90, cell_deg_ = 1;
   double value_scale_ = 1, value_offset_ = 0;
   std::vector<std::uint64_t> offsets_;  // rle: height + 1 row offsets
-  mutable std::unique_ptr<std::atomic<const std::uint8_t*>[]> rows_;  // new[]'d when decoded
+  // width x height cells, reserved at load, pages committed as rows are decoded.
+  void* mapping_ = nullptr;
+  std::size_t mapped_bytes_ = 0;
+  std::uint8_t* cells_ = nullptr;  // (mapping_ rounded up to a huge page)
+  // Row i's cells once decoded (null before); claimed_[i]: a thread decodes it.
+  mutable std::unique_ptr<std::atomic<const std::uint8_t*>[]> rows_;
+  mutable std::unique_ptr<std::atomic<bool>[]> claimed_;
 };
 
 class SurfaceMap {

@@ -84,6 +84,8 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
     thermal_.subsolar = false;
     geography_ = Geography{};
   }
+  mask_on_cover_cells_ = geography_.land_cover && geography_.land_mask &&
+                         geography_.land_cover->same_grid(*geography_.land_mask);
   if (self_radiance_.empty()) {
     for (const PartSurface& s : parts_) reflects_ = reflects_ || (!s.emits_only && s.spectrum->reflects());
     for (const auto* s : geography_.class_spectra) reflects_ = reflects_ || (s && s->reflects());
@@ -188,18 +190,27 @@ SurfacePoint SurfaceModel::located(const SurfaceSite& site) const {
 
 void SurfaceModel::prefetch_maps(const SurfacePoint& point) const {
   const Geography& g = geography_;
-  for (const universe::RasterLevel* map : {g.land_cover, g.land_brightness, g.albedo})
+  const bool mask = g.climatology && g.land_mask;  // (the land mask: temperature_term)
+  if (g.land_cover) {
+    const universe::RasterLevel::Cell cell = g.land_cover->cell_of(point.latitude_deg, point.longitude_deg);
+    g.land_cover->prefetch(cell);
+    if (mask && mask_on_cover_cells_) g.land_mask->prefetch(cell);
+  }
+  for (const universe::RasterLevel* map : {g.land_brightness, g.albedo, mask && !mask_on_cover_cells_ ? g.land_mask : nullptr})
     if (map) map->prefetch(point.latitude_deg, point.longitude_deg);
-  if (g.climatology && g.land_mask) g.land_mask->prefetch(point.latitude_deg, point.longitude_deg);  // (temperature_K)
 }
 
 void SurfaceModel::read_maps(SurfacePoint& point) const {
   const Geography& g = geography_;
+  const bool mask = g.climatology && g.land_mask;
   if (g.clouds)  // (bilinear: the map's 0.7-deg cells are wider than a GEO view's samples)
     point.cloud_fraction = std::clamp(g.clouds->interpolated(point.latitude_deg, point.longitude_deg), 0.0, 1.0);
+  if (mask && !mask_on_cover_cells_) point.on_land = g.land_mask->at(point.latitude_deg, point.longitude_deg) != 0;
   if (g.land_cover) {
     constexpr std::uint8_t water = 17;  // IGBP water bodies (data/earth/README.md)
-    const std::uint8_t c = g.land_cover->at(point.latitude_deg, point.longitude_deg);
+    const universe::RasterLevel::Cell cell = g.land_cover->cell_of(point.latitude_deg, point.longitude_deg);
+    if (mask && mask_on_cover_cells_) point.on_land = g.land_mask->at(cell) != 0;
+    const std::uint8_t c = g.land_cover->at(cell);
     if (c < g.class_spectra.size() && g.class_spectra[c]) point.spectrum = g.class_spectra[c];
     if (g.land_brightness && c != water && point.spectrum->max_srf() > 0) {
       const universe::RasterLevel& b = *g.land_brightness;
@@ -220,8 +231,7 @@ TemperatureTerm SurfaceModel::temperature_term(const SurfacePoint& point) const 
   const Geography& g = geography_;
   if (!g.climatology || !g.land_mask)
     return TemperatureTerm::constant(thermal_.at(point.site.normal_body, part.temperature_K));
-  const auto kind = g.land_mask->at(point.latitude_deg, point.longitude_deg) ? universe::SurfaceKind::land
-                                                                             : universe::SurfaceKind::water;
+  const auto kind = point.on_land ? universe::SurfaceKind::land : universe::SurfaceKind::water;  // (read_maps)
   return g.climatology_now.latitude_table(kind).temperature_term(point.latitude_deg, point.sin_latitude,
                                                                  point.cos_latitude, point.longitude_deg);
 }

@@ -173,17 +173,9 @@ void RasterLevel::cell(double latitude_deg, double longitude_deg, std::int64_t& 
   j = std::clamp<std::int64_t>(j, 0, width_ - 1);
 }
 
-std::uint8_t RasterLevel::at(double latitude_deg, double longitude_deg) const {
-  std::int64_t i = 0, j = 0;
-  cell(latitude_deg, longitude_deg, i, j);
-  return row(i)[j];
-}
-
-void RasterLevel::prefetch(double latitude_deg, double longitude_deg) const {
-  std::int64_t i = 0, j = 0;
-  cell(latitude_deg, longitude_deg, i, j);
-  if (const std::uint8_t* r = rows_[static_cast<std::size_t>(i)].load(std::memory_order_acquire))
-    __builtin_prefetch(r + j);
+bool RasterLevel::same_grid(const RasterLevel& other) const {
+  return width_ == other.width_ && height_ == other.height_ && cells_per_degree_ == other.cells_per_degree_ &&
+         lon_west_deg_ == other.lon_west_deg_ && lat_north_deg_ == other.lat_north_deg_ && cell_deg_ == other.cell_deg_;
 }
 
 double RasterLevel::interpolated(double latitude_deg, double longitude_deg) const {

@@ -23,15 +23,32 @@ class RasterLevel {
   // Reads the JSON sidecar (throws io / corrupt_file naming the file and field).
   static std::unique_ptr<RasterLevel> load(const std::string& sidecar_path);
   ~RasterLevel();
-  // The cell holding (lat, lon) (deg; longitude any value, wrapped).
-  std::uint8_t at(double latitude_deg, double longitude_deg) const;
+  // The row and column of the cell holding (lat, lon) (deg; longitude any
+  // value, wrapped), for reading several levels of one grid at one point.
+  struct Cell {
+    std::int64_t row = 0, column = 0;
+  };
+  Cell cell_of(double latitude_deg, double longitude_deg) const {
+    Cell c;
+    cell(latitude_deg, longitude_deg, c.row, c.column);
+    return c;
+  }
+  // True if `other` has this level's cells (size and registration).
+  bool same_grid(const RasterLevel& other) const;
+  // The cell holding (lat, lon).
+  std::uint8_t at(double latitude_deg, double longitude_deg) const { return at(cell_of(latitude_deg, longitude_deg)); }
+  std::uint8_t at(Cell c) const { return row(c.row)[c.column]; }
   // The physical value (value_offset + value_scale x cell) interpolated
   // bilinearly between the four cell centres around (lat, lon) (longitude
   // wrapped on a global map, latitude held at the first and last rows).
   double interpolated(double latitude_deg, double longitude_deg) const;
   // Asks the memory for the cell `at` would read (where its row is decoded):
   // a caller about to read many scattered cells fetches them together.
-  void prefetch(double latitude_deg, double longitude_deg) const;
+  void prefetch(double latitude_deg, double longitude_deg) const { prefetch(cell_of(latitude_deg, longitude_deg)); }
+  void prefetch(Cell c) const {
+    if (const std::uint8_t* r = rows_[static_cast<std::size_t>(c.row)].load(std::memory_order_acquire))
+      __builtin_prefetch(r + c.column);
+  }
   double cell_deg() const { return cell_deg_; }
   double value_scale() const { return value_scale_; }
   double value_offset() const { return value_offset_; }

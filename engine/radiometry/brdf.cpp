@@ -7,7 +7,6 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
-#include "core/vector_math.hpp"
 #include "radiometry/disk_photometry.hpp"
 
 namespace eoir::radiometry {
@@ -268,22 +267,14 @@ double Brdf::value(double cos_incidence, double cos_exitance, double cos_light_o
     return 2.0 * kInvPi * lunar_surface_phase_of_cos(cos_light_observer) /
            (cos_incidence + cos_exitance);
   double brdf_per_sr = diffuse_per_sr_;
-  // (the lobes' exponentials together, by vector maths: at most two lobes)
-  double exponent[kMaxLobes], exponential[kMaxLobes];
-  const Lobe* taken[kMaxLobes];
-  std::size_t m = 0;
   for (const Lobe& lobe : lobes_) {
     // Cosine to the lobe axis: L.V (back to the source) or M.V (mirror).
     const double cos_to_axis =
         lobe.backscatter ? cos_light_observer : 2.0 * cos_incidence * cos_exitance - cos_light_observer;
-    exponent[m] = lobe.kappa * (std::min(cos_to_axis, 1.0) - 1.0);
-    if (exponent[m] < lobe.negligible_exponent) continue;  // (also skips slow subnormal exp())
-    taken[m++] = &lobe;
+    const double exponent = lobe.kappa * (std::min(cos_to_axis, 1.0) - 1.0);
+    if (exponent < lobe.negligible_exponent) continue;  // (also skips slow subnormal exp())
+    brdf_per_sr += lobe.weight * std::exp(exponent) / lobe.normalization_H(cos_incidence);
   }
-  if (m == 0) return brdf_per_sr;
-  vector_math::exp(exponent, exponential, m);
-  for (std::size_t k = 0; k < m; ++k)
-    brdf_per_sr += taken[k]->weight * exponential[k] / taken[k]->normalization_H(cos_incidence);
   return brdf_per_sr;
 }
 

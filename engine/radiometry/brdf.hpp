@@ -46,7 +46,6 @@
 #pragma once
 #include <Eigen/Core>
 #include <array>
-#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -117,7 +116,6 @@ class Brdf {
   double diffuse_per_sr_ = 0.0;  // k0/pi plus flat lobes
   double max_projected_value_per_sr_ = 0.0;
   std::vector<Lobe> lobes_;      // the non-flat lobes with weight > 0
-  static constexpr std::size_t kMaxLobes = 2;  // the specular and the backscatter lobe
 };
 
 }  // namespace eoir::radiometry

@@ -73,6 +73,9 @@ std::unique_ptr<RasterLevel> RasterLevel::load(const std::string& sidecar) {
   }
   if (r->width_ <= 0 || r->height_ <= 0 || r->width_ > 1000000 || r->height_ > 1000000 || !(r->cell_deg_ > 0))
     corrupt(sidecar, "width, height and cell_deg must be positive");
+  // Integer cells per degree where the map has them (exact registration).
+  r->per_degree_ = r->cells_per_degree_ > 0 ? static_cast<double>(r->cells_per_degree_) : 1.0 / r->cell_deg_;
+  r->global_ = std::fabs(static_cast<double>(r->width_) / r->per_degree_ - 360.0) < 1e-9;
   struct stat st {};  // rows are read on demand: the raster must be a regular file
   if (::stat(r->data_path_.c_str(), &st) == 0) require_regular_file(r->data_path_, st.st_mode);
   std::ifstream data(r->data_path_, std::ios::binary);
@@ -162,14 +165,14 @@ void RasterLevel::read_row(std::int64_t i, std::uint8_t* into) const {
 }
 
 void RasterLevel::cell(double latitude_deg, double longitude_deg, std::int64_t& i, std::int64_t& j) const {
-  // Integer cells per degree where the map has them (exact registration).
-  const double per_degree = cells_per_degree_ > 0 ? static_cast<double>(cells_per_degree_) : 1.0 / cell_deg_;
-  i = floor_index((lat_north_deg_ - latitude_deg) * per_degree);
+  // (Truncation toward zero, not floor: the index is clamped to [0, n) and
+  // the two differ only below 0; the wrapped longitude is never negative.)
+  i = static_cast<std::int64_t>((lat_north_deg_ - latitude_deg) * per_degree_);
   i = std::clamp<std::int64_t>(i, 0, height_ - 1);
   double lon = longitude_deg - lon_west_deg_;  // wrapped into [0, 360): fmod only off [-360, 360)
   if (lon < -360.0 || lon >= 360.0) lon = std::fmod(lon, 360.0);
   if (lon < 0) lon += 360.0;
-  j = floor_index(lon * per_degree);
+  j = static_cast<std::int64_t>(lon * per_degree_);
   j = std::clamp<std::int64_t>(j, 0, width_ - 1);
 }
 
@@ -179,8 +182,8 @@ bool RasterLevel::same_grid(const RasterLevel& other) const {
 }
 
 double RasterLevel::interpolated(double latitude_deg, double longitude_deg) const {
-  const double per_degree = cells_per_degree_ > 0 ? static_cast<double>(cells_per_degree_) : 1.0 / cell_deg_;
-  // Position in cells from the centre of cell (0, 0).
+  const double per_degree = per_degree_;
+  // Position in cells from the centre of cell (0, 0): x in [-0.5, width - 0.5).
   const double last_row = static_cast<double>(height_ - 1);
   const double y = std::clamp((lat_north_deg_ - latitude_deg) * per_degree - 0.5, 0.0, last_row);
   double lon = longitude_deg - lon_west_deg_;
@@ -189,9 +192,8 @@ double RasterLevel::interpolated(double latitude_deg, double longitude_deg) cons
   const double x = lon * per_degree - 0.5;
   const auto i0 = std::min(static_cast<std::int64_t>(y), height_ - 1), i1 = std::min(i0 + 1, height_ - 1);
   const auto j = floor_index(x);
-  const bool global = std::fabs(static_cast<double>(width_) / per_degree - 360.0) < 1e-9;
-  const auto column = [&](std::int64_t k) {
-    if (global) return ((k % width_) + width_) % width_;
+  const auto column = [&](std::int64_t k) {  // (k in [-1, width])
+    if (global_) return k < 0 ? k + width_ : k >= width_ ? k - width_ : k;
     return std::clamp<std::int64_t>(k, 0, width_ - 1);
   };
   const std::int64_t j0 = column(j), j1 = column(j + 1);

@@ -69,6 +69,8 @@ class RasterLevel {
   bool rle_ = false;
   std::int64_t width_ = 0, height_ = 0, cells_per_degree_ = 0;
   double lon_west_deg_ = -180, lat_north_deg_ = 90, cell_deg_ = 1;
+  double per_degree_ = 1;  // cells per degree: cells_per_degree_ where given, else 1 / cell_deg_
+  bool global_ = false;    // the columns go round the globe (interpolation wraps)
   double value_scale_ = 1, value_offset_ = 0;
   std::vector<std::uint64_t> offsets_;  // rle: height + 1 row offsets
   // width x height cells, reserved at load, pages committed as rows are decoded.

@@ -138,6 +138,7 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
     const double max_srf = *std::max_element(s->srf().begin(), s->srf().end());
     srf_bound_ = std::max(srf_bound_, max_srf);
     reflection_bound_per_sr_ = std::max(reflection_bound_per_sr_, max_srf * s->brdf().max_projected_value_per_sr());
+    brdf_bound_per_sr_ = std::max(brdf_bound_per_sr_, s->brdf().max_projected_value_per_sr());
   };
   for (const PartSurface& s : parts_) bound(s.spectrum);
   for (const auto* s : geography_.class_spectra) bound(s);
@@ -170,6 +171,7 @@ SurfaceModel::SurfaceModel(std::vector<PartSurface> parts, ThermalField thermal,
     emission_bound_ = std::max(emission_bound_, L);
     emission_floor_ = std::min(emission_floor_, L);
     srf_bound_ = std::max(srf_bound_, cloud->max_srf());
+    brdf_bound_per_sr_ = std::max(brdf_bound_per_sr_, cloud->brdf().max_projected_value_per_sr());
     reflection_bound_per_sr_ =
         std::max(reflection_bound_per_sr_, cloud->max_srf() * cloud->brdf().max_projected_value_per_sr());
   }

@@ -171,6 +171,8 @@ class SurfaceModel {
   // materials at any wavelength and geometry, and at least SRF(lambda) (0
   // if none reflects).
   double reflection_bound_per_sr() const { return reflection_bound_per_sr_; }
+  // The largest N.L value of any of its BRDFs (1/sr; Brdf::max_projected_value_per_sr).
+  double brdf_bound_per_sr() const { return brdf_bound_per_sr_; }
   double srf_bound() const { return srf_bound_; }
   // plain(): the effective radiance of a whole part.
   double part_radiance(std::int32_t part) const { return part_radiance_[index(part)]; }
@@ -194,6 +196,7 @@ class SurfaceModel {
   std::vector<double> part_radiance_;
   double table_T0_ = 0, table_dT_ = 0;
   double emission_bound_ = 0, emission_floor_ = 0, reflection_bound_per_sr_ = 0, srf_bound_ = 0;
+  double brdf_bound_per_sr_ = 0;
   double cloud_emission_ = 0;  // the cloud top's band radiance at its (one) temperature
   std::vector<std::vector<double>> table_;  // per part, L at T0 + k dT
 };

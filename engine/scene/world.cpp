@@ -287,6 +287,8 @@ void WorldObject::shadow_casters_near(const Vec3& centre_frame_m, double radius_
     for (const geometry::Occulter& o : occulters_[j])
       if (can_shade(centre_frame_m, region_m, light, light_radius, inflated(o))) out.occulters[j].push_back(o);
   }
+  out.centre_frame_m = centre_frame_m;
+  out.radius_m = radius_m;
   out.part_shadows.clear();
   for (const WorldObject* o : part_shadows_)
     if (can_shade(centre_frame_m, region_m, w.sun.position_m, w.sun.radius_m,
@@ -296,7 +298,8 @@ void WorldObject::shadow_casters_near(const Vec3& centre_frame_m, double radius_
 
 void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const Vec3& toward,
                                            const radiometry::Brdf& brdf, bool sun_only, std::vector<double>& out,
-                                           const ShadowCasters* near, double negligible_W_cm2_sr) const {
+                                           const ShadowCasters* near, double negligible_W_cm2_sr,
+                                           const char* lights_off) const {
   const World& w = *world_;
   const std::size_t count = out.size();
   // The Sun (eq. 6): E = L_tab dOmega_sun, times the visible fraction of its disc.
@@ -344,7 +347,7 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
   // Every other object: its disc with its phase law (eq. 7) or its tessellation (eq. 8).
   for (std::size_t k = 0; k < w.lights.size(); ++k) {
     const ObjectLight& src = w.lights[k];
-    if (src.object == id || negligible_light_[k]) continue;
+    if (src.object == id || negligible_light_[k] || (lights_off && lights_off[k])) continue;
     const Vec3 to_src = src.position_m - p;
     const WorldObject& source = *w.objects[static_cast<std::size_t>(src.object)];
     // A disc below (eq. 7; an area source too while it subtends less than
@@ -396,6 +399,26 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     }
     const double phase = source.disk_photometry.phase(radiometry::DiscView{src.to_sun, -I, source.placed.body_to_frame});
     for (std::size_t i = 0; i < count; ++i) out[i] += g * (spectra.reflected[i] * phase + spectra.emitted[i]);
+  }
+}
+
+void WorldObject::lights_negligible_in(const ShadowCasters& near, double negligible_W_cm2_sr,
+                                       std::vector<char>& out) const {
+  const World& w = *world_;
+  out.assign(w.lights.size(), 0);
+  // add_reflected_irradiance's first bound of a disc at every point of the
+  // region (raised by at most the layers' height): the least distance, the
+  // largest N.L value of any of its BRDFs.
+  const double reach_m = near.radius_m + surface->layer_height_m();
+  for (std::size_t k = 0; k < w.lights.size(); ++k) {
+    const ObjectLight& src = w.lights[k];
+    if (src.object == id || negligible_light_[k]) continue;
+    const double d = (src.position_m - near.centre_frame_m).norm() - reach_m;
+    if (!(d > src.radius_m)) continue;
+    const double disc_m2 = constants::pi * src.radius_m * src.radius_m, least2_m2 = d * d;
+    if (src.area_source && !(disc_m2 < 0.5 * w.view.fidelity.area_source_solid_angle_sr * least2_m2)) continue;
+    const LightSpectra& spectra = w.objects[static_cast<std::size_t>(src.object)]->light_spectra();
+    out[k] = disc_m2 * surface->brdf_bound_per_sr() * spectra.bound_band_W_cm2_sr < negligible_W_cm2_sr * least2_m2;
   }
 }
 
@@ -558,7 +581,7 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
 }
 
 double WorldObject::reflected_radiance(const SurfacePoint& point, const ShadowCasters* near, bool& emits,
-                                       double emitted_W_cm2_sr) const {
+                                       double emitted_W_cm2_sr, const char* lights_off) const {
   double reflected = 0;
   if (surface->reflects(point)) {
     // The eq. 7 sources whose light here cannot reach kNegligible / (the
@@ -576,7 +599,7 @@ double WorldObject::reflected_radiance(const SurfacePoint& point, const ShadowCa
     surface->reflect(
         point,
         [&](const radiometry::Brdf& brdf, double height_m, std::vector<double>& into) {
-          add_reflected_irradiance(p + height_m * n, n, toward, brdf, false, into, near, negligible);
+          add_reflected_irradiance(p + height_m * n, n, toward, brdf, false, into, near, negligible, lights_off);
         },
         L, E);
     reflected = view().integrate(L);
@@ -600,9 +623,23 @@ void WorldObject::effective_radiances(const SurfacePoint* const* points, std::si
   // (their temperatures together)
   if (emission_first_) {
     surface->emission_radiances(points, n, interpolated, out);
+    // The lights that cannot matter at any of the points (their least
+    // threshold, reflected_radiance's, over the region they lie in).
+    thread_local std::vector<char> off;
+    const char* lights_off = nullptr;
+    if (near && !world_->lights.empty() && surface->reflects()) {
+      double least = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < n && least > 0; ++k)
+        if (surface->reflects(*points[k]))
+          least = std::min(least, out[k] > 0 ? out[k] / surface->srf_bound(*points[k]) : 0.0);
+      if (least > 0 && std::isfinite(least)) {
+        lights_negligible_in(*near, kNegligible / static_cast<double>(world_->lights.size()) * least, off);
+        lights_off = off.data();
+      }
+    }
     for (std::size_t k = 0; k < n; ++k) {
       bool emits = true;
-      const double reflected = reflected_radiance(*points[k], near, emits, out[k]);
+      const double reflected = reflected_radiance(*points[k], near, emits, out[k], lights_off);
       out[k] = emits ? out[k] + reflected + path_radiance_W_cm2_sr_ : reflected + path_radiance_W_cm2_sr_;
     }
     return;

@@ -294,6 +294,9 @@ class WorldObject;
 struct ShadowCasters {
   std::vector<std::vector<geometry::Occulter>> occulters;
   std::vector<const WorldObject*> part_shadows;
+  // The region they were found for (observer frame, m).
+  Vec3 centre_frame_m = Vec3::Zero();
+  double radius_m = 0.0;
 };
 
 class WorldObject {
@@ -443,7 +446,10 @@ class WorldObject {
   // emitted_W_cm2_sr: the point's emission if known (else 0), against which
   // eq. 7 sources that cannot matter are left out.
   double reflected_radiance(const SurfacePoint& point, const ShadowCasters* near, bool& emits,
-                            double emitted_W_cm2_sr) const;
+                            double emitted_W_cm2_sr, const char* lights_off = nullptr) const;
+  // Per lights[k]: 1 where its eq. 7 light cannot reach the threshold
+  // negligible_W_cm2_sr anywhere in `near`'s region (out: lights.size() flags).
+  void lights_negligible_in(const ShadowCasters& near, double negligible_W_cm2_sr, std::vector<char>& out) const;
   struct AreaSourcePatch {
     Vec3 direction;              // from the receiver toward the patch, observer frame
     double solid_angle_sr = 0;   // projected solid angle at the receiver
@@ -474,7 +480,8 @@ class WorldObject {
   // Adds sum_i E_i (I_i . N) BRDF(I_i, N, O) at a point (eq. 4's bracket).
   void add_reflected_irradiance(const Vec3& point_frame, const Vec3& normal_frame, const Vec3& toward,
                                 const radiometry::Brdf& brdf, bool sun_only, std::vector<double>& out,
-                                const ShadowCasters* near = nullptr, double negligible_W_cm2_sr = 0.0) const;
+                                const ShadowCasters* near = nullptr, double negligible_W_cm2_sr = 0.0,
+                                const char* lights_off = nullptr) const;
   const World* world_ = nullptr;
   std::unique_ptr<radiometry::SpectralView> seen_through_;  // the atmosphere's T_out, if its path crosses air
   std::vector<double> sun_transmittance_;  // eq. 9's T_in of the Sun's light at the centre; empty: 1

@@ -370,6 +370,10 @@ class WorldObject {
   // of centre_frame_m (observer frame), or of a reflecting layer above it,
   // into `out`.
   void shadow_casters_near(const Vec3& centre_frame_m, double radius_m, ShadowCasters& out) const;
+  // Per lights[k]: 1 where its eq. 7 light, reflected by any of the
+  // surface's BRDFs, cannot reach negligible_W_cm2_sr anywhere in `near`'s
+  // region (its layers' height included; out: lights.size() flags).
+  void lights_negligible_in(const ShadowCasters& near, double negligible_W_cm2_sr, std::vector<char>& out) const;
   // radiance_at shades each sample's own point (not coarse mode's patches).
   bool shades_each_sample() const;
   // The point and normal at which that radiance is evaluated (the patch
@@ -447,9 +451,6 @@ class WorldObject {
   // eq. 7 sources that cannot matter are left out.
   double reflected_radiance(const SurfacePoint& point, const ShadowCasters* near, bool& emits,
                             double emitted_W_cm2_sr, const char* lights_off = nullptr) const;
-  // Per lights[k]: 1 where its eq. 7 light cannot reach the threshold
-  // negligible_W_cm2_sr anywhere in `near`'s region (out: lights.size() flags).
-  void lights_negligible_in(const ShadowCasters& near, double negligible_W_cm2_sr, std::vector<char>& out) const;
   struct AreaSourcePatch {
     Vec3 direction;              // from the receiver toward the patch, observer frame
     double solid_angle_sr = 0;   // projected solid angle at the receiver

@@ -114,3 +114,90 @@ TEST(ShadowCasters, FarTilesKeepNoCasterNearOnesKeepTheShade) {
   EXPECT_EQ(std::count_if(near_shade.occulters[0].begin(), near_shade.occulters[0].end(), is_shade), 1);
   EXPECT_EQ(std::count_if(far_away.occulters[0].begin(), far_away.occulters[0].end(), is_shade), 0);
 }
+
+namespace {
+// The Earth in 8-12 um from GEO, bitmap mode (its emission first: reflected
+// sunlight cannot make it negligible), and "Lamp", a sphere of radius 20 m
+// at 300 K 10 km above the sub-observer point: its eq. 7 light matters
+// within some 300 km of the point below it (kNegligible of the emission
+// there; 1e-8 of it 100 km away) and nowhere far from it.
+std::unique_ptr<eoir::Engine> lamp_scene() {
+  auto e = eoir_test::geo_host_engine("2010-05-05T12:00:00Z");
+  for (const char* p : {"horizontal_pixels", "vertical_pixels"}) e->set_property("Sensor", p, Value(std::int64_t{64}));
+  for (const char* p : {"horizontal_fov_deg", "vertical_fov_deg"}) e->set_property("Sensor", p, Value(24.0));
+  e->set_property("Sensor", "band_low_um", Value(8.0));
+  e->set_property("Sensor", "band_high_um", Value(12.0));
+  e->set_property("Sensor", "scene_mode", Value(std::string("bitmap")));
+  e->set_property("Sensor", "noise_enabled", Value(false));
+  e->set_property("Sensor", "saturation_enabled", Value(false));
+  const double look[4] = {std::sqrt(0.5), 0, -std::sqrt(0.5), 0}, zero[3] = {0, 0, 0}, identity[4] = {1, 0, 0, 0};
+  e->push_state("Sensor", e->time(), 0, zero, zero, look);
+  const double lamp_m[3] = {6378.137e3 + 10e3, 0, 0};  // Earth-centred, on the host's line
+  e->add_object(ObjectKind::satellite, "Lamp");
+  e->set_property("Lamp", "shape", Value(std::string("sphere")));
+  e->set_property("Lamp", "dimensions_m", Value(std::vector<double>{20.0}));
+  e->set_property("Lamp", "temperature_K", Value(300.0));
+  e->push_state("Lamp", e->time(), 0, lamp_m, zero, identity);
+  return e;
+}
+}  // namespace
+
+// The frame leaves out, for a tile's run of Earth samples, the lights whose
+// light cannot reach the run's least threshold anywhere in the tile's region
+// (WorldObject::lights_negligible_in, scene_generator's shade_rows): every
+// sample shades as with each light tested at its own point (radiance_at, no
+// tile; to the rounding of the vector maths, as above; a light wrongly left
+// out below the lamp would change a sample by 1e-10 or more), and the test
+// does leave the lamp out far from it and keeps it near it.
+TEST(ShadowCasters, LightsLeftOutForATileAreNegligibleAtEachOfItsPoints) {
+  auto e = lamp_scene();
+  const eoir::Frame& f = e->render("Sensor");
+  const eoir::scene::World& w = *f.world;
+  const eoir::scene::WorldObject& earth = object_named(w, "Earth");
+  const eoir::scene::WorldObject& lamp = object_named(w, "Lamp");
+  std::size_t light = w.lights.size();
+  for (std::size_t k = 0; k < w.lights.size(); ++k)
+    if (w.lights[k].object == lamp.id) light = k;
+  ASSERT_LT(light, w.lights.size());
+  const auto& grid = w.grid();
+  const std::int64_t width = grid.width(), height = grid.height();
+  const auto& hits = f.scene.hits;
+  const auto& radiance = f.scene.image.radiance_W_cm2_sr;
+  const Vec3 below = earth.placed.position_m + 6378.137e3 * (lamp.placed.position_m - earth.placed.position_m).normalized();
+  std::int64_t compared = 0, near_lamp = 0;
+  for (std::int64_t r = 1; r + 1 < height; ++r)
+    for (std::int64_t c = 1; c + 1 < width; ++c) {
+      const auto i = static_cast<std::size_t>(r * width + c);
+      if (hits[i].object_id != earth.id) continue;
+      bool edge = false;
+      for (const std::size_t j : {i - 1, i + 1, i - static_cast<std::size_t>(width), i + static_cast<std::size_t>(width)})
+        edge = edge || hits[j].object_id != hits[i].object_id || hits[j].part != hits[i].part;
+      if (edge) continue;
+      const Vec3 d = w.sample_direction(static_cast<double>(c), static_cast<double>(r));
+      const eoir::geometry::Hit hit = w.caster.cast(d);
+      ASSERT_EQ(hit.object_id, earth.id);
+      const Vec3 point_body = earth.seen.body_to_frame.transpose() * (hit.range_m * d - earth.seen.position_m);
+      const double each = earth.radiance_at(hit.part, point_body, earth.direction_to_body(hit.normal_frame), hit.facet);
+      EXPECT_NEAR(radiance[i], each, 1e-12 * each) << "sample (" << c << ", " << r << ")";
+      ++compared;
+      if ((hit.range_m * d - below).norm() < 200e3) ++near_lamp;
+    }
+  EXPECT_GT(compared, 1000);
+  EXPECT_GE(near_lamp, 4);  // (samples where the lamp's light counts)
+  // The frame's threshold there: kNegligible (1e-10) shared among the lights
+  // times the emission over the SRF bound (some 0.2 W/cm^2/sr in 8-12 um):
+  // the lamp kept 30 km around the point below it, left out 30 km around a
+  // point 6,000 km from it.
+  const double threshold = 1e-10 / static_cast<double>(w.lights.size()) * 0.2;
+  const Vec3 north = (lamp.placed.position_m - earth.placed.position_m).normalized() + Vec3(0, 0, 1.5);
+  const Vec3 far = earth.placed.position_m + 6378.137e3 * north.normalized();
+  eoir::scene::ShadowCasters at_below, at_far;
+  earth.shadow_casters_near(below, 30e3, at_below);
+  earth.shadow_casters_near(far, 30e3, at_far);
+  std::vector<char> off;
+  earth.lights_negligible_in(at_below, threshold, off);
+  ASSERT_EQ(off.size(), w.lights.size());
+  EXPECT_EQ(off[light], 0);
+  earth.lights_negligible_in(at_far, threshold, off);
+  EXPECT_EQ(off[light], 1);
+}

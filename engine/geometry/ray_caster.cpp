@@ -346,17 +346,19 @@ void cast_tile_near_one_object(const ObjectData& od, const std::vector<const Par
                                std::int64_t c0, std::int64_t r0, std::int64_t c1, std::int64_t r1,
                                const Direction& direction, const Emit& emit) {
   constexpr int kMax = 64;  // an 8 x 8 tile
-  const int width = static_cast<int>(c1 - c0), n = static_cast<int>((c1 - c0) * (r1 - r0));
+  const int width = static_cast<int>(c1 - c0), rows = static_cast<int>(r1 - r0), n = width * rows;
   Vec3 d[kMax], d_part[kMax], normal_part[kMax];
   double best[kMax];
   int best_part[kMax];
   std::int32_t best_facet[kMax];
-  for (int i = 0; i < n; ++i) {
-    d[i] = direction(c0 + i % width, r0 + i / width);
-    best[i] = std::numeric_limits<double>::infinity();
-    best_part[i] = -1;
-    best_facet[i] = -1;
-  }
+  // (ray i is column c0 + i % width, row r0 + i / width: counted, not divided)
+  for (int i = 0, r = 0; r < rows; ++r)
+    for (int c = 0; c < width; ++c, ++i) {
+      d[i] = direction(c0 + c, r0 + r);
+      best[i] = std::numeric_limits<double>::infinity();
+      best_part[i] = -1;
+      best_facet[i] = -1;
+    }
   // (The rays into the part's axes as cast() turns them, rounding included:
   // transposed in the product where no part is a mesh, through the
   // transposed matrix where one is.)
@@ -423,14 +425,15 @@ void cast_tile_near_one_object(const ObjectData& od, const std::vector<const Par
         }
     }
   }
-  for (int i = 0; i < n; ++i) {
-    const std::int64_t c = c0 + i % width, r = r0 + i / width;
-    if (best_part[i] < 0)
-      emit(c, r, -1, -1, -1, sky_range_m, d[i], Vec3::Zero());
-    else
-      emit(c, r, od.object->object_id, best_part[i], best_facet[i], best[i], d[i],
-           od.parts[static_cast<std::size_t>(best_part[i])].part_to_frame * normal_part[i]);
-  }
+  int i = 0;
+  for (std::int64_t r = r0; r < r1; ++r)
+    for (std::int64_t c = c0; c < c1; ++c, ++i) {
+      if (best_part[i] < 0)
+        emit(c, r, -1, -1, -1, sky_range_m, d[i], Vec3::Zero());
+      else
+        emit(c, r, od.object->object_id, best_part[i], best_facet[i], best[i], d[i],
+             od.parts[static_cast<std::size_t>(best_part[i])].part_to_frame * normal_part[i]);
+    }
 }
 }  // namespace
 

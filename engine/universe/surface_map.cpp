@@ -39,6 +39,10 @@ json read_json(const std::string& path) {
 namespace {
 // The kernel's huge page on x86-64 (2 MiB): a level's block starts on one.
 constexpr std::size_t kHugePageBytes = std::size_t{1} << 21;
+// Levels up to this size are advised to use huge pages (the Earth's L0 and
+// L1, 1-58 MB). Larger ones (L2, 933 MB) keep 4 KiB pages: a scattered read
+// (patch centres over the globe) would commit a huge page per row read.
+constexpr std::size_t kHugePageLevelMaxBytes = std::size_t{256} << 20;
 }  // namespace
 
 RasterLevel::~RasterLevel() {
@@ -100,7 +104,8 @@ std::unique_ptr<RasterLevel> RasterLevel::load(const std::string& sidecar) {
     corrupt(r->data_path_, "size is not width x height bytes");
   }
   // Address space for every cell (pages are committed as rows are written:
-  // MAP_NORESERVE), asked to be backed by huge pages.
+  // MAP_NORESERVE), backed by huge pages up to kHugePageLevelMaxBytes, by
+  // 4 KiB pages past it (also where the kernel uses huge pages unasked).
   const std::size_t bytes = static_cast<std::size_t>(r->width_) * static_cast<std::size_t>(r->height_);
   r->mapped_bytes_ = bytes + kHugePageBytes;
   void* m = ::mmap(nullptr, r->mapped_bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
@@ -110,8 +115,9 @@ std::unique_ptr<RasterLevel> RasterLevel::load(const std::string& sidecar) {
   r->mapping_ = m;
   const auto start = (reinterpret_cast<std::uintptr_t>(m) + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
   r->cells_ = reinterpret_cast<std::uint8_t*>(start);
-#ifdef MADV_HUGEPAGE
-  ::madvise(r->cells_, (bytes + kHugePageBytes - 1) & ~(kHugePageBytes - 1), MADV_HUGEPAGE);  // (advice only)
+#if defined(MADV_HUGEPAGE) && defined(MADV_NOHUGEPAGE)
+  ::madvise(r->cells_, (bytes + kHugePageBytes - 1) & ~(kHugePageBytes - 1),
+            bytes <= kHugePageLevelMaxBytes ? MADV_HUGEPAGE : MADV_NOHUGEPAGE);  // (advice only)
 #endif
   r->rows_ = std::make_unique<std::atomic<const std::uint8_t*>[]>(static_cast<std::size_t>(r->height_));
   r->claimed_ = std::make_unique<std::atomic<bool>[]>(static_cast<std::size_t>(r->height_));

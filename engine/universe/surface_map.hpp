@@ -5,9 +5,10 @@
 // lat_north, columns east from lon_west); the level used is the coarsest whose
 // cell is not larger than the ground sample distance. Rows of the fine
 // levels are decoded on first use (thread-safe) into one block of address
-// space per level, backed by the kernel's huge pages where it has them: a
-// frame's samples read scattered rows, and 4 KiB pages cost a page walk per
-// sample (a nested one in a virtual machine).
+// space per level, backed by the kernel's huge pages where it has them for
+// levels up to 256 MB (the Earth's L1: a frame's samples read scattered rows,
+// and 4 KiB pages cost a page walk per sample, a nested one in a virtual
+// machine); larger levels keep 4 KiB pages, committed only where read.
 #pragma once
 #include <atomic>
 #include <cstdint>

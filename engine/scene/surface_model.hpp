@@ -50,7 +50,7 @@ struct SurfacePoint {
   double sin_latitude = 0.0, cos_latitude = 1.0;
   double reflectance_scale = 1.0;  // multiplies the spectrum's SRF (bitmap mode: the land's brightness)
   double cloud_fraction = 0.0;     // the cloud layer's share of the point
-  bool on_land = false;            // the land mask's cell (a climatology's land or water table)
+  bool on_land = false;            // the land mask's cell, set by read_maps (a climatology's land or water table)
 };
 
 // A central body's coordinates and the maps read at a point.

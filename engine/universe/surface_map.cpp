@@ -34,9 +34,7 @@ std::int64_t floor_index(double x) {
 json read_json(const std::string& path) {
   return parse_json_document(read_file(path, std::size_t{1} << 20, "map sidecar files"), path);
 }
-}  // namespace
 
-namespace {
 // The kernel's huge page on x86-64 (2 MiB): a level's block starts on one.
 constexpr std::size_t kHugePageBytes = std::size_t{1} << 21;
 // Levels up to this size are advised to use huge pages (the Earth's L0 and
@@ -188,14 +186,13 @@ bool RasterLevel::same_grid(const RasterLevel& other) const {
 }
 
 double RasterLevel::interpolated(double latitude_deg, double longitude_deg) const {
-  const double per_degree = per_degree_;
   // Position in cells from the centre of cell (0, 0): x in [-0.5, width - 0.5).
   const double last_row = static_cast<double>(height_ - 1);
-  const double y = std::clamp((lat_north_deg_ - latitude_deg) * per_degree - 0.5, 0.0, last_row);
+  const double y = std::clamp((lat_north_deg_ - latitude_deg) * per_degree_ - 0.5, 0.0, last_row);
   double lon = longitude_deg - lon_west_deg_;
   if (lon < -360.0 || lon >= 360.0) lon = std::fmod(lon, 360.0);
   if (lon < 0) lon += 360.0;
-  const double x = lon * per_degree - 0.5;
+  const double x = lon * per_degree_ - 0.5;
   const auto i0 = std::min(static_cast<std::int64_t>(y), height_ - 1), i1 = std::min(i0 + 1, height_ - 1);
   const auto j = floor_index(x);
   const auto column = [&](std::int64_t k) {  // (k in [-1, width])

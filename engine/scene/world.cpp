@@ -30,6 +30,24 @@ constexpr double kNegligible = 1e-10;
 // fraction per source left out).
 constexpr double kNegligibleAtPoint = 1e-12;
 
+// A light's disc, pi R^2 (m^2).
+double disc_area_m2(const ObjectLight& src) { return constants::pi * src.radius_m * src.radius_m; }
+
+// At squared distance distance2_m2 a light is its disc (eq. 7) unless an
+// area source subtending half area_source_solid_angle_sr or more there
+// (eq. 8's tessellation, or its disc near the threshold).
+bool seen_as_disc(const ObjectLight& src, double distance2_m2, const Fidelity& fidelity) {
+  return !src.area_source || disc_area_m2(src) < 0.5 * fidelity.area_source_solid_angle_sr * distance2_m2;
+}
+
+// The disc's light through a BRDF whose N.L value is at most brdf_max_per_sr,
+// dOmega x brdf_max x its band bound, below negligible_W_cm2_sr (compared
+// times the squared distance: no division for a light left out).
+bool disc_light_below(const ObjectLight& src, double distance2_m2, double brdf_max_per_sr, const LightSpectra& spectra,
+                      double negligible_W_cm2_sr) {
+  return disc_area_m2(src) * brdf_max_per_sr * spectra.bound_band_W_cm2_sr < negligible_W_cm2_sr * distance2_m2;
+}
+
 // True if a sphere (centre in sensor body axes, radius) lies wholly outside
 // the pyramid of the sample grid (field of view plus guard band).
 bool outside_view(const Vec3& centre_body, double radius, const geometry::SampleGrid& grid) {
@@ -353,18 +371,16 @@ void WorldObject::add_reflected_irradiance(const Vec3& p, const Vec3& n, const V
     // A disc below (eq. 7; an area source too while it subtends less than
     // half area_source_solid_angle_sr here): first the sign of cos_i, then
     // whether it can matter here at all.
-    const double distance2_m2 = to_src.squaredNorm(), disc_m2 = constants::pi * src.radius_m * src.radius_m;
-    if (!src.area_source || disc_m2 < 0.5 * w.view.fidelity.area_source_solid_angle_sr * distance2_m2) {
+    const double distance2_m2 = to_src.squaredNorm(), disc_m2 = disc_area_m2(src);
+    if (seen_as_disc(src, distance2_m2, w.view.fidelity)) {
       if (!(to_src.dot(n) > 0)) continue;  // (cos_i <= 0 below, but for rounding)
       // Its bound here: dOmega x the BRDF's largest N.L value x its light
       // at any phase, against kNegligibleAtPoint of the point's irradiance
       // so far (the Sun's by day), wavelength by wavelength.
       const LightSpectra& spectra = source.light_spectra();
       const std::vector<double>& bound = spectra.bound;
-      // (and against negligible_W_cm2_sr: the same bound, band-integrated;
-      // times the squared distance, no division for a light left out)
-      if (disc_m2 * brdf.max_projected_value_per_sr() * spectra.bound_band_W_cm2_sr <
-          negligible_W_cm2_sr * distance2_m2)
+      // (and against negligible_W_cm2_sr: the same bound, band-integrated)
+      if (disc_light_below(src, distance2_m2, brdf.max_projected_value_per_sr(), spectra, negligible_W_cm2_sr))
         continue;
       const double scale = disc_m2 / distance2_m2 * brdf.max_projected_value_per_sr() / kNegligibleAtPoint;
       std::size_t i = 0;
@@ -414,11 +430,9 @@ void WorldObject::lights_negligible_in(const ShadowCasters& near, double negligi
     const ObjectLight& src = w.lights[k];
     if (src.object == id || negligible_light_[k]) continue;
     const double d = (src.position_m - near.centre_frame_m).norm() - reach_m;
-    if (!(d > src.radius_m)) continue;
-    const double disc_m2 = constants::pi * src.radius_m * src.radius_m, least2_m2 = d * d;
-    if (src.area_source && !(disc_m2 < 0.5 * w.view.fidelity.area_source_solid_angle_sr * least2_m2)) continue;
+    if (!(d > src.radius_m) || !seen_as_disc(src, d * d, w.view.fidelity)) continue;
     const LightSpectra& spectra = w.objects[static_cast<std::size_t>(src.object)]->light_spectra();
-    out[k] = disc_m2 * surface->brdf_bound_per_sr() * spectra.bound_band_W_cm2_sr < negligible_W_cm2_sr * least2_m2;
+    out[k] = disc_light_below(src, d * d, surface->brdf_bound_per_sr(), spectra, negligible_W_cm2_sr);
   }
 }
 
@@ -580,18 +594,19 @@ double WorldObject::effective_radiance(std::int32_t part, const Vec3& point_body
   return L;
 }
 
+double WorldObject::negligible_light_W_cm2_sr(const SurfacePoint& point, double emitted_W_cm2_sr) const {
+  // kNegligible / (the number of sources) of the point's own emission: all
+  // of them together, less than kNegligible of it (the point's layers pass
+  // at most srf_bound of each).
+  return emitted_W_cm2_sr > 0 ? kNegligible / static_cast<double>(world_->lights.size()) * emitted_W_cm2_sr /
+                                    surface->srf_bound(point)
+                              : 0.0;
+}
+
 double WorldObject::reflected_radiance(const SurfacePoint& point, const ShadowCasters* near, bool& emits,
-                                       double emitted_W_cm2_sr, const char* lights_off) const {
+                                       double negligible, const char* lights_off) const {
   double reflected = 0;
   if (surface->reflects(point)) {
-    // The eq. 7 sources whose light here cannot reach kNegligible / (the
-    // number of sources) of the point's own emission (given:
-    // emitted_W_cm2_sr) are left out: all of them together, less than
-    // kNegligible of it (the point's layers pass at most srf_bound of each).
-    const double negligible =
-        emitted_W_cm2_sr > 0 ? kNegligible / static_cast<double>(world_->lights.size()) * emitted_W_cm2_sr /
-                                   surface->srf_bound(point)
-                             : 0.0;
     const Vec3 p = to_frame(point.site.point_body_m), n = placed.body_to_frame * point.site.normal_body,
                toward = -p.normalized();
     thread_local std::vector<double> E, L;  // per-sample scratch: no allocation per call
@@ -623,23 +638,25 @@ void WorldObject::effective_radiances(const SurfacePoint* const* points, std::si
   // (their temperatures together)
   if (emission_first_) {
     surface->emission_radiances(points, n, interpolated, out);
-    // The lights that cannot matter at any of the points (their least
-    // threshold, reflected_radiance's, over the region they lie in).
+    // Each reflecting point's threshold for other objects' light, and the
+    // lights that cannot reach the least of them anywhere in the region the
+    // points lie in.
+    thread_local std::vector<double> negligible;
     thread_local std::vector<char> off;
+    negligible.resize(n);
+    double least = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < n; ++k) {
+      negligible[k] = surface->reflects(*points[k]) ? negligible_light_W_cm2_sr(*points[k], out[k]) : 0.0;
+      if (surface->reflects(*points[k])) least = std::min(least, negligible[k]);
+    }
     const char* lights_off = nullptr;
-    if (near && !world_->lights.empty() && surface->reflects()) {
-      double least = std::numeric_limits<double>::infinity();
-      for (std::size_t k = 0; k < n && least > 0; ++k)
-        if (surface->reflects(*points[k]))
-          least = std::min(least, out[k] > 0 ? out[k] / surface->srf_bound(*points[k]) : 0.0);
-      if (least > 0 && std::isfinite(least)) {
-        lights_negligible_in(*near, kNegligible / static_cast<double>(world_->lights.size()) * least, off);
-        lights_off = off.data();
-      }
+    if (near && !world_->lights.empty() && least > 0 && std::isfinite(least)) {
+      lights_negligible_in(*near, least, off);
+      lights_off = off.data();
     }
     for (std::size_t k = 0; k < n; ++k) {
       bool emits = true;
-      const double reflected = reflected_radiance(*points[k], near, emits, out[k], lights_off);
+      const double reflected = reflected_radiance(*points[k], near, emits, negligible[k], lights_off);
       out[k] = emits ? out[k] + reflected + path_radiance_W_cm2_sr_ : reflected + path_radiance_W_cm2_sr_;
     }
     return;

@@ -447,10 +447,14 @@ class WorldObject {
                                                   WorldCache*, const std::set<std::string>*);
   // effective_radiance's reflected light at a located point out of any
   // atmosphere; emits: its emission can reach kNegligible of it.
-  // emitted_W_cm2_sr: the point's emission if known (else 0), against which
-  // eq. 7 sources that cannot matter are left out.
+  // negligible_W_cm2_sr: eq. 7 sources whose light here cannot reach it are
+  // left out (negligible_light_W_cm2_sr of the point's emission, or 0);
+  // lights_off: lights left out for the whole run (lights_negligible_in).
   double reflected_radiance(const SurfacePoint& point, const ShadowCasters* near, bool& emits,
-                            double emitted_W_cm2_sr, const char* lights_off = nullptr) const;
+                            double negligible_W_cm2_sr, const char* lights_off = nullptr) const;
+  // The threshold below which other objects' light at a point emitting
+  // emitted_W_cm2_sr is left out (0: none left out).
+  double negligible_light_W_cm2_sr(const SurfacePoint& point, double emitted_W_cm2_sr) const;
   struct AreaSourcePatch {
     Vec3 direction;              // from the receiver toward the patch, observer frame
     double solid_angle_sr = 0;   // projected solid angle at the receiver
